@@ -1,0 +1,97 @@
+# gpm-repro — two commands do everything on a fresh Debian 12 machine (as root):
+#   make report   install what is missing, build, run the studies, plot, assemble the report
+#   make test     install what is missing, build, run the Catch2 suite through ctest
+# Other targets: make bench, make plan, make clean, make deps, make build.
+# PROFILE=quick (default, minutes) or PROFILE=paper (the documents' exact resolutions, hours).
+
+PROFILE ?= quick
+BUILD   ?= build
+JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
+DATA    := data/$(PROFILE)
+FIGOUT  := figures/out
+TABOUT  := tables/out
+
+ifneq ($(PROFILE),quick)
+ifneq ($(PROFILE),paper)
+$(error unknown PROFILE '$(PROFILE)'; valid: quick, paper)
+endif
+endif
+
+# Debian packages the project needs (compilers, libraries, plotting, report).
+PACKAGES := build-essential cmake git pkg-config libeigen3-dev libcgal-dev libgmp-dev \
+            libmpfr-dev libboost-dev libgsl-dev libglpk-dev glpk-utils catch2 gnuplot-nox pandoc
+
+.PHONY: all report test test-paper bench plan deps build data figures tables clean help
+
+all: report
+
+help:
+	@sed -n '1,7p' Makefile
+
+# --- set-up -----------------------------------------------------------------------------
+# Installs only what is missing; a second run costs one dpkg query per package.
+deps:
+	@missing=""; for p in $(PACKAGES); do \
+	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:$$missing"; \
+	  if [ "$$(id -u)" != 0 ]; then echo "error: packages missing ($$missing) and not root; run as root or install them" >&2; exit 1; fi; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing >/dev/null || exit 1; \
+	fi
+
+$(BUILD)/CMakeCache.txt: | deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+# --- tests ------------------------------------------------------------------------------
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j 1
+
+# --- studies: one program per figure/table writes data/<profile>/<name>.tsv -------------
+# A data file is rebuilt only when its program changed (make's timestamps); inside a
+# program, levels already computed with the same parameters are read back, not redone.
+STUDIES := core_weights core_voronoi
+DATAFILES := $(STUDIES:%=$(DATA)/%.tsv)
+
+$(DATA)/core_weights.tsv: $(BUILD)/core_weights
+	$< --profile $(PROFILE) --out $@ --errata $(DATA)/core_weights_errata.tsv
+
+$(DATA)/core_voronoi.tsv: $(BUILD)/core_voronoi
+	$< --profile $(PROFILE) --out $@
+
+data: $(DATAFILES)
+
+# --- figures: gnuplot scripts read data/<profile>, write figures/out ---------------------
+FIGURES := core_covering_radius
+FIGFILES := $(FIGURES:%=$(FIGOUT)/%.svg)
+
+$(FIGOUT)/core_covering_radius.svg: figures/core_covering_radius.gp figures/style.gp $(DATA)/core_voronoi.tsv
+
+$(FIGOUT)/%.svg:
+	@mkdir -p $(FIGOUT)
+	gnuplot -e "datadir='$(DATA)'; out='$@.tmp'" $< && mv $@.tmp $@
+
+figures: $(FIGFILES)
+
+# --- report -----------------------------------------------------------------------------
+REPORT_SOURCES := paper/report.md paper/core.md
+
+paper/report.html: $(REPORT_SOURCES) paper/tsv-tables.lua $(DATAFILES) $(FIGFILES)
+	pandoc --from markdown --to html5 --standalone --mathml --self-contained \
+	  --lua-filter paper/tsv-tables.lua --metadata datadir=$(DATA) \
+	  --metadata profile=$(PROFILE) --toc --css paper/style.css \
+	  $(REPORT_SOURCES) -o $@.tmp && mv $@.tmp $@
+	@echo "report: $@ (profile $(PROFILE))"
+
+report: build
+	$(MAKE) --no-print-directory PROFILE=$(PROFILE) paper/report.html
+
+# --- benchmarks -------------------------------------------------------------------------
+bench: build
+	$(BUILD)/bench_kernel --out data/bench/kernel.tsv
+
+clean:
+	rm -rf $(BUILD) data $(FIGOUT) $(TABOUT) paper/report.html paper/report.pdf

@@ -1,0 +1,22 @@
+# One style for every figure of the report: readable in black and white
+# (point types and dash patterns carry the distinction, colour only helps).
+set terminal svg size 640,480 dynamic enhanced font 'Helvetica,12' background rgb 'white'
+set key top left box opaque samplen 3
+set grid lc rgb '#dddddd'
+set format y '10^{%L}'
+set logscale xy
+set linetype 1 lc rgb '#000000' dt 1 pt 7 ps 0.8 lw 1.5
+set linetype 2 lc rgb '#1f4e9c' dt 2 pt 5 ps 0.8 lw 1.5
+set linetype 3 lc rgb '#b22222' dt 3 pt 9 ps 0.9 lw 1.5
+set linetype 4 lc rgb '#2e7d32' dt 4 pt 11 ps 0.9 lw 1.5
+set linetype 5 lc rgb '#6a1b9a' dt 5 pt 13 ps 0.9 lw 1.5
+set linetype 6 lc rgb '#e65100' dt 6 pt 4 ps 0.8 lw 1.5
+set linetype 7 lc rgb '#555555' dt 7 pt 6 ps 0.8 lw 1.5
+set linetype 8 lc rgb '#00838f' dt 8 pt 8 ps 0.8 lw 1.5
+set linetype 9 lc rgb '#795548' dt 9 pt 10 ps 0.8 lw 1.5
+set datafile separator "\t"
+set datafile commentschars "#"
+# Draw a reference-slope triangle of slope s with its lower-left corner at (x0, y0),
+# spanning a factor f in x: call   eval triangle(x0, y0, f, s, 'label')
+triangle(x0, y0, f, s, lab) = sprintf("set object polygon from %g,%g to %g,%g to %g,%g to %g,%g fs empty border lc rgb '#000000'; set label '%s' at %g,%g center font ',10'", \
+  x0, y0, x0*f, y0, x0*f, y0*f**s, x0, y0, lab, x0*sqrt(f)*1.0, y0*0.75)

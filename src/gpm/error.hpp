@@ -1,0 +1,24 @@
+// Errors the core reports to the user.  Every program catches gpm::Error in main(),
+// prints its one-line message prefixed by the program name, and exits non-zero.
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace gpm {
+
+// Bad input (a value the user gave): the message names the value.
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Numerical failure: non-finite values, divergence, a singular system.  The message
+// says where it happened (level, particle, step).
+struct NumericalError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Checks that x is finite and positive; otherwise throws InputError naming `what`.
+void require_positive(double x, const std::string& what);
+void require_finite(double x, const std::string& what);
+
+}  // namespace gpm

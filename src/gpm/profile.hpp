@@ -1,0 +1,25 @@
+// The two run profiles.  `quick` reproduces every figure in minutes on this machine
+// (SEP's [R]); `paper` runs the documents' exact resolutions (SEP's [CR], hours).
+// Each program keeps its own table of levels per profile at the top of its source.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace gpm {
+
+enum class Profile { quick, paper };
+
+// Throws InputError "unknown profile 'x'; valid: quick, paper".
+Profile parse_profile(const std::string& name);
+std::string profile_name(Profile p);
+
+// Levels k (Δx = 2^-k) of a study for the given profile.
+inline const std::vector<int>& pick(Profile p, const std::vector<int>& quick,
+                                    const std::vector<int>& paper) {
+  return p == Profile::quick ? quick : paper;
+}
+
+// Peak resident memory of this process so far, in MiB (VmHWM).
+double peak_rss_mib();
+
+}  // namespace gpm

@@ -1,0 +1,73 @@
+// Norms and rates, TSV round trip and cache matching, argument parsing.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+
+#include "gpm/args.hpp"
+#include "gpm/error.hpp"
+#include "gpm/norms.hpp"
+#include "gpm/profile.hpp"
+#include "gpm/tsv.hpp"
+
+using namespace gpm;
+
+TEST_CASE("two-level and least-squares rates recover a power law", "[norms]") {
+  std::vector<double> h, e;
+  for (int k = 0; k < 5; ++k) {
+    h.push_back(0.1 / (1 << k));
+    e.push_back(3.0 * std::pow(h.back(), 2.5));
+  }
+  CHECK(two_level_rate(h[3], e[3], h[4], e[4]) == Approx(2.5).epsilon(1e-12));
+  CHECK(least_squares_rate(h, e) == Approx(2.5).epsilon(1e-12));
+  CHECK(std::isnan(two_level_rate(0.1, 0.0, 0.05, 1.0)));
+}
+
+TEST_CASE("discrete max norms respect the mask and refuse non-finite values", "[norms]") {
+  std::vector<double> a = {1, -5, 2}, b = {1, 1, 1};
+  std::vector<uint8_t> m = {1, 0, 1};
+  CHECK(max_abs(a) == 5);
+  CHECK(max_abs(a, m) == 2);
+  CHECK(max_abs_diff(a, b, m) == 1);
+  a[2] = std::nan("");
+  CHECK_THROWS_AS(max_abs(a, m), NumericalError);
+}
+
+TEST_CASE("TSV files round-trip and the cache matches only equal parameters", "[tsv]") {
+  const std::string path = (std::filesystem::temp_directory_path() / "gpm_tsv_test.tsv").string();
+  TsvTable t;
+  t.set("dx", 0.5);
+  t.set("weight", "Pi1");
+  t.columns = {"level", "err"};
+  t.add_row({"5", fmt(1.25e-3)});
+  t.save(path);
+  auto u = TsvTable::load(path);
+  CHECK(u.get("dx").value() == "0.5");
+  CHECK(u.rows.size() == 1);
+  CHECK(std::stod(u.rows[0][1]) == 1.25e-3);
+  CHECK(TsvTable::load_matching(path, {{"weight", "Pi1"}}).size() == 1);
+  CHECK(TsvTable::load_matching(path, {{"weight", "Pi2"}}).empty());
+  CHECK(TsvTable::load_matching(path + ".absent", {{"weight", "Pi1"}}).empty());
+  std::filesystem::remove(path);
+}
+
+TEST_CASE("numbers are parsed strictly; 2^-k is accepted", "[args]") {
+  CHECK(parse_number("2^-9", "dx") == std::ldexp(1.0, -9));
+  CHECK(parse_number("0.03", "h") == 0.03);
+  CHECK_THROWS_AS(parse_number("0.03x", "h"), InputError);
+  CHECK_THROWS_AS(parse_number("", "h"), InputError);
+  CHECK_THROWS_AS(parse_number("inf", "h"), InputError);
+  CHECK_THROWS_AS(parse_profile("fast"), InputError);
+  CHECK(parse_profile("paper") == Profile::paper);
+}
+
+TEST_CASE("Args rejects unknown options and missing values", "[args]") {
+  Args a("prog", "test");
+  a.opt("h", "0.1", "radius");
+  const char* argv1[] = {"prog", "--bogus", "1"};
+  CHECK_THROWS_AS(a.parse(3, const_cast<char**>(argv1)), InputError);
+  const char* argv2[] = {"prog", "--h"};
+  CHECK_THROWS_AS(a.parse(2, const_cast<char**>(argv2)), InputError);
+  const char* argv3[] = {"prog", "--h=-2"};
+  a.parse(2, const_cast<char**>(argv3));
+  CHECK_THROWS_AS(a.positive("h"), InputError);
+}
