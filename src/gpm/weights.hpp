@@ -28,6 +28,7 @@ struct WeightFunction {
   std::string role;     // "interpolant", "gradient", "laplacian", "any", "mps"
   double constant = 1;  // the prefactor (γ) as used: w = constant · shape
   std::vector<PolyPiece> shape;  // pieces without the prefactor, covering [0,1)
+  int dimension = 2;    // d in which the constant normalizes w (3 for the 3-D examples)
 
   double value(double r) const;       // w(r); 0 for r ≥ 1
   double derivative(double r) const;  // dw/dr; 0 for r > 1
@@ -41,7 +42,7 @@ struct WeightFunction {
 struct WeightProperties {
   double norm_2d = 0;          // 2π ∫₀¹ r w(r) dr          (must be 1 for w ∈ W, d = 2)
   double norm_3d = 0;          // 4π ∫₀¹ r² w(r) dr         (for the d = 3 examples)
-  int order_k = 0;             // Hypothesis 1.1 / imoto Hypothesis 1: largest k (d = 2); 99 = all tested
+  int order_k = 0;             // Hypothesis 1.1 / imoto Hypothesis 1: largest k (in w.dimension); 99 = all tested
   bool positive = false;       // Hypothesis 1.4: w(r) > 0 on (0,1)
   int p0 = 0;                  // lowest power of r at 0 (first piece)
   bool continuous = false;     // w continuous on [0,∞) (incl. w(1) = 0)
@@ -51,6 +52,8 @@ struct WeightProperties {
   int imoto_hyp2_k = -1;       // largest k ≤ 3 with imoto Hypothesis 2 (−1: none)
   double inv_r2_integral = 0;  // ∫_{R²} w(|x|)/|x|² dx = 2π ∫ w(r)/r dr (inf if divergent)
   bool admissible = false;     // in the admissible set W (continuous, normalized, w(1)=0)
+  // The normalization in dimension d (norm_2d or norm_3d).
+  double norm(int d) const { return d == 3 ? norm_3d : norm_2d; }
 };
 
 const std::vector<WeightFunction>& weight_registry();
