@@ -1,0 +1,180 @@
+// core_voronoi: Voronoi decomposition of Ω_H for the plain and the jittered grid, level by
+// level: the cell areas (they must tile Ω_H), the covering radius r_c (imoto eq. (5),
+// thesis (1.5)) against the plain-grid formula and the two documents' statements about it
+// (imoto §5: r_N ≤ √2(1+1/4)Δx/2; thesis Ch. 4: 1.4Δx ≤ r_c ≤ 1.8Δx), and the time and
+// peak memory of the computation.
+//
+// One row per (level, seed, distribution).  The plain grid does not depend on the seed: it
+// is computed once per level and its row repeated for every seed.
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <string>
+#include <tuple>
+
+#include "gpm/args.hpp"
+#include "gpm/domain.hpp"
+#include "gpm/error.hpp"
+#include "gpm/profile.hpp"
+#include "gpm/tsv.hpp"
+#include "gpm/voronoi.hpp"
+
+using namespace gpm;
+
+namespace {
+
+// Levels k (Δx = 2^-k) per profile.  Level 12 (Δx = 2^-12, 2.4e7 particles) needs about
+// 4 GB and a few minutes per distribution on one core.
+const std::vector<int> kQuickLevels = {5, 6, 7, 8, 9};
+const std::vector<int> kPaperLevels = {5, 6, 7, 8, 9, 10, 11, 12};
+
+long long parse_int(const std::string& text, const std::string& what, long long lo,
+                    long long hi) {
+  char* end = nullptr;
+  const long long v = std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0')
+    throw InputError(what + ": cannot parse '" + text + "' as an integer");
+  if (v < lo || v > hi)
+    throw InputError(what + ": " + text + " is out of range [" + std::to_string(lo) + ", " +
+                     std::to_string(hi) + "]");
+  return v;
+}
+
+// Resets the peak-RSS mark (VmHWM) to the current RSS so that the next reading is the
+// peak of the next computation only (Linux ≥ 4.0).  Returns false where unsupported.
+bool reset_peak_rss() {
+  std::ofstream f("/proc/self/clear_refs");
+  if (!f) return false;
+  f << "5";
+  f.flush();
+  return static_cast<bool>(f);
+}
+
+struct Row {
+  std::size_t n = 0, n_in = 0;
+  double area_sum = 0, r_c = 0, r_c_omega = 0, amin = 0, amax = 0, wx = 0, wy = 0;
+  double time_s = 0, rss = 0;
+};
+
+Row measure(const Particles& p, const Domain& dom, double dx, bool rss_reset) {
+  if (rss_reset) reset_peak_rss();
+  const auto t0 = std::chrono::steady_clock::now();
+  const VoronoiCells c = voronoi_cells(p, dom, false);
+  Row r;
+  r.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.rss = peak_rss_mib();
+  r.n = p.size();
+  r.n_in = p.count_in_omega();
+  r.area_sum = c.area_sum;
+  r.r_c = c.covering_radius;
+  r.wx = p.x[c.worst];
+  r.wy = p.y[c.worst];
+  r.amin = *std::min_element(c.area.begin(), c.area.end()) / (dx * dx);
+  r.amax = *std::max_element(c.area.begin(), c.area.end()) / (dx * dx);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.in_omega[i]) r.r_c_omega = std::max(r.r_c_omega, c.cover[i]);
+  return r;
+}
+
+int body(int argc, char** argv) {
+  Args args("core_voronoi",
+            "Voronoi cells of Omega_H for the plain and the jittered grid: area sum, covering\n"
+            "radius r_c vs the grid formula and the documents' claims, time and peak memory.");
+  args.opt("out", "", "output TSV file (required)")
+      .opt("levels", "", "comma-separated levels k, dx = 2^-k, 2..13 (default: by profile)")
+      .opt("seeds", "1,2,3", "comma-separated jitter seeds (non-negative integers)")
+      .opt("profile", "quick",
+           "quick (levels 5-9) or paper (levels 5-12; level 12 needs ~4 GB)");
+  args.parse(argc, argv);
+  const std::string out = args.str("out");
+  if (out.empty()) throw InputError("--out PATH is required (see --help)");
+  const Profile profile = parse_profile(args.str("profile"));
+  std::vector<int> levels;
+  if (args.str("levels").empty())
+    levels = pick(profile, kQuickLevels, kPaperLevels);
+  else
+    for (auto& s : args.list("levels"))
+      levels.push_back(static_cast<int>(parse_int(s, "--levels", 2, 13)));
+  if (levels.empty()) throw InputError("--levels: no level given");
+  std::vector<uint64_t> seeds;
+  for (auto& s : args.list("seeds"))
+    seeds.push_back(static_cast<uint64_t>(parse_int(s, "--seeds", 0, (1LL << 62))));
+  if (seeds.empty()) throw InputError("--seeds: no seed given");
+
+  const Domain dom;
+  const double amplitude = 0.25;
+  TsvTable t;
+  t.set("program", "core_voronoi");
+  for (auto& [k, v] : args.values()) t.set(k, v);
+  t.set("H", dom.H);
+  t.set("Omega_H", "(-H, 1+H)^2");
+  t.set("jitter_amplitude", amplitude);
+  t.set("r_c_grid_formula", "sqrt(2)*max(dx/2, g_lo, g_hi), g_lo = first*dx + H, "
+                            "g_hi = 1 + H - last*dx");
+  t.set("imoto_bound", "sqrt(2)*(1+1/4)*dx/2 (imoto Sec. 5)");
+  t.set("thesis_range", "1.4*dx <= r_c <= 1.8*dx (thesis Ch. 4)");
+  t.set("r_c_omega", "max cover over the cells of particles in Omega (boundary cells excluded)");
+  const bool rss_reset = reset_peak_rss();
+  t.set("peak_rss_note", rss_reset ? "VmHWM reset before each row: peak of that row's run"
+                                   : "VmHWM of the process so far (reset unsupported)");
+  t.set("time_note", "time_s: voronoi_cells only (triangulation + cells), not particle set-up");
+  add_provenance(t);
+  t.columns = {"level", "dx", "seed", "distribution", "N", "N_in_omega", "area_sum",
+               "area_rel_err", "r_c", "r_c_over_dx", "r_c_omega_over_dx", "r_c_grid_pred",
+               "imoto_bound", "imoto_holds", "thesis_range_holds", "worst_x", "worst_y",
+               "min_area_over_dx2", "max_area_over_dx2", "time_s", "peak_rss_mb"};
+
+  const auto t_start = std::chrono::steady_clock::now();
+  for (int level : levels) {
+    const double dx = std::ldexp(1.0, -level);
+    const double g_lo = grid_first(dx, dom) * dx - dom.lo();
+    const double g_hi = dom.hi() - grid_last(dx, dom) * dx;
+    const double pred = std::sqrt(2.0) * std::max({dx / 2, g_lo, g_hi});
+    const double imoto = std::sqrt(2.0) * 1.25 * dx / 2;
+    auto add = [&](uint64_t seed, const char* dist, const Row& r) {
+      const double rel = std::abs(r.area_sum - dom.area_H()) / dom.area_H();
+      t.add_row({fmt(level), fmt(dx), fmt(static_cast<long long>(seed)), dist, fmt(r.n),
+                 fmt(r.n_in), fmt(r.area_sum), fmt(rel), fmt(r.r_c), fmt(r.r_c / dx),
+                 fmt(r.r_c_omega / dx), fmt(pred), fmt(imoto), r.r_c <= imoto ? "1" : "0",
+                 (r.r_c >= 1.4 * dx && r.r_c <= 1.8 * dx) ? "1" : "0", fmt(r.wx), fmt(r.wy),
+                 fmt(r.amin), fmt(r.amax), fmt(r.time_s), fmt(r.rss)});
+    };
+    Row grid;
+    {
+      const Particles p = jittered_grid(dx, 0, 0.0, dom);
+      grid = measure(p, dom, dx, rss_reset);
+    }
+    std::fprintf(stderr,
+                 "[core_voronoi] level %d dx=%.6g N=%zu grid: r_c/dx=%.6f (pred %.6f) "
+                 "%.2fs %.0f MiB\n",
+                 level, dx, grid.n, grid.r_c / dx, pred / dx, grid.time_s, grid.rss);
+    for (uint64_t seed : seeds) {
+      add(seed, "grid", grid);
+      Row r;
+      {
+        const Particles p = jittered_grid(dx, seed, amplitude, dom);
+        r = measure(p, dom, dx, rss_reset);
+      }
+      add(seed, "jittered", r);
+      std::fprintf(stderr,
+                   "[core_voronoi] level %d seed %llu jittered: r_c/dx=%.6f (in Omega %.6f) "
+                   "area_rel_err=%.2g %.2fs %.0f MiB\n",
+                   level, static_cast<unsigned long long>(seed), r.r_c / dx, r.r_c_omega / dx,
+                   std::abs(r.area_sum - dom.area_H()) / dom.area_H(), r.time_s, r.rss);
+    }
+    t.set("wall_time_s",
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count());
+    t.save(out);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return run_main("core_voronoi", body, argc, argv); }
