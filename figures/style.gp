@@ -20,3 +20,7 @@ set datafile commentschars "#"
 # spanning a factor f in x: call   eval triangle(x0, y0, f, s, 'label')
 triangle(x0, y0, f, s, lab) = sprintf("set object polygon from %g,%g to %g,%g to %g,%g to %g,%g fs empty border lc rgb '#000000'; set label '%s' at %g,%g center font ',10'", \
   x0, y0, x0*f, y0, x0*f, y0*f**s, x0, y0, lab, x0*sqrt(f)*1.0, y0*0.75)
+# Rows of a data file that satisfy an awk condition on its tab-separated columns, e.g.
+#   plot rows(f, '$4=="grid"') using 2:10
+# (filtering outside gnuplot keeps lines unbroken where other rows are interleaved).
+rows(f, cond) = sprintf("< awk -F'\t' '!/^#/ && (%s)' '%s'", cond, f)

@@ -100,7 +100,7 @@ local function tsv_block(el)
   local prov = string.format("Data: %s — program %s, profile %s, git %s, written %s%s.",
     path, meta["program"] or "?", meta["profile"] or "?", meta["git_revision"] or "?",
     meta["written_utc"] or "?",
-    meta["wall_s"] and (", wall time " .. fmtnum(meta["wall_s"], 3) .. " s") or "")
+    (meta["wall_time_s"] or meta["wall_s"]) and (", wall time " .. fmtnum(meta["wall_time_s"] or meta["wall_s"], 3) .. " s") or "")
   return {pandoc.utils.from_simple_table(simple),
           pandoc.Para({pandoc.Emph({pandoc.Str(prov)})})}
 end

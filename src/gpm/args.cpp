@@ -33,7 +33,7 @@ std::string Args::usage() const {
     auto& o = opts_.at(n);
     s << "  --" << n << (o.is_flag ? "" : " VALUE");
     s << "\n      " << o.help;
-    if (!o.is_flag) s << " (default: " << (o.def.empty() ? "none" : o.def) << ")";
+    if (!o.is_flag && !o.def.empty()) s << " (default: " << o.def << ")";
     s << "\n";
   }
   s << "  --help\n      print this help and exit\n";
