@@ -50,36 +50,28 @@ build: deps $(BUILD)/CMakeCache.txt
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j 1
 
-# --- studies: one program per figure/table writes data/<profile>/<name>.tsv -------------
+# --- studies, figures, report sections -------------------------------------------------
+# Each study registers itself in mk/<study>.mk: its data rule(s), appending to STUDIES
+# (data files), FIGURES (figures/out/*.svg with their prerequisites) — so an issue adds a
+# program, a gnuplot script, an mk file and a paper/NN-*.md section, and touches nothing else.
 # A data file is rebuilt only when its program changed (make's timestamps); inside a
 # program, levels already computed with the same parameters are read back, not redone.
-STUDIES := core_weights core_voronoi
-DATAFILES := $(STUDIES:%=$(DATA)/%.tsv)
+DATAFILES :=
+FIGFILES :=
+include $(sort $(wildcard mk/*.mk))
 
-$(DATA)/core_weights.tsv: $(BUILD)/core_weights
-	$< --profile $(PROFILE) --out $@ --errata $(DATA)/core_weights_errata.tsv
-
-$(DATA)/core_voronoi.tsv: $(BUILD)/core_voronoi
-	$< --profile $(PROFILE) --out $@
-
-data: $(DATAFILES)
-
-# --- figures: gnuplot scripts read data/<profile>, write figures/out ---------------------
-FIGURES := core_covering_radius
-FIGFILES := $(FIGURES:%=$(FIGOUT)/%.svg)
-
-$(FIGOUT)/core_covering_radius.svg: figures/core_covering_radius.gp figures/style.gp $(DATA)/core_voronoi.tsv
-
+# Figures: gnuplot scripts read data/<profile>, write figures/out/<name>.svg.
 $(FIGOUT)/%.svg:
 	@mkdir -p $(FIGOUT)
 	gnuplot -e "datadir='$(DATA)'; out='$@.tmp'" $< && mv $@.tmp $@
 
+data: $(DATAFILES)
 figures: $(FIGFILES)
 
-# --- report -----------------------------------------------------------------------------
-REPORT_SOURCES := paper/report.md paper/core.md
+# --- report: paper/NN-*.md in name order -----------------------------------------------
+REPORT_SOURCES := $(sort $(wildcard paper/[0-9][0-9]-*.md))
 
-paper/report.html: $(REPORT_SOURCES) paper/tsv-tables.lua $(DATAFILES) $(FIGFILES)
+paper/report.html: $(REPORT_SOURCES) paper/tsv-tables.lua paper/style.css $(DATAFILES) $(FIGFILES)
 	pandoc --from markdown --to html5 --standalone --mathml --self-contained \
 	  --lua-filter paper/tsv-tables.lua --metadata datadir=$(DATA) \
 	  --metadata profile=$(PROFILE) --toc --css paper/style.css \
