@@ -1,0 +1,24 @@
+# Koba & Sato, Figure 1 (arrangement of particles): the particles a_i of a jittered grid in
+# Omega_H, the domain Omega, and one particle a_k with its interaction disc B_h(a_k).
+# Omega_H is the square (-H, 1+H)^2 of this package, not the rounded H-neighbourhood of Omega.
+load 'figures/style.gp'
+set output out
+fp = datadir.'/koba_sato_fig_particles.tsv'
+fc = datadir.'/koba_sato_fig_circles.tsv'
+H = real(system("awk -F' = ' '/^# H = /{print $2; exit}' ".fp))
+unset logscale
+set format x '%g'
+set format y '%g'
+set size ratio -1
+set xrange [-H-0.05:1+H+0.05]
+set yrange [-H-0.05:1+H+0.05]
+set xlabel 'x_1'
+set ylabel 'x_2'
+set key outside right top box opaque
+set object 1 rect from -H,-H to 1+H,1+H fs empty border lc rgb '#555555' dt 2 lw 1
+set object 2 rect from 0,0 to 1,1 fs empty border lc rgb '#000000' lw 2
+set label 1 'Ω' at 0.03,0.95 font ',14'
+set label 2 'Ω_H' at -H+0.01,1+H-0.035 font ',12'
+plot rows(fp, '$4=="o" || $4=="R"') using 1:2 with points pt 7 ps 0.35 lc rgb '#1f4e9c' title 'a_i', \
+     rows(fp, '$4=="k"') using 1:2 with points pt 7 ps 1.0 lc rgb '#b22222' title 'a_k', \
+     rows(fc, '$1=="h"') using 2:3:4 with circles fs empty lc rgb '#b22222' dt 1 lw 1.5 title 'B_h(a_k)'
