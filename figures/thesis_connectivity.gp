@@ -1,0 +1,19 @@
+# Shared body of Figures 1.3-1.4: the graph G of Definition 1.8 for case C ('connected' or
+# 'isolated'): edges |x_i - x_j| < h, particles outside Omega (the BFS sources) as open
+# squares, particles in Omega as dots, unconnected particles and their edges marked.
+load 'figures/style.gp'
+set terminal svg size 600,640 dynamic enhanced font 'Helvetica,12' background rgb 'white'
+set output out
+unset logscale; set format x '%g'; set format y '%g'
+set size ratio -1; set xrange [-0.1:1.1]; set yrange [-0.1:1.1]
+set object 1 rect from 0,0 to 1,1 fc rgb '#eeeeee' fs solid noborder behind
+set key outside below maxrows 2
+p = datadir.'/thesis_connectivity_particles.tsv'; e = datadir.'/thesis_connectivity_edges.tsv'
+H = system(sprintf("awk -F' = ' '/^# h =/{print $2}' '%s'", p))
+OK = system(sprintf("awk -F' = ' '/^# h_connected_%s =/{print $2}' '%s'", C, p))
+set title sprintf('%s, h = %.4g: h-connectivity %s', T, H+0, OK eq 'yes' ? 'holds' : 'fails')
+plot rows(e, sprintf('$1=="%s" && $6==0', C)) using 2:3:($4-$2):($5-$3) with vectors nohead lt 7 dt 1 lw 0.4 title 'edges of G', \
+     rows(e, sprintf('$1=="%s" && $6==1', C)) using 2:3:($4-$2):($5-$3) with vectors nohead lt 3 dt 1 lw 1.5 title 'edges of the unconnected group', \
+     rows(p, sprintf('$1=="%s" && $4==0', C)) using 2:3 with points lt 2 pt 4 ps 0.5 title 'particles on Γ ∪ Γ_H (BFS sources)', \
+     rows(p, sprintf('$1=="%s" && $4==1 && $6==0', C)) using 2:3 with points lt 1 pt 7 ps 0.4 title 'particles in Ω reached', \
+     rows(p, sprintf('$1=="%s" && $6==1', C)) using 2:3 with points lt 3 pt 9 ps 1.0 title 'particles in Ω not reached'

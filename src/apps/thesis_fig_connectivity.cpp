@@ -1,0 +1,90 @@
+// thesis_fig_connectivity: the graph G of Definition 1.8 for the thesis' Figures 1.3–1.4.
+//
+// Case "connected": a jittered grid with h = 2.4 Δx (no guarantee from Lemma 1.10, which asks
+// h > 2 r_c; the search decides, and the data file records the answer).  Case "isolated": the same distribution with every particle
+// removed whose distance from a centre inside Ω lies in [ρ, ρ + h): the group within ρ keeps its
+// internal edges but no chain of steps shorter than h leaves it, so the h-connectivity fails and
+// the breadth-first search from the particles outside Ω (h_connectivity) must not reach it.
+#include <chrono>
+#include <cmath>
+
+#include "gpm/args.hpp"
+#include "gpm/connectivity.hpp"
+#include "gpm/domain.hpp"
+#include "gpm/error.hpp"
+#include "gpm/tsv.hpp"
+
+using namespace gpm;
+
+namespace {
+
+int body(int argc, char** argv) {
+  Args a("thesis_fig_connectivity",
+         "Graph G of the h-connectivity (thesis Def. 1.8, Figs. 1.3-1.4): one distribution that\n"
+         "satisfies it and one with an isolated group in Omega; BFS from the particles outside Omega.");
+  a.opt("particles", "", "output TSV of particles (required)")
+      .opt("edges", "", "output TSV of graph edges (required)")
+      .opt("dx", "2^-4", "grid spacing")
+      .opt("h-over-dx", "2.4", "influence radius h / dx")
+      .opt("centre", "0.3,0.5", "centre of the isolated group (inside Omega)")
+      .opt("radius-over-dx", "1.3", "radius rho of the isolated group, in dx")
+      .opt("seed", "1", "jitter seed (non-negative integer)");
+  a.parse(argc, argv);
+  if (a.str("particles").empty() || a.str("edges").empty())
+    throw InputError("--particles and --edges are required (see --help)");
+  const double dx = a.positive("dx"), h = a.positive("h-over-dx") * dx;
+  const double rho = a.positive("radius-over-dx") * dx;
+  const auto c = a.nums("centre");
+  if (c.size() != 2 || !Domain::in_omega(c[0], c[1]))
+    throw InputError("--centre: need two numbers inside Omega = (0,1)^2, got '" + a.str("centre") + "'");
+  const long long seed = a.integer("seed");
+  if (seed < 0) throw InputError("--seed: must be non-negative, got " + a.str("seed"));
+  const auto t0 = std::chrono::steady_clock::now();
+  const Particles full = jittered_grid(dx, static_cast<uint64_t>(seed));
+
+  // The distribution with an isolated group: drop the annulus ρ ≤ |x − c| < ρ + h.
+  Particles cut;
+  for (std::size_t i = 0; i < full.size(); ++i) {
+    const double d = std::hypot(full.x[i] - c[0], full.y[i] - c[1]);
+    if (d < rho || d >= rho + h) cut.push(full.x[i], full.y[i], full.gi[i], full.gj[i]);
+  }
+
+  TsvTable tp, te;
+  for (TsvTable* t : {&tp, &te}) {
+    t->set("program", "thesis_fig_connectivity");
+    for (auto& [k, v] : a.values()) t->set(k, v);
+    t->set("h", h);
+  }
+  tp.columns = {"case", "x", "y", "in_omega", "hops", "unconnected"};
+  te.columns = {"case", "x1", "y1", "x2", "y2", "unconnected"};
+  for (auto [name, p] : {std::pair<const char*, const Particles*>{"connected", &full},
+                         {"isolated", &cut}}) {
+    const ConnectivityResult r = h_connectivity(*p, h);
+    std::vector<uint8_t> bad(p->size(), 0);
+    for (int32_t i : r.unconnected) bad[i] = 1;
+    for (std::size_t i = 0; i < p->size(); ++i)
+      tp.add_row({name, fmt(p->x[i]), fmt(p->y[i]), fmt(static_cast<int>(p->in_omega[i])),
+                  fmt(r.hops[i]), fmt(static_cast<int>(bad[i]))});
+    for (auto [i, j] : neighbour_edges(*p, h))
+      te.add_row({name, fmt(p->x[i]), fmt(p->y[i]), fmt(p->x[j]), fmt(p->y[j]),
+                  fmt(static_cast<int>(bad[i]))});
+    for (TsvTable* t : {&tp, &te}) {
+      t->set(std::string("N_") + name, fmt(p->size()));
+      t->set(std::string("h_connected_") + name, r.connected ? "yes" : "no");
+      t->set(std::string("unconnected_") + name, fmt(r.unconnected.size()));
+    }
+    std::fprintf(stderr, "[thesis_fig_connectivity] %s: N=%zu h-connectivity %s, %zu unconnected\n",
+                 name, p->size(), r.connected ? "holds" : "fails", r.unconnected.size());
+  }
+  for (TsvTable* t : {&tp, &te}) {
+    add_provenance(*t);
+    t->set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  te.save(a.str("edges"));
+  tp.save(a.str("particles"));
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return run_main("thesis_fig_connectivity", body, argc, argv); }

@@ -1,0 +1,53 @@
+// thesis_fig_weights: samples w(r) of the thesis' Chapter-4 weight functions for the graphs of
+// Figures 4.2 (cubic B-spline, quintic B-spline, quadratic spike) and 4.4 (quadratic and cubic
+// spike), and of the gradient/Laplacian weights of Section 4.1.2.  The values come from the
+// weight registry (the B-splines as corrected there; see the report's errata).
+#include <chrono>
+#include <cmath>
+
+#include "gpm/args.hpp"
+#include "gpm/error.hpp"
+#include "gpm/tsv.hpp"
+#include "gpm/weights.hpp"
+
+using namespace gpm;
+
+namespace {
+
+const std::vector<std::string> kWeights = {
+    "quadratic_spike",    "cubic_bspline",              "quintic_bspline",
+    "cubic_spike",        "quartic_polynomial",         "piecewise_cubic_polynomial",
+    "piecewise_quintic_polynomial"};
+
+int body(int argc, char** argv) {
+  Args a("thesis_fig_weights", "w(r) samples of the thesis' Chapter-4 weights (Figures 4.2, 4.4).");
+  a.opt("out", "", "output TSV (required)").opt("samples", "401", "samples on [0, 1.2]");
+  a.parse(argc, argv);
+  if (a.str("out").empty()) throw InputError("--out PATH is required (see --help)");
+  const long long n = a.integer("samples");
+  if (n < 2 || n > 1000000) throw InputError("--samples: " + a.str("samples") + " is out of range [2, 1000000]");
+  const auto t0 = std::chrono::steady_clock::now();
+  TsvTable t;
+  t.set("program", "thesis_fig_weights");
+  t.set("samples", fmt(n));
+  t.set("range", "r in [0, 1.2]");
+  t.columns = {"r"};
+  for (auto& w : kWeights) {
+    t.columns.push_back(w);
+    t.set("source_" + w, weight(w).source);
+  }
+  for (long long i = 0; i < n; ++i) {
+    const double r = 1.2 * static_cast<double>(i) / static_cast<double>(n - 1);
+    std::vector<std::string> row{fmt(r)};
+    for (auto& w : kWeights) row.push_back(fmt(weight(w).value(r)));
+    t.add_row(row);
+  }
+  add_provenance(t);
+  t.set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  t.save(a.str("out"));
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return run_main("thesis_fig_weights", body, argc, argv); }

@@ -1,0 +1,184 @@
+// thesis_heat: the discrete heat problem of the thesis, §4.3 (Figures 4.9–4.11,
+// Tables 4.5–4.7), one setting of the time step per run (--table):
+//
+//   4.5: Δt₀ = 0.0025h², θ = 0, ½, 1, Δx = 2^-5 … 2^-8 (rates from 2^-7, 2^-8);
+//   4.6: Δt₀ = 0.5h²,    θ = 0, ½, 1, Δx = 2^-5 … 2^-9 (rates from 2^-8, 2^-9);
+//   4.7: Δt₀ = 0.5h,     θ = ½, 1,    Δx = 2^-5 … 2^-9.
+// κ = 0.5, T = 0.1, ũ = exp(−2κπ²t) sin(πx) sin(πy), weights quartic / piecewise cubic /
+// piecewise quintic polynomial, V_i = |Ω_H|/N, h = (2.6⁴·2^-10·Δx)^{1/4} as printed.
+// K = ⌈T/Δt₀⌉ and Δt = T/K (heat.hpp).  Error (4.2): ℓ∞ in time of the ℓ²(Ω_H) norm.
+//
+// Output: --out (every run, cached; a run that blows up has rel_error NA and its step and
+// growth factor) and --rates-input (the same rows without any (weight, θ) series that blew
+// up at some level, for rate_table: a rate through a blown-up level is not a rate).
+//
+//   thesis_heat --table 4.6 --profile quick --out data/quick/thesis_table4_6.tsv
+//     --rates-input data/quick/thesis_table4_6_finite.tsv
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "gpm/args.hpp"
+#include "gpm/domain.hpp"
+#include "gpm/error.hpp"
+#include "gpm/heat.hpp"
+#include "gpm/laplacian_matrix.hpp"
+#include "gpm/poisson.hpp"
+#include "gpm/profile.hpp"
+#include "gpm/study.hpp"
+#include "gpm/tsv.hpp"
+#include "gpm/weights.hpp"
+
+using namespace gpm;
+
+namespace {
+
+// --- Parameters --------------------------------------------------------------------------
+struct TableSetting {
+  std::string table;             // "4.5", "4.6", "4.7"
+  std::string dt_rule;           // for the header
+  double c;                      // Δt₀ = c·h^p
+  int p;
+  std::vector<double> thetas;
+  std::vector<int> quick, paper;  // levels k, Δx = 2^-k
+};
+
+const std::vector<TableSetting> kTables = {
+    {"4.5", "0.0025 h^2", 0.0025, 2, {0, 0.5, 1}, {5, 6}, {5, 6, 7, 8}},
+    {"4.6", "0.5 h^2", 0.5, 2, {0, 0.5, 1}, {5, 6, 7}, {5, 6, 7, 8, 9}},
+    {"4.7", "0.5 h", 0.5, 1, {0.5, 1}, {5, 6, 7}, {5, 6, 7, 8, 9}},
+};
+const std::vector<std::string> kWeights = {"quartic_polynomial", "piecewise_cubic_polynomial",
+                                           "piecewise_quintic_polynomial"};
+constexpr double kKappa = 0.5, kT = 0.1;
+
+const TableSetting& table_setting(const std::string& t) {
+  for (auto& s : kTables)
+    if (s.table == t) return s;
+  throw InputError("unknown --table '" + t + "'; valid: 4.5, 4.6, 4.7");
+}
+
+// The rows of series (weight, θ) that never blew up: the input of rate_table.
+void write_rates_input(LevelCache& cache, const std::string& path) {
+  TsvTable t;
+  for (const char* key : {"program", "table", "profile", "seed", "dt_nominal", "error"})
+    if (auto v = cache.table().get(key)) t.set(key, *v);
+  const auto& rows = cache.rows();
+  std::set<std::string> blown;
+  for (auto& r : rows)
+    if (r[13] == "yes") blown.insert(r[0] + "|" + r[1]);
+  t.columns = {"weight", "theta", "level", "h", "rel_error"};
+  t.set("note", "rows of thesis_heat's data file whose (weight, theta) series never blew up");
+  for (auto& r : rows)
+    if (!blown.count(r[0] + "|" + r[1])) t.add_row({r[0], r[1], r[2], r[4], r[10]});
+  add_provenance(t);
+  t.save(path);
+}
+
+int body(int argc, char** argv) {
+  Args a("thesis_heat",
+         "Discrete heat problem with the theta-method (thesis §4.3): relative errors (4.2)\n"
+         "per weight, theta and level for one time-step setting (Tables 4.5-4.7).");
+  a.opt("table", "", "4.5 (dt = 0.0025h^2), 4.6 (dt = 0.5h^2) or 4.7 (dt = 0.5h) (required)")
+      .opt("profile", "quick", "quick or paper (levels per table at the top of the source)")
+      .opt("out", "", "data file (required)")
+      .opt("rates-input", "", "data file of the series that never blew up (for rate_table)")
+      .opt("seed", "1", "jitter seed")
+      .opt("tol", "1e-10", "CG relative residual per implicit step")
+      .opt("blowup", "1e6", "stop when ||U^k|| > blowup * ||U^0|| (l2(Omega_H))")
+      .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
+      .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB)")
+      .opt("levels", "", "override the profile's levels (comma-separated k)");
+  a.parse(argc, argv);
+  if (a.str("out").empty() || a.str("table").empty())
+    throw InputError("--table and --out are required (see --help)");
+  const TableSetting& ts = table_setting(a.str("table"));
+  const Profile prof = parse_profile(a.str("profile"));
+  const uint64_t seed = static_cast<uint64_t>(a.integer("seed"));
+  HeatSetting hs;
+  hs.kappa = kKappa;
+  hs.T = kT;
+  hs.tol = a.positive("tol");
+  hs.blowup_factor = a.positive("blowup");
+  const auto storage = parse_laplacian_storage(a.str("storage"));
+  const double max_bytes = a.positive("max-gb") * 1e9;
+  std::vector<int> levels = pick(prof, ts.quick, ts.paper);
+  if (!a.str("levels").empty()) {
+    levels.clear();
+    for (double k : a.nums("levels")) levels.push_back(static_cast<int>(k));
+  }
+
+  // --- The data file: one row per (weight, θ, level), cached. -----------------------------
+  LevelCache cache(
+      a.str("out"),
+      {{"program", "thesis_heat"}, {"table", ts.table}, {"profile", profile_name(prof)},
+       {"seed", fmt(static_cast<long long>(seed))}, {"kappa", fmt(kKappa)}, {"T", fmt(kT)},
+       {"dt_nominal", ts.dt_rule}, {"steps", "K = ceil(T/dt_nominal), dt = T/K"},
+       {"tol", fmt(hs.tol)}, {"blowup", fmt(hs.blowup_factor)},
+       {"h", "(2.6^4 2^-10 dx)^(1/4)"}, {"volumes", "uniform |Omega_H|/N"},
+       {"error", "(4.2): max_k ||u-U||_l2(Omega_H) / max_k ||u||_l2(Omega_H)"}},
+      {"weight", "theta", "level", "dx", "h", "N", "N_omega", "storage", "K", "dt",
+       "rel_error", "rel_error_max", "growth_max", "blew_up", "blowup_step", "growth", "amplification",
+       "steps_done", "cg_mean_iterations", "max_rel_residual", "s_per_step", "seconds"},
+      3);
+  const Domain dom;
+  double total = 0;
+  for (int k : levels) {
+    const double dx = std::ldexp(1.0, -k);
+    const double h = std::pow(std::pow(2.6, 4) * std::pow(2.0, -10) * dx, 0.25);
+    const double dt0 = ts.c * std::pow(h, ts.p);
+    const Particles p = jittered_grid(dx, seed);
+    const auto V = uniform_volumes(p, dom);
+    bool checked = false;
+    for (const auto& wname : kWeights) {
+      bool todo = false;
+      for (double th : ts.thetas) todo = todo || !cache.has({wname, fmt(th), fmt(k)});
+      if (!todo) continue;
+      if (!checked) require_h_connectivity(p, h), checked = true;
+      // One Laplacian per (level, weight), reused by every θ and every step.
+      const DiscreteLaplacian L(p, V, weight(wname), h, storage, max_bytes);
+      for (double th : ts.thetas) {
+        if (cache.has({wname, fmt(th), fmt(k)})) continue;
+        hs.theta = th;
+        hs.dt_nominal = dt0;
+        const HeatResult r = solve_heat(p, L, hs);
+        total += r.seconds;
+        const std::string na = "NA";
+        cache.add({wname, fmt(th), fmt(k), fmt(dx), fmt(h), fmt(p.size()), fmt(L.n_unknowns()),
+                   L.assembled() ? "assembled" : "matrix_free", fmt(static_cast<long long>(r.K)), fmt(r.dt),
+                   r.blew_up ? na : fmt(r.rel_error), r.blew_up ? na : fmt(r.rel_error_max),
+                   fmt(r.growth_max), r.blew_up ? "yes" : "no", r.blew_up ? fmt(static_cast<long long>(r.blowup_step)) : na,
+                   r.blew_up ? fmt(r.growth) : na, r.blew_up ? fmt(r.amplification) : na,
+                   fmt(static_cast<long long>(r.steps_done)), fmt(r.mean_cg_iterations), fmt(r.max_rel_residual),
+                   fmt(r.seconds_per_step), fmt(r.seconds)});
+        cache.table().set("wall_time_s", total);
+        cache.save();
+        if (!a.str("rates-input").empty()) write_rates_input(cache, a.str("rates-input"));
+        if (r.blew_up)
+          std::fprintf(stderr,
+                       "thesis_heat %s: %-28s theta=%-3g dx=2^-%d h=%.4f K=%ld  BLOW-UP at step "
+                       "%ld: ||U||/||U0|| = %.3g (x%.3g in the last step)  %.2f s\n",
+                       ts.table.c_str(), wname.c_str(), th, k, h, r.K, r.blowup_step, r.growth,
+                       r.amplification, r.seconds);
+        else
+          std::fprintf(stderr,
+                       "thesis_heat %s: %-28s theta=%-3g dx=2^-%d h=%.4f K=%ld err=%.4e "
+                       "CG %.1f it/step  %.3g s/step  %.2f s\n",
+                       ts.table.c_str(), wname.c_str(), th, k, h, r.K, r.rel_error,
+                       r.mean_cg_iterations, r.seconds_per_step, r.seconds);
+      }
+    }
+  }
+  if (!a.str("rates-input").empty()) write_rates_input(cache, a.str("rates-input"));
+  std::printf("thesis_heat %s: wrote %s (%zu rows, %zu reused, %.1f s computed)\n",
+              ts.table.c_str(), a.str("out").c_str(), cache.rows().size(), cache.reused(),
+              total);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return run_main("thesis_heat", body, argc, argv); }

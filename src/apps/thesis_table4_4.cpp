@@ -1,0 +1,133 @@
+// thesis_table4_4: the discrete Poisson problem of the thesis, §4.2 (Figure 4.8, Table 4.4).
+//
+//   −Δ_h U_i = f_i in Ω,  U_i = g̃_i outside,  u = g̃ = sin(2π(x+y)),  f = −Δu = 8π² u,
+//   weights: quartic, piecewise cubic, piecewise quintic polynomial (= SPH bell, cubic and
+//   quintic B-spline, thesis Appendix A.1), V_i = |Ω_H|/N (A.10), jittered grid Δx = 2^-k,
+//   relative ℓ∞ error max_Ω|ũ − U| / max_Ω|ũ|; rates from the two finest levels.
+//
+// Two readings of the influence radius:
+//   h10: h = (2.6⁴·2^-10·Δx)^{1/4}  as printed (h > H = 0.1 for Δx ≥ 2^-8);
+//   h15: h = (2.6⁴·2^-15·Δx)^{1/4}  = imoto_h(4, Δx), h = 2.6·2^-5 at Δx = 2^-5.
+//
+//   thesis_table4_4 --profile quick --out data/quick/thesis_table4_4.tsv
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "gpm/args.hpp"
+#include "gpm/domain.hpp"
+#include "gpm/error.hpp"
+#include "gpm/laplacian_matrix.hpp"
+#include "gpm/poisson.hpp"
+#include "gpm/profile.hpp"
+#include "gpm/study.hpp"
+#include "gpm/testfunctions.hpp"
+#include "gpm/tsv.hpp"
+#include "gpm/weights.hpp"
+
+using namespace gpm;
+
+namespace {
+
+// --- Parameters --------------------------------------------------------------------------
+const std::vector<int> kQuickLevels = {5, 6, 7};
+const std::vector<int> kPaperLevels = {5, 6, 7, 8, 9};
+const std::vector<std::string> kWeights = {"quartic_polynomial", "piecewise_cubic_polynomial",
+                                           "piecewise_quintic_polynomial"};
+const std::vector<std::string> kHRules = {"h10", "h15"};
+
+double influence_radius(const std::string& rule, double dx) {
+  const double c = rule == "h10" ? std::pow(2.0, -10) : std::pow(2.0, -15);
+  return std::pow(std::pow(2.6, 4) * c * dx, 0.25);
+}
+
+int body(int argc, char** argv) {
+  Args a("thesis_table4_4",
+         "Discrete Poisson problem (thesis §4.2): relative l-infinity errors per weight,\n"
+         "level and reading of h (Figure 4.8, Table 4.4).");
+  a.opt("profile", "quick", "quick (levels 5-7) or paper (levels 5-9)")
+      .opt("out", "", "data file (required)")
+      .opt("seed", "1", "jitter seed")
+      .opt("tol", "1e-10", "CG relative residual on the symmetric form")
+      .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
+      .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB); above: matrix-free")
+      .opt("levels", "", "override the profile's levels (comma-separated k, dx = 2^-k)");
+  a.parse(argc, argv);
+  if (a.str("out").empty()) throw InputError("--out PATH is required (see --help)");
+  const Profile prof = parse_profile(a.str("profile"));
+  const uint64_t seed = static_cast<uint64_t>(a.integer("seed"));
+  const double tol = a.positive("tol");
+  const auto storage = parse_laplacian_storage(a.str("storage"));
+  const double max_bytes = a.positive("max-gb") * 1e9;
+  std::vector<int> levels = pick(prof, kQuickLevels, kPaperLevels);
+  if (!a.str("levels").empty()) {
+    levels.clear();
+    for (double k : a.nums("levels")) levels.push_back(static_cast<int>(k));
+  }
+
+  // --- The data file: one row per (reading of h, weight, level), cached. ------------------
+  LevelCache cache(a.str("out"),
+                   {{"program", "thesis_table4_4"}, {"profile", profile_name(prof)},
+                    {"seed", fmt(static_cast<long long>(seed))}, {"tol", fmt(tol)},
+                    {"function", "sin2pi"}, {"volumes", "uniform |Omega_H|/N"},
+                    {"error", "max_Omega|u-U| / max_Omega|u|"},
+                    {"h10", "(2.6^4 2^-10 dx)^(1/4)"}, {"h15", "(2.6^4 2^-15 dx)^(1/4)"}},
+                   {"h_rule", "weight", "level", "dx", "h", "N", "N_omega", "nnz", "storage",
+                    "rel_error", "cg_iterations", "rel_residual", "assembly_s", "solve_s",
+                    "seconds"},
+                   3);
+  const TestFunction& u = test_function("sin2pi");
+  const Domain dom;
+  double total = 0;
+  for (int k : levels) {
+    const double dx = std::ldexp(1.0, -k);
+    // Particles, volumes, data: shared by every weight and reading of h at this level.
+    const Particles p = jittered_grid(dx, seed);
+    const auto V = uniform_volumes(p, dom);
+    std::vector<double> f(p.size()), g(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      g[i] = u.v(p.x[i], p.y[i]);
+      f[i] = -u.lap(p.x[i], p.y[i]);
+    }
+    double umax = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.in_omega[i]) umax = std::max(umax, std::fabs(g[i]));
+    for (const auto& rule : kHRules) {
+      const double h = influence_radius(rule, dx);
+      for (const auto& wname : kWeights) {
+        if (cache.has({rule, wname, fmt(k)})) continue;
+        const auto t0 = std::chrono::steady_clock::now();
+        const DiscreteLaplacian L(p, V, weight(wname), h, storage, max_bytes);
+        const PoissonResult r = solve_poisson(p, L, f, g, tol);
+        double err = 0;
+        for (std::size_t i = 0; i < p.size(); ++i)
+          if (p.in_omega[i]) err = std::max(err, std::fabs(g[i] - r.U[i]));
+        const double secs =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        total += secs;
+        cache.add({rule, wname, fmt(k), fmt(dx), fmt(h), fmt(p.size()),
+                   fmt(L.n_unknowns()), fmt(static_cast<long long>(L.nnz())),
+                   L.assembled() ? "assembled" : "matrix_free", fmt(err / umax),
+                   fmt(r.cg.iterations), fmt(r.cg.rel_residual), fmt(L.assembly_seconds()),
+                   fmt(r.solve_seconds), fmt(secs)});
+        cache.table().set("wall_time_s", total);
+        cache.save();
+        std::fprintf(stderr,
+                     "thesis_table4_4: %s %-28s dx=2^-%d h=%.4f N=%zu nnz=%.3g %s  "
+                     "err=%.4e  CG %d it (res %.1e)  %.1f s\n",
+                     rule.c_str(), wname.c_str(), k, h, p.size(), static_cast<double>(L.nnz()),
+                     L.assembled() ? "assembled" : "matrix-free", err / umax,
+                     r.cg.iterations, r.cg.rel_residual, secs);
+      }
+    }
+  }
+  std::printf("thesis_table4_4: wrote %s (%zu rows, %zu reused, %.1f s computed)\n",
+              a.str("out").c_str(), cache.rows().size(), cache.reused(), total);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return run_main("thesis_table4_4", body, argc, argv); }

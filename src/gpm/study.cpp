@@ -1,0 +1,130 @@
+#include "gpm/study.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include "gpm/error.hpp"
+#include "gpm/kernel.hpp"
+#include "gpm/testfunctions.hpp"
+#include "gpm/weights.hpp"
+
+namespace gpm {
+
+LevelCache::LevelCache(std::string path, std::vector<std::pair<std::string, std::string>> params,
+                       std::vector<std::string> columns, int key_columns)
+    : path_(std::move(path)), key_columns_(key_columns) {
+  for (auto& [k, v] : params) table_.set(k, v);
+  table_.columns = std::move(columns);
+  // Reuse only a file written with the same parameters AND the same columns.
+  auto old = TsvTable::load_matching(path_, params);
+  if (!old.empty()) {
+    const auto header = TsvTable::load(path_).columns;
+    if (header == table_.columns) {
+      table_.rows = std::move(old);
+      reused_ = table_.rows.size();
+    }
+  }
+}
+
+bool LevelCache::has(const std::vector<std::string>& key) const {
+  for (auto& r : table_.rows) {
+    bool match = r.size() >= key.size();
+    for (std::size_t c = 0; match && c < key.size(); ++c) match = r[c] == key[c];
+    if (match) return true;
+  }
+  return false;
+}
+
+void LevelCache::add(std::vector<std::string> row) { table_.add_row(std::move(row)); }
+
+void LevelCache::save() {
+  add_provenance(table_);
+  table_.save(path_);
+}
+
+std::vector<double> uniform_volumes(const Particles& p, const Domain& dom) {
+  return std::vector<double>(p.size(), dom.area_H() / static_cast<double>(p.size()));
+}
+
+namespace {
+unsigned op_bit(Operator op) {
+  return op == Operator::interp ? kInterp : op == Operator::grad ? kGrad : kLap;
+}
+}  // namespace
+
+FusedErrors fused_errors(const Particles& p, const std::vector<double>& V, double h,
+                         const std::vector<ErrorRequest>& requests,
+                         const std::vector<std::string>& functions, bool count_pairs) {
+  if (functions.empty() || functions.size() > FusedKernel::kMaxFields)
+    throw InputError("between 1 and " + std::to_string(FusedKernel::kMaxFields) +
+                     " test functions per pass, got " + std::to_string(functions.size()));
+  // One kernel weight per distinct registry name, with the union of its operators.
+  std::vector<KernelWeight> kw;
+  std::map<std::string, int> slot;
+  for (auto& r : requests) {
+    auto it = slot.find(r.weight);
+    if (it == slot.end()) {
+      slot[r.weight] = static_cast<int>(kw.size());
+      kw.push_back(KernelWeight{weight(r.weight), op_bit(r.op)});
+    } else {
+      kw[it->second].ops |= op_bit(r.op);
+    }
+  }
+  std::vector<const TestFunction*> tf;
+  std::vector<std::vector<double>> fields;
+  for (auto& name : functions) {
+    tf.push_back(&test_function(name));
+    std::vector<double> v(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) v[i] = tf.back()->v(p.x[i], p.y[i]);
+    fields.push_back(std::move(v));
+  }
+  const auto targets = omega_targets(p);
+  if (targets.empty()) throw InputError("no particle lies inside Omega");
+
+  FusedKernel kernel(p, V, h, kw);
+  const auto t0 = std::chrono::steady_clock::now();
+  const KernelResult res = kernel.apply(targets, fields);
+  FusedErrors out;
+  out.kernel_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (count_pairs) out.pairs = static_cast<double>(kernel.count_pairs(targets).accepted);
+
+  for (auto& r : requests) {
+    const int w = slot.at(r.weight);
+    for (std::size_t f = 0; f < tf.size(); ++f) {
+      double err = 0, ref = 0;
+      for (std::size_t k = 0; k < targets.size(); ++k) {
+        const int32_t i = targets[k];
+        const double x = p.x[i], y = p.y[i];
+        double e = 0, q = 0;
+        switch (r.op) {
+          case Operator::interp:
+            e = std::fabs(tf[f]->v(x, y) - res.interpolant(w, f)[k]);
+            q = std::fabs(tf[f]->v(x, y));
+            break;
+          case Operator::grad:
+            e = std::max(std::fabs(tf[f]->vx(x, y) - res.grad_x(w, f)[k]),
+                         std::fabs(tf[f]->vy(x, y) - res.grad_y(w, f)[k]));
+            q = std::max(std::fabs(tf[f]->vx(x, y)), std::fabs(tf[f]->vy(x, y)));
+            break;
+          case Operator::lap:
+            e = std::fabs(tf[f]->lap(x, y) - res.laplacian(w, f)[k]);
+            q = std::fabs(tf[f]->lap(x, y));
+            break;
+        }
+        if (!std::isfinite(e))
+          throw NumericalError("non-finite " + operator_name(r.op) + " with weight " + r.weight +
+                               " at particle " + std::to_string(i));
+        err = std::max(err, e);
+        ref = std::max(ref, q);
+      }
+      if (!(ref > 0))
+        throw InputError("the exact " + operator_name(r.op) + " of '" + functions[f] +
+                         "' vanishes on Omega: relative error undefined");
+      out.errors.push_back({r.weight, functions[f], r.op, err / ref});
+    }
+  }
+  return out;
+}
+
+}  // namespace gpm

@@ -1,0 +1,76 @@
+// What every convergence study shares: the per-level cache of a data file and the
+// relative errors of many (weight, operator, test function) combinations from ONE fused
+// kernel pass per level.
+//
+// A study program reads like the documents' "numerical results" paragraph:
+//
+//   LevelCache cache(out, params, columns, /*key columns*/ 2);
+//   for (int k : levels) for (double m : orders) {
+//     if (cache.has({fmt(k), fmt(m)})) continue;            // done in an earlier run
+//     ... build particles, volumes, h ...
+//     auto e = fused_errors(p, V, h, requests, functions);  // one pass, all weights
+//     cache.add(rows...); cache.save();                     // after every level
+//   }
+#pragma once
+#include <string>
+#include <vector>
+
+#include "gpm/domain.hpp"
+#include "gpm/truncation.hpp"
+#include "gpm/tsv.hpp"
+
+namespace gpm {
+
+// The data file of a study, row by row.  Rows whose first `key_columns` values match a
+// key are one finished unit of work (a level, or a level × order).  On construction the
+// rows of an existing file are kept if its header agrees with `params` on every key (same
+// study, same parameters); otherwise the file is started afresh.
+class LevelCache {
+ public:
+  LevelCache(std::string path, std::vector<std::pair<std::string, std::string>> params,
+             std::vector<std::string> columns, int key_columns);
+  bool has(const std::vector<std::string>& key) const;
+  std::size_t reused() const { return reused_; }
+  void add(std::vector<std::string> row);
+  // Writes every row (atomic) with the params, provenance and any extra meta set on table().
+  void save();
+  TsvTable& table() { return table_; }
+  const std::vector<std::vector<std::string>>& rows() const { return table_.rows; }
+
+ private:
+  std::string path_;
+  TsvTable table_;
+  int key_columns_;
+  std::size_t reused_ = 0;
+};
+
+// One requested operator of one weight.
+struct ErrorRequest {
+  std::string weight;  // registry name
+  Operator op;
+};
+
+struct ErrorResult {
+  std::string weight, function;
+  Operator op;
+  double rel_error = 0;
+};
+
+struct FusedErrors {
+  std::vector<ErrorResult> errors;  // requests × functions, in request order
+  double pairs = 0;                 // pairs with r < h summed over the targets (self included)
+  double kernel_seconds = 0;        // wall time of the fused pass alone
+};
+
+// Relative ℓ∞ errors over the particles in Ω (see truncation.hpp for the definitions) of
+// every request for every test function, from one fused kernel pass.  Weights requested
+// for several operators are evaluated once.  Throws NumericalError naming the particle on
+// a non-finite result.
+FusedErrors fused_errors(const Particles& p, const std::vector<double>& V, double h,
+                         const std::vector<ErrorRequest>& requests,
+                         const std::vector<std::string>& functions, bool count_pairs = true);
+
+// |Ω_H|/N for every particle (imoto §5, thesis (A.10)).
+std::vector<double> uniform_volumes(const Particles& p, const Domain& dom = Domain{});
+
+}  // namespace gpm

@@ -1,0 +1,289 @@
+#include "gpm/thesis_truncation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "gpm/args.hpp"
+#include "gpm/domain.hpp"
+#include "gpm/error.hpp"
+#include "gpm/profile.hpp"
+#include "gpm/progress.hpp"
+#include "gpm/tsv.hpp"
+#include "gpm/voronoi.hpp"
+#include "gpm/weights.hpp"
+
+namespace gpm {
+
+std::string h_reading_name(HReading r) { return r == HReading::printed ? "printed" : "scaled"; }
+
+HReading parse_h_reading(const std::string& s) {
+  if (s == "printed") return HReading::printed;
+  if (s == "scaled") return HReading::scaled;
+  throw InputError("unknown h reading '" + s + "'; valid: printed, scaled");
+}
+
+double thesis_h(HReading r, int c, int p, double dx) {
+  require_positive(dx, "dx");
+  if (p <= 0 || c <= 0) throw InputError("thesis_h: powers c and p must be positive");
+  if (r == HReading::printed)
+    return std::pow(std::pow(3.1, c) * std::ldexp(1.0, -10) * dx, 1.0 / p);
+  return 3.1 * std::pow(2.0, 5.0 / p - 5.0) * std::pow(dx, 1.0 / p);
+}
+
+const std::vector<ThesisCase>& thesis_cases() {
+  static const std::vector<ThesisCase> c = {{"case1", "quartic"}, {"case2", "sin2pi"}};
+  return c;
+}
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Pairs (r < h) of a pass, estimated: targets ≈ (1/Δx)² particles in Ω, each with about
+// π h²/Δx² neighbours (an over-estimate where h > H cuts the disc at the edge of Ω_H).
+double predicted_pairs(double dx, double h) {
+  const double pi = std::acos(-1.0);
+  return (1.0 / (dx * dx)) * (pi * h * h / (dx * dx) + 1.0);
+}
+
+// Particles of a level and, computed only when a pass needs them, their Voronoi volumes.
+struct LevelData {
+  Particles p;
+  std::optional<std::vector<double>> voronoi;
+  double voronoi_s = 0;
+  const std::vector<double>& voronoi_volumes(const Domain& dom) {
+    if (!voronoi) {
+      const auto t0 = std::chrono::steady_clock::now();
+      voronoi = voronoi_cells(p, dom, false).area;
+      voronoi_s = seconds_since(t0);
+    }
+    return *voronoi;
+  }
+};
+
+}  // namespace
+
+int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
+  Args args(spec.program, spec.summary);
+  args.opt("out", "", "output TSV file (required)")
+      .opt("cost", "", "optional TSV: paper-profile time and peak memory per pass, "
+                       "measured where run, else extrapolated")
+      .opt("profile", "quick", "quick or paper (the thesis' levels)")
+      .opt("readings", "", "comma-separated h readings: printed, scaled (default: the table's)")
+      .opt("volumes", "voronoi,uniform", "comma-separated volume choices: voronoi, uniform")
+      .opt("max-level", "", "drop levels above this one (e.g. to bound a paper run)")
+      .opt("seed", "1", "jitter seed (non-negative integer)");
+  args.parse(argc, argv);
+  const std::string out = args.str("out");
+  if (out.empty()) throw InputError("--out PATH is required (see --help)");
+  const Profile profile = parse_profile(args.str("profile"));
+  const long long seed_ll = args.integer("seed");
+  if (seed_ll < 0) throw InputError("--seed: must be non-negative, got " + args.str("seed"));
+  const auto seed = static_cast<uint64_t>(seed_ll);
+  std::vector<HReading> readings = spec.readings;
+  if (!args.str("readings").empty()) {
+    readings.clear();
+    for (auto& s : args.list("readings")) readings.push_back(parse_h_reading(s));
+  }
+  std::vector<Volumes> volumes;
+  for (auto& s : args.list("volumes")) volumes.push_back(parse_volumes(s));
+  if (readings.empty() || volumes.empty())
+    throw InputError("--readings and --volumes must name at least one choice each");
+  int max_level = 99;
+  if (!args.str("max-level").empty()) {
+    max_level = static_cast<int>(args.integer("max-level"));
+    if (max_level < 2 || max_level > 13)
+      throw InputError("--max-level: " + args.str("max-level") + " is out of range [2, 13]");
+  }
+  auto levels_of = [&](HReading r) {
+    std::vector<int> lv;
+    const auto& src = profile == Profile::paper
+                          ? spec.paper_levels
+                          : (r == HReading::printed ? spec.quick_printed : spec.quick_scaled);
+    for (int k : src)
+      if (k <= max_level) lv.push_back(k);
+    return lv;
+  };
+
+  // The data file: its parameters decide whether an earlier run's rows are reused.
+  const Domain dom;
+  std::vector<std::pair<std::string, std::string>> params = {
+      {"program", spec.program},
+      {"table", spec.table},
+      {"seed", fmt(static_cast<long long>(seed))},
+      {"H", fmt(dom.H)},
+      {"jitter_amplitude", "0.25"},
+      {"h_printed", "(3.1^" + fmt(spec.c) + " * 2^-10 * dx)^(1/" + fmt(spec.p) + ")"},
+      {"h_scaled", "3.1 * 2^(5/" + fmt(spec.p) + " - 5) * dx^(1/" + fmt(spec.p) + ")"},
+      {"cases", "case1 = (x-1/2)^4 + (y-1/2)^4, case2 = sin(2 pi (x+y))"},
+      {"rel_error", "max over particles in Omega of |exact - approx| / max over particles in "
+                    "Omega of |exact| (gradient: max of the two components)"},
+      {"rate_levels_thesis", spec.rate_levels},
+  };
+  std::string wnames;
+  for (auto& r : spec.requests) wnames += (wnames.empty() ? "" : ",") + r.weight + ":" + operator_name(r.op);
+  params.push_back({"requests", wnames});
+  const std::vector<std::string> columns = {
+      "h_reading", "volumes", "level", "weight", "operator", "function", "dx", "h", "h_over_H",
+      "N", "N_omega", "pairs", "rel_error", "time_s", "voronoi_s", "peak_rss_mib"};
+  LevelCache cache(out, params, columns, 3);
+  cache.table().set("profile", profile_name(profile));
+  cache.table().set("time_s", "wall time of the fused pass (all weights, operators, cases)");
+  cache.table().set("voronoi_s", "wall time of the Voronoi volumes of the level (0: uniform)");
+  if (cache.reused() > 0)
+    std::fprintf(stderr, "[%s] reusing %zu cached rows from %s\n", spec.program.c_str(),
+                 cache.reused(), out.c_str());
+
+  // What is left to do, for the progress line's ETA.
+  std::vector<int> all_levels;
+  for (HReading r : readings)
+    for (int k : levels_of(r)) all_levels.push_back(k);
+  std::sort(all_levels.begin(), all_levels.end());
+  all_levels.erase(std::unique(all_levels.begin(), all_levels.end()), all_levels.end());
+  auto todo = [&](HReading r, Volumes v, int k) {
+    const auto lv = levels_of(r);
+    return std::find(lv.begin(), lv.end(), k) != lv.end() &&
+           !cache.has({h_reading_name(r), volumes_name(v), fmt(k)});
+  };
+  double total = 0;
+  for (int k : all_levels)
+    for (HReading r : readings)
+      for (Volumes v : volumes)
+        if (todo(r, v, k)) {
+          const double dx = std::ldexp(1.0, -k);
+          total += predicted_pairs(dx, thesis_h(r, spec.c, spec.p, dx));
+        }
+  Progress progress(spec.program, total, "pairs", 0.0);
+  double done = 0;
+
+  std::vector<std::string> functions;
+  for (auto& c : thesis_cases()) functions.push_back(c.function);
+  const auto t_start = std::chrono::steady_clock::now();
+  for (int k : all_levels) {
+    const double dx = std::ldexp(1.0, -k);
+    std::unique_ptr<LevelData> level;  // built on the first pass of this level that runs
+    for (HReading r : readings)
+      for (Volumes v : volumes) {
+        if (!todo(r, v, k)) continue;
+        if (!level) {
+          level = std::make_unique<LevelData>();
+          level->p = jittered_grid(dx, seed, 0.25, dom);
+        }
+        const Particles& p = level->p;
+        const double h = thesis_h(r, spec.c, spec.p, dx);
+        std::vector<double> uniform;
+        double vor_s = 0;
+        const std::vector<double>* V = nullptr;
+        if (v == Volumes::voronoi) {
+          V = &level->voronoi_volumes(dom);
+          vor_s = level->voronoi_s;
+        } else {
+          uniform = uniform_volumes(p, dom);
+          V = &uniform;
+        }
+        const auto t0 = std::chrono::steady_clock::now();
+        const FusedErrors e = fused_errors(p, *V, h, spec.requests, functions, true);
+        const double pass_s = seconds_since(t0);
+        const double rss = peak_rss_mib();
+        for (auto& er : e.errors) {
+          std::string label;
+          for (auto& c : thesis_cases())
+            if (c.function == er.function) label = c.label;
+          cache.add({h_reading_name(r), volumes_name(v), fmt(k), er.weight,
+                     operator_name(er.op), label, fmt(dx), fmt(h), fmt(h / dom.H),
+                     fmt(p.size()), fmt(p.count_in_omega()), fmt(e.pairs), fmt(er.rel_error),
+                     fmt(pass_s), fmt(vor_s), fmt(rss)});
+        }
+        cache.table().set("wall_time_s", seconds_since(t_start));
+        cache.save();
+        done += predicted_pairs(dx, h);
+        std::fprintf(stderr,
+                     "[%s] level %d %s/%s h=%.5g%s N=%zu pairs=%.3g pass %.2fs voronoi %.2fs "
+                     "peak %.0f MiB\n",
+                     spec.program.c_str(), k, h_reading_name(r).c_str(), volumes_name(v).c_str(),
+                     h, h > dom.H ? " (h > H)" : "", p.size(), e.pairs, pass_s, vor_s, rss);
+        progress.update(done);
+      }
+  }
+  progress.finish();
+  if (cache.rows().empty()) throw InputError("no level selected (check --max-level)");
+  cache.table().set("wall_time_s", seconds_since(t_start));
+  cache.save();
+
+  // Paper-profile cost: measured passes as they are; the others extrapolated from the finest
+  // measured pass of the same reading and volumes (pairs per second, Voronoi seconds and peak
+  // memory per particle), with the pair count predicted from h and Δx and calibrated by the
+  // ratio measured/predicted of that pass.
+  if (!args.str("cost").empty()) {
+    TsvTable cost;
+    cost.set("program", spec.program);
+    cost.set("table", spec.table);
+    cost.set("data", out);
+    cost.set("method", "extrapolated rows: time = pairs / (pairs per second of the finest "
+                       "measured pass) + N * (Voronoi s per particle); memory = N * (peak MiB "
+                       "per particle of the finest measured pass)");
+    add_provenance(cost);
+    cost.columns = {"h_reading", "volumes", "level", "dx", "h", "N", "pairs", "time_s",
+                    "voronoi_s", "peak_rss_mib", "source"};
+    const int cr = 0, cv = 1, cl = 2, cn = 9, cp = 11, ct = 13, cvo = 14, cm = 15;
+    double total_s = 0, peak = 0;
+    for (HReading r : readings)
+      for (Volumes v : volumes) {
+        // Finest measured pass of (r, v): one row per request × case; take the first.
+        std::map<int, const std::vector<std::string>*> measured;
+        for (auto& row : cache.rows())
+          if (row[cr] == h_reading_name(r) && row[cv] == volumes_name(v))
+            measured.emplace(std::stoi(row[cl]), &row);
+        if (measured.empty()) continue;
+        const auto& ref = *measured.rbegin()->second;
+        const int kref = measured.rbegin()->first;
+        const double dxr = std::ldexp(1.0, -kref);
+        const double Nr = std::stod(ref[cn]);
+        const double calib = std::stod(ref[cp]) / predicted_pairs(dxr, thesis_h(r, spec.c, spec.p, dxr));
+        const double pps = std::stod(ref[cp]) / std::max(1e-9, std::stod(ref[ct]));
+        const double vps = std::stod(ref[cvo]) / Nr;
+        const double mpp = std::stod(ref[cm]) / Nr;
+        for (int k : spec.paper_levels) {
+          const double dx = std::ldexp(1.0, -k);
+          const double h = thesis_h(r, spec.c, spec.p, dx);
+          const int64_t n1 = grid_last(dx, dom) - grid_first(dx, dom) + 1;
+          const double N = static_cast<double>(n1) * static_cast<double>(n1);
+          std::vector<std::string> row;
+          auto it = measured.find(k);
+          double ts, vs, mem, pairs;
+          std::string src;
+          if (it != measured.end()) {
+            const auto& m = *it->second;
+            pairs = std::stod(m[cp]);
+            ts = std::stod(m[ct]);
+            vs = std::stod(m[cvo]);
+            mem = std::stod(m[cm]);
+            src = "measured";
+          } else {
+            pairs = calib * predicted_pairs(dx, h);
+            ts = pairs / pps;
+            vs = v == Volumes::voronoi ? vps * N : 0;
+            mem = mpp * N;
+            src = "extrapolated from level " + std::to_string(kref);
+          }
+          total_s += ts + vs;
+          peak = std::max(peak, mem);
+          cost.add_row({h_reading_name(r), volumes_name(v), fmt(k), fmt(dx), fmt(h), fmt(N),
+                        fmt(pairs), fmt(ts), fmt(vs), fmt(mem), src});
+        }
+      }
+    cost.set("paper_total_time_s", total_s);
+    cost.set("paper_peak_rss_mib", peak);
+    cost.save(args.str("cost"));
+  }
+  return 0;
+}
+
+}  // namespace gpm

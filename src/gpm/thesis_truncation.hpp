@@ -1,0 +1,53 @@
+// The thesis' truncation-error studies (Chapter 4.1, Tables 4.1–4.3), shared by the three
+// table programs: the influence radius in its two readings, and the level loop that
+// measures every weight × operator × test function of a table in one fused kernel pass per
+// (h reading, volume choice, level).
+//
+// Which h?  The thesis prints h = (3.1^c · 2^-10 · Δx)^(1/p) with (c, p) = (3, 3) for
+// Table 4.1, (3, 5) for Table 4.2 and (4, 4) for Table 4.3.  For p = 3 this is
+// h = 3.1 · 2^-5 at Δx = 2^-5.  For p = 4, 5 the same 2^-10 gives h > H = 0.1 on the coarse
+// levels (the thesis itself requires 0 < h < H).  The "scaled" reading keeps h(2^-5) = 3.1·2^-5
+// for every power, like imoto's h_N = 2.6 · 2^(5/m − 5) Δx^(1/m):
+//     h = 3.1 · 2^(5/p − 5) · Δx^(1/p)   (= (3.1^p · 2^(−5(p−1)) · Δx)^(1/p)),
+// which coincides with the printed formula when c = p = 3.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "gpm/study.hpp"
+
+namespace gpm {
+
+enum class HReading { printed, scaled };
+std::string h_reading_name(HReading r);
+HReading parse_h_reading(const std::string& s);  // InputError listing the valid names
+
+// The influence radius of the thesis' Chapter 4.1 for Δx in the given reading.
+double thesis_h(HReading r, int c, int p, double dx);
+
+// The thesis' two test functions: Case 1 (quartic) and Case 2 (sin 2π(x+y)).
+struct ThesisCase {
+  std::string label;     // "case1", "case2" (the tables' columns)
+  std::string function;  // test-function registry name
+};
+const std::vector<ThesisCase>& thesis_cases();
+
+// One table of the thesis, as its program declares it.
+struct ThesisTableSpec {
+  std::string program;                  // e.g. "thesis_table4_1"
+  std::string summary;                  // --help text
+  std::string table;                    // "Table 4.1 (Section 4.1.1)"
+  int c = 3, p = 3;                     // h = (3.1^c · 2^-10 · Δx)^(1/p) as printed
+  std::vector<ErrorRequest> requests;   // weights × operators, all in one pass
+  std::vector<HReading> readings;       // which h readings to run
+  std::vector<int> quick_printed, quick_scaled;  // levels of the quick profile per reading
+  std::vector<int> paper_levels;        // the thesis' levels (both readings)
+  std::string rate_levels;              // levels the thesis takes its rates from, e.g. "10,11"
+};
+
+// Runs the table: for each level (ascending) and each (reading, volumes) not yet in the data
+// file, one fused pass; writes one row per weight × operator × case and saves after every
+// pass.  Also writes --cost (paper-profile time and memory, measured or extrapolated).
+int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv);
+
+}  // namespace gpm

@@ -1,0 +1,44 @@
+// One truncation-error measurement: build the distribution, the volumes and the
+// neighbour structure, evaluate an operator at every particle in Ω with the fused
+// kernel, and return the relative ℓ∞ error (imoto §5, thesis §4.1):
+//   interp: max|v − Π_h v| / max|v|,   grad: max|∇v − ∇_h v| / max|∇v|,
+//   lap:    max|Δv − Δ_h v| / max|Δv|,
+// maxima over the particles in Ω; |·| of a gradient is the max norm of the two
+// components ([ℓ∞(Ω)]², thesis §4.1.2).
+#pragma once
+#include <cstdint>
+#include <string>
+
+namespace gpm {
+
+enum class Operator { interp, grad, lap };
+enum class Volumes { uniform, voronoi };
+
+Operator parse_operator(const std::string& s);  // InputError listing valid names
+Volumes parse_volumes(const std::string& s);
+std::string operator_name(Operator op);
+std::string volumes_name(Volumes v);
+
+// imoto §5: h_N = 2.6 · 2^(5/m − 5) · Δx^(1/m)  (h = 2.6·2^-5 at Δx = 2^-5 for every m).
+double imoto_h(double m, double dx);
+
+struct TruncationSetting {
+  Operator op = Operator::interp;
+  std::string weight = "quadratic_spike";
+  Volumes volumes = Volumes::uniform;
+  std::string function = "sin2pi";
+  double dx = 0, h = 0;
+  uint64_t seed = 1;
+};
+
+struct TruncationResult {
+  std::size_t n = 0, n_in_omega = 0;
+  double pairs = 0;        // neighbour pairs with r < h summed over targets
+  double rel_error = 0;
+  double seconds = 0;      // wall time of the whole measurement
+  bool h_exceeds_H = false;
+};
+
+TruncationResult truncation_error(const TruncationSetting& s);
+
+}  // namespace gpm
