@@ -14,6 +14,7 @@ $(DATA)/koba_sato_cor71.tsv: $(BUILD)/koba_sato_cor71 tables/published/koba_sato
 # Figure 1-2 data (the cases file is written last, so it is the newest).
 $(DATA)/koba_sato_bounds.tsv: $(BUILD)/koba_sato_bounds
 	$< --profile $(PROFILE) --out $@
+	@touch $(KS_SIDE)  # side outputs no older than the cases file: no spurious remakes
 $(KS_SIDE): $(DATA)/koba_sato_bounds.tsv ;
 
 $(FIGOUT)/koba_sato_fig1.svg: figures/koba_sato_fig1.gp figures/style.gp $(DATA)/koba_sato_fig_particles.tsv $(DATA)/koba_sato_fig_circles.tsv
