@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <sstream>
 
 #include "gpm/error.hpp"
@@ -281,7 +282,8 @@ double mps_lambda0_sum(const CellList& cl, const WeightFunction& wM, double h, V
 
 double radial_moment(const WeightFunction& w, int k, int d) {
   // |S^(d−1)| ∫_0^1 r^(d−1+k) w(r) dr
-  const double sphere = (d == 2) ? 2 * M_PI : (d == 3) ? 4 * M_PI : (d == 1) ? 2.0 : NAN;
+  const double pi = std::numbers::pi;
+  const double sphere = (d == 2) ? 2 * pi : (d == 3) ? 4 * pi : (d == 1) ? 2.0 : NAN;
   if (std::isnan(sphere)) throw InputError("radial_moment: dimension must be 1, 2 or 3");
   double s = 0;
   for (const auto& p : w.shape)

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -177,8 +178,8 @@ TEST_CASE("MPS forms equal the generalized ones under (A.16)-(A.19)", "[operator
   CHECK(l0_sum == Approx(mps_lambda0(wM, Nf, area, fine.h)).epsilon(0.03));
   CHECK(l0_sum < 0.01 * mps_lambda0_printed(wM, Nf, area));
   // Exact moments of 1/r − 1: ∫w = π, ∫|x|² w = π/6.
-  REQUIRE(radial_moment(weight("mps"), 0) == Approx(M_PI).epsilon(1e-14));
-  REQUIRE(radial_moment(weight("mps"), 2) == Approx(M_PI / 6).epsilon(1e-14));
+  REQUIRE(radial_moment(weight("mps"), 0) == Approx(std::numbers::pi).epsilon(1e-14));
+  REQUIRE(radial_moment(weight("mps"), 2) == Approx(std::numbers::pi / 6).epsilon(1e-14));
 }
 
 TEST_CASE("interpolant of a constant with a normalized weight is about 1", "[operators]") {
