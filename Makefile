@@ -50,6 +50,11 @@ build: deps $(BUILD)/CMakeCache.txt
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j 1
 
+# Second tier: the cached paper-profile rates against the published ones (see
+# tests/rates/test_paper_tier.cpp); run after `make report PROFILE=paper`.
+test-paper: build
+	$(BUILD)/gpm_tests "[paper]"
+
 # --- studies, figures, report sections -------------------------------------------------
 # Each study registers itself in mk/<study>.mk: its data rule(s), appending to STUDIES
 # (data files), FIGURES (figures/out/*.svg with their prerequisites) — so an issue adds a
