@@ -63,6 +63,7 @@ test-paper: build
 # program, levels already computed with the same parameters are read back, not redone.
 DATAFILES :=
 FIGFILES :=
+, := ,
 include $(sort $(wildcard mk/*.mk))
 
 # Figures: gnuplot scripts read data/<profile>, write figures/out/<name>.svg.
