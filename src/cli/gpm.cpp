@@ -24,15 +24,7 @@ using namespace gpm;
 
 namespace {
 
-void print(const TsvTable& t) {
-  for (auto& [k, v] : t.meta) std::cout << "# " << k << " = " << v << '\n';
-  for (std::size_t c = 0; c < t.columns.size(); ++c) std::cout << (c ? "\t" : "") << t.columns[c];
-  std::cout << '\n';
-  for (auto& r : t.rows) {
-    for (std::size_t c = 0; c < r.size(); ++c) std::cout << (c ? "\t" : "") << r[c];
-    std::cout << '\n';
-  }
-}
+void print(const TsvTable& t) { t.write(std::cout); }
 
 TsvTable header_from(const Args& a, const std::string& sub) {
   TsvTable t;

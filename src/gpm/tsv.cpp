@@ -40,6 +40,16 @@ int TsvTable::column(const std::string& name) const {
   return -1;
 }
 
+void TsvTable::write(std::ostream& out) const {
+  for (auto& [k, v] : meta) out << "# " << k << " = " << v << '\n';
+  for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "\t" : "") << columns[c];
+  out << '\n';
+  for (auto& r : rows) {
+    for (std::size_t c = 0; c < r.size(); ++c) out << (c ? "\t" : "") << r[c];
+    out << '\n';
+  }
+}
+
 void TsvTable::save(const std::string& path) const {
   namespace fs = std::filesystem;
   const fs::path p(path);
@@ -48,13 +58,7 @@ void TsvTable::save(const std::string& path) const {
   {
     std::ofstream out(tmp);
     if (!out) throw InputError("cannot write " + tmp);
-    for (auto& [k, v] : meta) out << "# " << k << " = " << v << '\n';
-    for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "\t" : "") << columns[c];
-    out << '\n';
-    for (auto& r : rows) {
-      for (std::size_t c = 0; c < r.size(); ++c) out << (c ? "\t" : "") << r[c];
-      out << '\n';
-    }
+    write(out);
     out.flush();
     if (!out) throw InputError("write failed: " + tmp);
   }

@@ -7,6 +7,7 @@
 // level (`TsvTable::save`), and on a rerun with the same parameters reads back the
 // levels it already has (`TsvTable::load_matching`) instead of recomputing them.
 #pragma once
+#include <iosfwd>
 #include <map>
 #include <optional>
 #include <string>
@@ -25,6 +26,8 @@ struct TsvTable {
   void add_row(std::vector<std::string> row);
   int column(const std::string& name) const;  // -1 if absent
 
+  // The `# key = value` lines, the header row and the rows, as they go to a file.
+  void write(std::ostream& out) const;
   // Atomic write (tmp + rename); creates parent directories.
   void save(const std::string& path) const;
   // Throws InputError if the file is missing or malformed.
