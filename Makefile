@@ -88,8 +88,10 @@ report: build
 	$(MAKE) --no-print-directory PROFILE=$(PROFILE) paper/report.html
 
 # --- benchmarks -------------------------------------------------------------------------
+# The measured limit (bench_limit), every kernel variant as a fraction of it, and the
+# Laplacian application (assembled vs matrix-free): mk/70-bench.mk.
 bench: build
-	$(BUILD)/bench_kernel --out data/bench/kernel.tsv
+	$(MAKE) --no-print-directory BUILD=$(BUILD) bench-all
 
 clean:
 	rm -rf $(BUILD) data $(FIGOUT) $(TABOUT) paper/report.html paper/report.pdf

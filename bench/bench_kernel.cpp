@@ -19,10 +19,19 @@
 //   fused9           imoto's nine: Π1–Π3 (Π), ∇1–∇3 (∇), Δ1–Δ3 (Δ)
 //   separate3/9      the same weights as single-weight passes, times summed
 // The machine is shared (others compile on it): compare variants within one run.
+//
+// Against the measured limit (bench_limit → --limit file): each one-weight variant's
+// candidate pairs per second (the lanes its loop actually computes: accepted pairs × the
+// candidates per pair of its cell layout) over the rate of the kernel's arithmetic mix for
+// the same weight with data in L1 — the fraction of what the arithmetic alone allows.
+// Both are also given from CPU time (process CPU seconds / threads), which a shared
+// machine disturbs much less than wall time.  Multi-weight variants have no single-mix
+// limit (blank).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -32,6 +41,7 @@
 #include <vector>
 
 #include "gpm/args.hpp"
+#include "limit_table.hpp"
 #include "gpm/domain.hpp"
 #include "gpm/error.hpp"
 #include "gpm/kernel.hpp"
@@ -45,18 +55,28 @@ using Clock = std::chrono::steady_clock;
 
 struct Timing {
   double best = 0, median = 0;
+  double cpu_best = 0;  // process CPU seconds of the call (all threads), least over repeats
 };
+
+double process_cpu_seconds() {
+  timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
 
 Timing time_it(int repeats, const std::function<void()>& f) {
   f();  // warm-up (page faults, caches, thread pool)
   std::vector<double> t;
+  double cpu = 1e300;
   for (int r = 0; r < repeats; ++r) {
+    const double c0 = process_cpu_seconds();
     const auto a = Clock::now();
     f();
     t.push_back(std::chrono::duration<double>(Clock::now() - a).count());
+    cpu = std::min(cpu, process_cpu_seconds() - c0);
   }
   std::sort(t.begin(), t.end());
-  return {t.front(), t[t.size() / 2]};
+  return {t.front(), t[t.size() / 2], cpu};
 }
 
 std::string cpu_model() {
@@ -65,6 +85,31 @@ std::string cpu_model() {
   while (std::getline(in, line))
     if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
   return "unknown";
+}
+
+// What each variant changes, and the variant it is a step from (for the report's table of
+// steps and what each gained; "vs_previous" = its rate over the previous one's).
+struct Step {
+  const char* previous;
+  const char* description;
+};
+const std::map<std::string, Step>& steps() {
+  static const std::map<std::string, Step> s = {
+      {"plain", {"", "per target 3x3 cells of size h, array of structs, if (r < h)"}},
+      {"fused1_cells1",
+       {"plain", "sorted by cell, structure of arrays, branch-free 8-lane loop over the chord "
+                 "of each row of h-cells"}},
+      {"fused1", {"fused1_cells1", "cells of h/4: fewer candidates per pair (chord)"}},
+      {"fused1_nodiv", {"fused1", "a weight whose w/q^2 is a polynomial: no divide"}},
+      {"fused1_block",
+       {"fused1", "the multi-weight block path for one weight (block in L1, per-weight loop)"}},
+      {"fused1_compact", {"fused1_block", "block path, accepted pairs compressed before the sqrt"}},
+      {"fused1_rsqrt", {"fused1_block", "block path, rsqrt14 + 2 Newton steps for 1/r"}},
+      {"separate3", {"", "3 weights as 3 single-weight passes"}},
+      {"fused3", {"separate3", "3 weights in one pass (shared sqrt/divide, block path)"}},
+      {"separate9", {"", "imoto's 9 weight/operator sets as 9 passes"}},
+      {"fused9", {"separate9", "the 9 sets in one pass"}}};
+  return s;
 }
 
 std::vector<gpm::KernelWeight> with_ops(const std::vector<std::string>& names, unsigned ops) {
@@ -89,6 +134,9 @@ int body(int argc, char** argv) {
       .opt("cells-per-h", "4", "cell size h/k of the fused variants (fused1_cells1: k = 1)")
       .flag("fast-rsqrt", "all fused variants: 1/sqrt(r^2) by rsqrt14 + Newton (AVX-512)")
       .flag("no-fuse-single", "one-weight variants through the block path too")
+      .opt("limit", "data/bench/limit.tsv",
+           "bench_limit's output, for the fraction of the limit (absent file: no fractions)")
+      .opt("profile", "bench", "label recorded as the file's profile (the report's rules pass theirs)")
       .opt("out", "data/bench/kernel.tsv", "TSV output");
   args.parse(argc, argv);
   const double dx = args.positive("dx"), h = args.positive("h");
@@ -100,10 +148,11 @@ int body(int argc, char** argv) {
     threads.push_back(static_cast<int>(t));
   }
   std::vector<std::string> variants = args.list("variants");
+  // In the order of the steps (a variant runs after the one it is compared with).
   const std::vector<std::string> all = {
-      "plain",        "fused1",       "fused1_block", "fused1_compact", "fused1_cells1",
-      "fused1_rsqrt", "fused1_nodiv", "fused3",       "separate3",      "fused9",
-      "separate9"};
+      "plain",          "fused1_cells1", "fused1",    "fused1_nodiv", "fused1_block",
+      "fused1_compact", "fused1_rsqrt",  "separate3", "fused3",       "separate9",
+      "fused9"};
   if (variants.size() == 1 && variants[0] == "all") variants = all;
   for (auto& v : variants)
     if (std::find(all.begin(), all.end(), v) == all.end())
@@ -137,8 +186,15 @@ int body(int argc, char** argv) {
               "one run)\n\n",
               cpu_model().c_str(), repeats);
 
+  const bench::LimitTable limits(args.str("limit"));
+  if (!limits.loaded())
+    std::printf("  (no limit file '%s': run bench_limit first for the fractions)\n\n",
+                args.str("limit").c_str());
+  const auto wall_start = Clock::now();
+
   gpm::TsvTable t;
   t.set("program", "bench_kernel");
+  t.set("profile", args.str("profile"));
   for (auto& [k, val] : args.values()) t.set("arg_" + k, val);
   t.set("n_particles", gpm::fmt(p.size()));
   t.set("n_targets", gpm::fmt(targets.size()));
@@ -146,17 +202,23 @@ int body(int argc, char** argv) {
   t.set("candidates_h4", gpm::fmt(static_cast<long long>(pc.candidates)));
   t.set("candidates_h1_chord", gpm::fmt(static_cast<long long>(pc1.candidates)));
   t.set("cpu", cpu_model());
+  t.set("cpu_family_model", bench::cpu_family_model());
+  t.set("loadavg_1min_start", bench::loadavg());
   t.set("note", "rates = accepted pairs (r<h, self included) / wall seconds of one call; "
                 "machine shared with concurrent builds, compare variants within one run");
   gpm::add_provenance(t);
   t.columns = {"variant", "threads", "weights", "ops", "mode", "cells_per_h", "pairs",
                "seconds_best", "seconds_median", "pairs_per_s", "pair_weights_per_s",
-               "ns_per_pair_weight_thread", "speedup_vs_plain"};
+               "ns_per_pair_weight_thread", "speedup_vs_plain", "candidates_per_pair",
+               "candidates_per_s", "limit_test", "limit_pairs_per_s", "fraction_of_limit",
+               "pairs_per_s_cpu", "candidates_per_s_cpu", "limit_pairs_per_s_cpu",
+               "fraction_of_limit_cpu", "previous", "vs_previous", "description"};
 
-  std::printf("%-15s %3s %3s %-8s %9s %9s %14s %12s %9s\n", "variant", "thr", "nw", "ops",
-              "best_s", "median_s", "pairs/s", "ns/pair·w·thr", "vs plain");
+  std::printf("%-15s %3s %3s %-6s %8s %8s %10s %8s %10s %7s %7s\n", "variant", "thr", "nw",
+              "ops", "best_s", "median_s", "pairs/s", "vs plain", "cand/s", "f_lim", "f_cpu");
   std::vector<double> plain_rate(threads.size(), 0);
   std::map<std::string, double> best;  // "variant/threads" → best seconds
+  std::map<std::string, double> rate_of;  // "variant/threads" → pairs per second
 
   // A check that the variants compute the same numbers (max relative difference).
   std::vector<double> ref_lap;
@@ -239,17 +301,42 @@ int body(int argc, char** argv) {
       }
       const double rate = pairs / tm.best;
       if (var == "plain") plain_rate[ti] = rate;
+      rate_of[var + "/" + std::to_string(nt)] = rate;
+      const Step& step = steps().at(var);
+      const auto prev = rate_of.find(std::string(step.previous) + "/" + std::to_string(nt));
+      const double vs_prev = prev != rate_of.end() ? rate / prev->second : NAN;
       best[var + "/" + std::to_string(nt)] = tm.best;
       const double ns = 1e9 * tm.best * nt / (pairs * nw);
       const double speed = plain_rate[ti] > 0 ? rate / plain_rate[ti] : NAN;
-      std::printf("%-15s %3d %3d %-8s %9.4f %9.4f %14.4g %12.3f %9.2f\n", var.c_str(), nt, nw,
-                  ops.c_str(), tm.best, tm.median, rate, ns, speed);
+      // Candidates per accepted pair of this variant's cell layout (plain: 3×3 cells of h,
+      // 9/π on average); separate passes each visit the candidates once.
+      double cpp = var == "plain"           ? 9.0 / std::numbers::pi
+                   : var == "fused1_cells1" ? static_cast<double>(pc1.candidates) / pairs
+                                            : static_cast<double>(pc.candidates) / pairs;
+      // The limit: the arithmetic mix of the same single weight (Π+∇+Δ).
+      std::string limit_test;
+      if (nw == 1 && passes.size() <= 1)
+        limit_test = "mix:" + std::string(var == "fused1_nodiv" ? "quartic_polynomial" : w1) +
+                     ":PGL";
+      const bench::Limit lim = limit_test.empty() ? bench::Limit{} : limits.get(limit_test, nt);
+      if (!lim.found()) limit_test.clear();
+      const double cand_rate = rate * cpp;
+      const double frac = lim.found() ? cand_rate / lim.rate : NAN;
+      const double rate_cpu = pairs / (tm.cpu_best / nt);
+      const double frac_cpu = lim.found() ? rate_cpu * cpp / lim.rate_cpu : NAN;
+      auto opt_fmt = [](double x) { return std::isfinite(x) ? gpm::fmt(x) : std::string(); };
+      std::printf("%-15s %3d %3d %-6s %8.4f %8.4f %10.4g %8.2f %10.4g %7.3f %7.3f\n",
+                  var.c_str(), nt, nw, ops.c_str(), tm.best, tm.median, rate, speed,
+                  cand_rate, frac, frac_cpu);
       std::fflush(stdout);
       t.add_row({var, gpm::fmt(nt), gpm::fmt(nw), ops, mode,
                  gpm::fmt(var == "plain" ? 0 : opt.cells_per_h),
                  gpm::fmt(static_cast<long long>(pc.accepted)), gpm::fmt(tm.best),
                  gpm::fmt(tm.median), gpm::fmt(rate), gpm::fmt(rate * nw), gpm::fmt(ns),
-                 std::isnan(speed) ? std::string() : gpm::fmt(speed)});
+                 opt_fmt(speed), gpm::fmt(cpp), gpm::fmt(cand_rate), limit_test,
+                 opt_fmt(lim.rate), opt_fmt(frac), gpm::fmt(rate_cpu), gpm::fmt(rate_cpu * cpp),
+                 opt_fmt(lim.rate_cpu), opt_fmt(frac_cpu), step.previous, opt_fmt(vs_prev),
+                 step.description});
     }
   }
   // Per (pair × weight): one multi-weight pass against the same weights one by one.
@@ -276,6 +363,9 @@ int body(int argc, char** argv) {
                 "%.2e\n",
                 worst_check);
   t.set("check_max_rel_diff", worst_check);
+  t.set("limit_file", args.str("limit"));
+  t.set("loadavg_1min_end", bench::loadavg());
+  t.set("wall_time_s", std::chrono::duration<double>(Clock::now() - wall_start).count());
   const std::string out = args.str("out");
   t.save(out);
   std::printf("  wrote %s\n", out.c_str());

@@ -10,7 +10,7 @@ set output out
 f = datadir.'/koba_sato_bounds.tsv'
 sel(w, fn) = sprintf('$1==8 && $2==1 && $3==0 && $14==0.5 && $12=="%s" && $16=="%s"', w, fn)
 set logscale x 2
-set format x '%g'
+set format x '2^{%L}'
 set xlabel 'C* = h / r_σ'
 set xrange [1.8:70]
 set multiplot layout 2,2 margins 0.08,0.98,0.2,0.96 spacing 0.09,0.1
@@ -21,12 +21,12 @@ do for [p = 1:4] {
   set title (p == 1 ? 'interpolant Π̃_h (Theorem 1.3)' : p == 2 ? 'gradient ∇̃_h (Theorem 1.4)' : p == 3 ? 'Laplacian Δ̃_h (Theorem 1.5)' : 'Laplacian □̃_h (Theorem 1.6)')
   set ylabel 'error, bound'
   if (p < 4) { unset key } else { set key at screen 0.5,0.07 center vertical maxrows 2 box Left reverse font ',9' samplen 1.5 width -4 }
-  plot rows(f, sel('step', 'sin2pi')) using 9:b with lines lt 1 dt 1 title 'bound (step, sin2pi)', \
+  plot rows(f, sel('step', 'sin2pi')) using 9:b with lines lt 1 title 'bound (step, sin2pi)', \
        rows(f, sel('step', 'sin2pi')) using 9:e with points lt 1 title 'error (step, sin2pi)', \
-       rows(f, sel('step', 'wave')) using 9:b with lines lt 2 dt 1 title 'bound (step, wave)', \
+       rows(f, sel('step', 'wave')) using 9:b with lines lt 2 title 'bound (step, wave)', \
        rows(f, sel('step', 'wave')) using 9:e with points lt 2 title 'error (step, wave)', \
-       rows(f, sel('Pi1', 'sin2pi')) using 9:b with lines lt 3 dt 1 title 'bound (Π1, sin2pi)', \
+       rows(f, sel('Pi1', 'sin2pi')) using 9:b with lines lt 3 title 'bound (Π1, sin2pi)', \
        rows(f, sel('Pi1', 'sin2pi')) using 9:e with points lt 3 title 'error (Π1, sin2pi)', \
-       rows(f, sel('step', 'sin2pi')) using 9:c with lines lt 7 dt 2 title 'Cor. 7.1 (step, sin2pi)'
+       rows(f, sel('step', 'sin2pi')) using 9:c with lines lt 7 title 'Cor. 7.1 (step, sin2pi)'
 }
 unset multiplot

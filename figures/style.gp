@@ -24,3 +24,7 @@ triangle(x0, y0, f, s, lab) = sprintf("set object polygon from %g,%g to %g,%g to
 #   plot rows(f, '$4=="grid"') using 2:10
 # (filtering outside gnuplot keeps lines unbroken where other rows are interleaved).
 rows(f, cond) = sprintf("< awk -F'\t' '!/^#/ && (%s)' '%s'", cond, f)
+# A log-2 x axis labelled with powers of 2 in half steps, for abscissae (such as h) that span
+# less than a decade, where '10^{%L}' would leave a single label.  Set the range first:
+#   xlo = 0.09; xhi = 0.22; eval pow2_xtics
+pow2_xtics = "set logscale x 2; set xrange [xlo:xhi]; set xtics ('' xlo); do for [k=ceil(2*log(xlo)/log(2)):floor(2*log(xhi)/log(2))] { set xtics add (sprintf('2^{%g}', k/2.0) 2**(k/2.0)) }"

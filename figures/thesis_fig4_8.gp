@@ -6,7 +6,7 @@ f = datadir.'/thesis_table4_4.tsv'
 set xlabel 'influence radius h'
 set ylabel 'max_Ω|ũ − U| / max_Ω|ũ|'
 set key bottom right
-set xrange [0.025:0.25]
+xlo = 0.025; xhi = 0.25; eval pow2_xtics
 eval triangle(0.14, 2e-3, 1.3, 2, 'slope 2')
 w1 = 'quartic_polynomial'; w2 = 'piecewise_cubic_polynomial'; w3 = 'piecewise_quintic_polynomial'
 sel(r, w) = rows(f, sprintf('$1=="%s" && $2=="%s"', r, w))

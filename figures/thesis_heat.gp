@@ -6,7 +6,7 @@ set output out
 set xlabel 'influence radius h'
 set ylabel 'relative error (4.2)'
 set key top left
-set xrange [0.09:0.22]
+xlo = 0.09; xhi = 0.22; eval pow2_xtics
 w1 = 'quartic_polynomial'; w2 = 'piecewise_cubic_polynomial'; w3 = 'piecewise_quintic_polynomial'
 wl(i) = i == 1 ? w1 : i == 2 ? w2 : w3
 wn(i) = i == 1 ? 'quartic' : i == 2 ? 'pw. cubic' : 'pw. quintic'

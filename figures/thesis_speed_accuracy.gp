@@ -14,10 +14,10 @@ f1 = datadir.'/thesis_table4_1.tsv'; f2 = datadir.'/thesis_table4_2.tsv'; f3 = d
 plot sel(f1, 'printed', 'voronoi', 'quadratic_spike', 'interp') using ($14+$15):13 with linespoints lt 1 dt 1 title 'Π quadr.spike, Voronoi (T4.1)', \
      sel(f1, 'printed', 'uniform', 'quadratic_spike', 'interp') using ($14+$15):13 with linespoints lt 1 dt 3 pt 6 title 'Π quadr.spike, |Ω_H|/N (T4.1)', \
      sel(f1, 'printed', 'voronoi', 'quintic_bspline', 'interp') using ($14+$15):13 with linespoints lt 2 dt 1 title 'Π quintic-B, Voronoi (T4.1)', \
-     sel(f1, 'printed', 'uniform', 'quintic_bspline', 'interp') using ($14+$15):13 with linespoints lt 2 dt 3 pt 6 title 'Π quintic-B, |Ω_H|/N (T4.1)', \
+     sel(f1, 'printed', 'uniform', 'quintic_bspline', 'interp') using ($14+$15):13 with linespoints lt 2 dt 3 pt 4 title 'Π quintic-B, |Ω_H|/N (T4.1)', \
      sel(f2, 'scaled', 'voronoi', 'cubic_spike', 'interp') using ($14+$15):13 with linespoints lt 3 dt 1 title 'Π cubic spike, Voronoi (T4.2 scaled)', \
-     sel(f2, 'scaled', 'uniform', 'cubic_spike', 'interp') using ($14+$15):13 with linespoints lt 3 dt 3 pt 6 title 'Π cubic spike, |Ω_H|/N (T4.2 scaled)', \
+     sel(f2, 'scaled', 'uniform', 'cubic_spike', 'interp') using ($14+$15):13 with linespoints lt 3 dt 3 pt 8 title 'Π cubic spike, |Ω_H|/N (T4.2 scaled)', \
      sel(f3, 'scaled', 'voronoi', 'quartic_polynomial', 'grad') using ($14+$15):13 with linespoints lt 4 dt 1 title '∇ quartic, Voronoi (T4.3 scaled)', \
-     sel(f3, 'scaled', 'uniform', 'quartic_polynomial', 'grad') using ($14+$15):13 with linespoints lt 4 dt 3 pt 6 title '∇ quartic, |Ω_H|/N (T4.3 scaled)', \
+     sel(f3, 'scaled', 'uniform', 'quartic_polynomial', 'grad') using ($14+$15):13 with linespoints lt 4 dt 3 pt 10 title '∇ quartic, |Ω_H|/N (T4.3 scaled)', \
      sel(f3, 'scaled', 'voronoi', 'quartic_polynomial', 'lap') using ($14+$15):13 with linespoints lt 5 dt 1 title 'Δ quartic, Voronoi (T4.3 scaled)', \
-     sel(f3, 'scaled', 'uniform', 'quartic_polynomial', 'lap') using ($14+$15):13 with linespoints lt 5 dt 3 pt 6 title 'Δ quartic, |Ω_H|/N (T4.3 scaled)'
+     sel(f3, 'scaled', 'uniform', 'quartic_polynomial', 'lap') using ($14+$15):13 with linespoints lt 5 dt 3 pt 12 title 'Δ quartic, |Ω_H|/N (T4.3 scaled)'

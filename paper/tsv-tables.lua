@@ -6,6 +6,11 @@
 -- provenance line (program, git revision, date, wall time) from the file's `# key = value`
 -- header.  A referenced data file or image that does not exist stops the build: the
 -- report never shows a stale or missing result silently.
+--
+-- Every figure figures/out/<name>.svg gets a provenance line under it: the make command
+-- that regenerates it, and for each data file it plots (its `data="a.tsv,b.tsv"` attribute,
+-- else the `datadir.'/x.tsv'` names found in figures/<name>.gp and the scripts it loads)
+-- the program, its command line, profile, seed, git revision and wall time.
 
 local datadir = "data/quick"
 
@@ -48,6 +53,94 @@ local function fmtnum(s, digits)
   local n = tonumber(s)
   if not n or not digits or s:match("^%-?%d+$") then return s end
   return string.format("%." .. digits .. "g", n)
+end
+
+local profile = "quick"
+
+-- "program P, command `C`, profile, seed, git, written, wall time" of one data file.
+local function describe(path, meta)
+  local wall = meta["wall_time_s"] or meta["wall_s"]
+  local parts = {
+    "program " .. (meta["program"] or "?"),
+    "profile " .. (meta["profile"] or "?"),
+    "seed " .. (meta["seed"] or "none"),
+    "git " .. (meta["git_revision"] or "?"),
+    "written " .. (meta["written_utc"] or "?"),
+  }
+  if wall then
+    table.insert(parts, "wall time of the writing run " .. fmtnum(wall, 3) .. " s")
+  end
+  local inl = {pandoc.Code(path), pandoc.Str(": " .. table.concat(parts, ", "))}
+  if meta["command"] then
+    table.insert(inl, pandoc.Str(", command "))
+    table.insert(inl, pandoc.Code(meta["command"]))
+  end
+  if meta["sources"] then  -- a derived file (atlas, rate table): what it was derived from
+    table.insert(inl, pandoc.Str(", derived from "))
+    table.insert(inl, pandoc.Code(meta["sources"]))
+    if meta["source_git_revisions"] then
+      table.insert(inl, pandoc.Str(" (git " .. meta["source_git_revisions"] .. ")"))
+    end
+  end
+  return inl
+end
+
+-- The provenance paragraph: how to regenerate, then one description per data file.
+function provenance(path_or_list, meta_or_nil, make_cmd)
+  local items = {}
+  if type(path_or_list) == "string" then
+    items = {{path = path_or_list, meta = meta_or_nil}}
+  else
+    items = path_or_list
+  end
+  local inl = {pandoc.Str("Regenerate: "), pandoc.Code(make_cmd), pandoc.Str(". Data ")}
+  for i, it in ipairs(items) do
+    if i > 1 then table.insert(inl, pandoc.Str("; ")) end
+    for _, x in ipairs(describe(it.path, it.meta)) do table.insert(inl, x) end
+  end
+  table.insert(inl, pandoc.Str("."))
+  return pandoc.Div({pandoc.Para(inl)}, pandoc.Attr("", {"provenance"}))
+end
+
+-- Data files a figure plots: explicit data= attribute, else the names its gnuplot script
+-- (and the scripts it loads, except the style) spell out as datadir.'/name.tsv'.
+local function figure_data(img)
+  local names, seen = {}, {}
+  local function add(n) if not seen[n] then seen[n] = true; table.insert(names, n) end end
+  if img.attributes["data"] then
+    for _, n in ipairs(split(img.attributes["data"], ",")) do add(n) end
+    return names
+  end
+  local function scan(script, depth)
+    local f = io.open(script, "r")
+    if not f or depth > 3 then return end
+    local text = f:read("a")
+    f:close()
+    for n in text:gmatch("datadir%s*%.%s*['\"]/([%w_%-%.]+%.tsv)['\"]") do add(n) end
+    for l in text:gmatch("load%s+['\"](figures/[%w_%-]+%.gp)['\"]") do
+      if l ~= "figures/style.gp" then scan(l, depth + 1) end
+    end
+  end
+  local base = img.src:match("figures/out/([%w_%-]+)%.svg$")
+  if base then scan("figures/" .. base .. ".gp", 0) end
+  return names
+end
+
+local function figure_provenance(img)
+  local base = img.src:match("figures/out/([%w_%-]+)%.svg$")
+  if not base then return nil end
+  local items = {}
+  for _, n in ipairs(figure_data(img)) do
+    local path = datadir .. "/" .. n
+    local meta = read_tsv(path)
+    table.insert(items, {path = path, meta = meta})
+  end
+  local cmd = "make " .. img.src .. " PROFILE=" .. profile
+  if #items == 0 then
+    return pandoc.Div({pandoc.Para({pandoc.Str("Regenerate: "), pandoc.Code(cmd),
+      pandoc.Str(" (data files: see figures/" .. base .. ".gp).")})}, pandoc.Attr("", {"provenance"}))
+  end
+  return provenance(items, nil, cmd)
 end
 
 local function tsv_block(el)
@@ -96,19 +189,16 @@ local function tsv_block(el)
     end
   end
   local caption = el.attributes["caption"] or ""
+  local prov = provenance(path, meta, "make " .. path .. " PROFILE=" .. profile)
   local simple = pandoc.SimpleTable({pandoc.Str(caption)}, aligns, widths, heads, body)
-  local prov = string.format("Data: %s — program %s, profile %s, git %s, written %s%s.",
-    path, meta["program"] or "?", meta["profile"] or "?", meta["git_revision"] or "?",
-    meta["written_utc"] or "?",
-    (meta["wall_time_s"] or meta["wall_s"]) and (", wall time " .. fmtnum(meta["wall_time_s"] or meta["wall_s"], 3) .. " s") or "")
-  return {pandoc.utils.from_simple_table(simple),
-          pandoc.Para({pandoc.Emph({pandoc.Str(prov)})})}
+  return {pandoc.utils.from_simple_table(simple), prov}
 end
 
 return {
   {
     Meta = function(m)
       if m.datadir then datadir = pandoc.utils.stringify(m.datadir) end
+      if m.profile then profile = pandoc.utils.stringify(m.profile) end
     end
   },
   {
@@ -117,6 +207,13 @@ return {
     end,
     Image = function(el)
       if not exists(el.src) then fail("figure missing: " .. el.src) end
+    end,
+    -- A figure (an image alone in its paragraph) is followed by its provenance line.
+    Para = function(el)
+      if #el.content == 1 and el.content[1].t == "Image" then
+        local prov = figure_provenance(el.content[1])
+        if prov then return {el, prov} end
+      end
     end
   }
 }

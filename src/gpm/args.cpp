@@ -7,6 +7,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "gpm/command_line.hpp"
 #include "gpm/error.hpp"
 
 namespace gpm {
@@ -128,6 +129,7 @@ std::vector<std::pair<std::string, std::string>> Args::values() const {
 
 int run_main(const std::string& program, int (*body)(int, char**), int argc, char** argv) {
   try {
+    set_command_line(argc, argv);
     return body(argc, argv);
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());

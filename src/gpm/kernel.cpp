@@ -14,6 +14,7 @@
 #endif
 
 #include "gpm/error.hpp"
+#include "gpm/simd.hpp"
 
 namespace gpm {
 
@@ -21,43 +22,8 @@ namespace {
 
 constexpr int kD = 2;  // space dimension
 
-// ---------------------------------------------------------------------------------
-// Vectors of pairs: GCC vector extensions, as wide as the target's widest double
-// vector (8 lanes with AVX-512).  The arithmetic is written once; the compiler emits
-// one instruction per operation, so nothing depends on the auto-vectorizer.
-
-#if defined(__AVX512F__)
-constexpr int kW = 8;
-#elif defined(__AVX__)
-constexpr int kW = 4;
-#else
-constexpr int kW = 2;
-#endif
-typedef double vd __attribute__((vector_size(kW * sizeof(double))));
-typedef int64_t vm __attribute__((vector_size(kW * sizeof(int64_t))));  // lane masks
-
-inline vd vload(const double* p) {
-  vd v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-inline vd vbc(double a) { return vd{} + a; }
-
-inline vd vsqrt(vd x) {
-#if defined(__AVX512F__)
-  // maskz with a full mask: the same instruction, without GCC 12's spurious
-  // -Wmaybe-uninitialized from _mm512_undefined_pd in _mm512_sqrt_pd.
-  return (vd)_mm512_maskz_sqrt_pd(static_cast<__mmask8>(0xFF), (__m512d)x);
-#elif defined(__AVX__)
-  return (vd)_mm256_sqrt_pd((__m256d)x);
-#elif defined(__SSE2__)
-  return (vd)_mm_sqrt_pd((__m128d)x);
-#else
-  vd r;
-  for (int l = 0; l < kW; ++l) r[l] = std::sqrt(x[l]);
-  return r;
-#endif
-}
+// Vectors of pairs: gpm/simd.hpp (kW lanes, vd, vm, vload, vbc, vsqrt, horner).
+using namespace simd;
 
 inline vm iota() {
   vm v;
@@ -126,12 +92,6 @@ PolyEval build_eval(const WeightFunction& w, int s, const std::string& what) {
   return ev;
 }
 
-template <int NC>
-inline vd horner(const double* c, vd q) {
-  vd s = vbc(c[NC - 1]);
-  for (int j = NC - 2; j >= 0; --j) s = s * q + c[j];
-  return s;
-}
 
 inline vd horner_n(const double* c, int nc, vd q) {
   switch (nc) {

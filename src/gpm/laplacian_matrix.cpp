@@ -1,5 +1,7 @@
 #include "gpm/laplacian_matrix.hpp"
 
+#include <cstdio>
+
 #include <omp.h>
 
 #include <algorithm>
@@ -228,6 +230,12 @@ Eigen::VectorXd DiscreteLaplacian::extend(const Eigen::VectorXd& x,
   for (std::size_t i = 0; i < n_; ++i)
     v[static_cast<Eigen::Index>(i)] = unknown_[i] >= 0 ? x[unknown_[i]] : outside[i];
   return v;
+}
+
+std::string cg_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
 }
 
 }  // namespace gpm

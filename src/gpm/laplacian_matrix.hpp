@@ -18,6 +18,7 @@
 // matrix would need ~24 GB, so above a memory budget (default 8 GB) the map is applied
 // matrix-free by the fused kernel (kernel.hpp), recomputing the weights on every product.
 #pragma once
+#include <algorithm>
 #include <Eigen/Core>
 #include <cmath>
 #include <Eigen/SparseCore>
@@ -97,14 +98,18 @@ class DiscreteLaplacian {
 
 // Conjugate gradients for S x = b with a symmetric positive definite S given as a map
 // apply(x, y): y = S x.  Starts from the x passed in (warm start).  Stops when
-// ‖r‖₂ ≤ tol·‖b‖₂ for the recursively updated residual r (it follows b − S x to rounding;
-// recomputing it would cost one more product per solve, i.e. per time step).  Throws
-// NumericalError naming `what` if pᵀSp ≤ 0 (S not positive definite), on a non-finite
-// value, or if max_iter is reached.
+// ‖r‖₂ ≤ tol·‖b‖₂ for the recursively updated residual r, then recomputes b − S x once
+// (one more product per solve): on a singular or indefinite S the recursive residual can
+// fall below tol while the true one does not (seen with h just below the h-connectivity
+// threshold: "converged", true residual 0.44), so a true residual above
+// max(10³·tol, 10⁻¹⁰)·‖b‖₂ is a failure.  Throws NumericalError naming `what` if pᵀSp ≤ 0
+// (S not positive definite), on a non-finite value, if max_iter is reached, or on that
+// residual mismatch.
 struct CgResult {
   int iterations = 0;
-  double rel_residual = 0;  // ‖r‖₂/‖b‖₂ at exit (recursive residual)
+  double rel_residual = 0;  // ‖b − Sx‖₂/‖b‖₂ at exit, recomputed (not the recursive one)
 };
+std::string cg_number(double v);  // %g, for the messages (1e-10, not 0.000000)
 template <class Apply>
 CgResult conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                             double tol, int max_iter, const std::string& what);
@@ -130,13 +135,16 @@ CgResult conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::Vect
   while (rr > stop) {
     if (res.iterations >= max_iter)
       throw NumericalError(what + ": conjugate gradients did not reach the relative residual " +
-                           std::to_string(tol) + " in " + std::to_string(max_iter) +
-                           " iterations (now " + std::to_string(std::sqrt(rr) / bnorm) + ")");
+                           cg_number(tol) + " in " + std::to_string(max_iter) +
+                           " iterations (now " + cg_number(std::sqrt(rr) / bnorm) + ")");
     apply(p, q);
     const double pq = p.dot(q);
+    if (!std::isfinite(pq))
+      throw NumericalError(what + ": non-finite value p^T S p = " + cg_number(pq) +
+                           " at iteration " + std::to_string(res.iterations));
     if (!(pq > 0))
       throw NumericalError(what + ": the matrix is not positive definite (p^T S p = " +
-                           std::to_string(pq) + " at iteration " +
+                           cg_number(pq) + " at iteration " +
                            std::to_string(res.iterations) + ")");
     const double alpha = rr / pq;
     x += alpha * p;
@@ -149,7 +157,15 @@ CgResult conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::Vect
     rr = rr_new;
     ++res.iterations;
   }
-  res.rel_residual = std::sqrt(rr) / bnorm;
+  // The true residual, once.
+  apply(x, q);
+  const double true_rel = (b - q).norm() / bnorm;
+  if (!(true_rel <= std::max(1e3 * tol, 1e-10)))
+    throw NumericalError(what + ": conjugate gradients stopped on a recursive residual of " +
+                         cg_number(std::sqrt(rr) / bnorm) + " but the true residual ||b - Sx||/||b|| is " +
+                         cg_number(true_rel) + " after " + std::to_string(res.iterations) +
+                         " iterations (singular or indefinite system?)");
+  res.rel_residual = true_rel;
   return res;
 }
 

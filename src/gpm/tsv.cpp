@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "gpm/command_line.hpp"
 #include "gpm/error.hpp"
 
 namespace gpm {
@@ -122,7 +123,33 @@ std::string fmt(double v) {
 
 std::string fmt(long long v) { return std::to_string(v); }
 
+namespace {
+std::string g_command_line;
+}
+
+void set_command_line(int argc, char** argv) {
+  std::string out;
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    const bool plain = !a.empty() && a.find_first_not_of(
+        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_./=,:+^%@") ==
+        std::string::npos;
+    if (i) out += ' ';
+    if (plain) {
+      out += a;
+    } else {
+      out += '\'';
+      for (char c : a) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+      out += '\'';
+    }
+  }
+  g_command_line = out;
+}
+
+const std::string& command_line() { return g_command_line; }
+
 void add_provenance(TsvTable& t) {
+  if (!g_command_line.empty()) t.set("command", g_command_line);
   t.set("git_revision", GPM_GIT_REV);
   char host[256] = {0};
   ::gethostname(host, sizeof host - 1);

@@ -1,0 +1,204 @@
+// bench_laplacian: one application of the discrete Laplacian of the Poisson and heat
+// solvers (DiscreteLaplacian::apply, y = M_ΩΩ x), assembled against matrix-free, each
+// against the bound that applies to it (issue 7, item 2).
+//
+//  * assembled: a CSR product, 12 bytes per non-zero (value + column index) streamed once
+//    per product, so its bound is 12·nnz / (read bandwidth); the vector x is reused from
+//    cache and not counted.
+//  * matrix-free: the fused kernel with Δ only, so its bound is the candidate pairs the
+//    kernel visits / (rate of the kernel's arithmetic mix for this weight, Δ only).
+// Both bounds come from bench_limit's file (--limit), with the same thread count.
+// Setting as in the thesis' Poisson/heat studies: jittered grid, uniform volumes, the
+// printed h = (2.6⁴·2^-10·Δx)^{1/4} and the quartic polynomial weight.
+// Times: best of --repeats after a warm-up; the machine is shared (see also the
+// CPU-time columns: process CPU seconds / threads).
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "gpm/args.hpp"
+#include "gpm/domain.hpp"
+#include "gpm/error.hpp"
+#include "gpm/kernel.hpp"
+#include "gpm/laplacian_matrix.hpp"
+#include "gpm/profile.hpp"
+#include "gpm/tsv.hpp"
+#include "gpm/weights.hpp"
+#include "limit_table.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double process_cpu_seconds() {
+  timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+double since(Clock::time_point a) {
+  return std::chrono::duration<double>(Clock::now() - a).count();
+}
+
+struct Timing {
+  double best = 0, cpu_best = 0;
+};
+Timing time_it(int repeats, const std::function<void()>& f) {
+  f();  // warm-up
+  Timing t{1e300, 1e300};
+  for (int r = 0; r < repeats; ++r) {
+    const double c0 = process_cpu_seconds();
+    const auto a = Clock::now();
+    f();
+    t.best = std::min(t.best, since(a));
+    t.cpu_best = std::min(t.cpu_best, process_cpu_seconds() - c0);
+  }
+  return t;
+}
+
+int body(int argc, char** argv) {
+  gpm::Args args("bench_laplacian",
+                 "Time of one Poisson/heat operator application y = M x, assembled (SpMV) "
+                 "against matrix-free (fused kernel), each against its measured bound.");
+  args.opt("dx", "2^-6,2^-7,2^-8", "particle spacings")
+      .opt("weight", "quartic_polynomial", "weight (w/q^2 must be a polynomial: no divide)")
+      .opt("seed", "1", "jitter seed")
+      .opt("threads", "1,2", "comma-separated thread counts")
+      .opt("repeats", "5", "timed products per measurement (best reported)")
+      .opt("max-gb", "6", "largest assembled matrix to build (GB); larger: matrix-free only")
+      .opt("limit", "data/bench/limit.tsv", "bench_limit's output (the bounds)")
+      .opt("profile", "bench", "label recorded as the file's profile (the report's rules pass theirs)")
+      .opt("out", "data/bench/laplacian.tsv", "TSV output");
+  args.parse(argc, argv);
+  const auto t_start = Clock::now();
+  const std::vector<double> dxs = args.nums("dx");
+  for (double dx : dxs)
+    if (!(dx > 0) || dx > 0.25) throw gpm::InputError("--dx: values in (0, 1/4], got " + gpm::fmt(dx));
+  const long long repeats = args.integer("repeats");
+  if (repeats < 1) throw gpm::InputError("--repeats must be >= 1");
+  std::vector<int> threads;
+  for (double t : args.nums("threads")) {
+    if (t < 1 || t != std::floor(t)) throw gpm::InputError("--threads: positive integers");
+    threads.push_back(static_cast<int>(t));
+  }
+  const gpm::WeightFunction& w = gpm::weight(args.str("weight"));
+  const double max_bytes = 1e9 * args.positive("max-gb");
+  const bench::LimitTable limits(args.str("limit"));
+  if (!limits.loaded())
+    std::printf("  (no limit file '%s': run bench_limit first for the bounds)\n",
+                args.str("limit").c_str());
+  const std::string mix = "mix:" + w.name + ":L";
+
+  gpm::TsvTable t;
+  t.set("program", "bench_laplacian");
+  t.set("profile", args.str("profile"));
+  for (auto& [k, val] : args.values()) t.set("arg_" + k, val);
+  t.set("h_rule", "(2.6^4 * 2^-10 * dx)^(1/4)");
+  t.set("bound_assembled", "12 B * nnz / read bandwidth (bench_limit 'read', same threads)");
+  t.set("bound_matrix_free", "candidate pairs / rate of bench_limit '" + mix + "' (same threads)");
+  t.set("cpu_family_model", bench::cpu_family_model());
+  t.set("loadavg_1min_start", bench::loadavg());
+  gpm::add_provenance(t);
+  t.columns = {"dx", "h", "n_particles", "n_unknowns", "nnz", "matrix_gb", "candidates",
+               "storage", "threads", "setup_s", "seconds", "seconds_cpu", "bound_s",
+               "fraction_of_bound", "bound_s_cpu", "fraction_of_bound_cpu", "winner", "winner_cpu", "check_max_rel_diff"};
+  std::printf("%-7s %7s %9s %-11s %3s %8s %9s %9s %6s %6s %s\n", "dx", "h", "nnz", "storage",
+              "thr", "setup_s", "product_s", "bound_s", "frac", "f_cpu", "winner");
+
+  // One loop over the resolutions: build both forms, time products per thread count.
+  for (double dx : dxs) {
+    const double h = std::pow(std::pow(2.6, 4) * std::pow(2.0, -10) * dx, 0.25);
+    const gpm::Particles p = gpm::jittered_grid(dx, static_cast<uint64_t>(args.integer("seed")));
+    const std::vector<double> V(p.size(), gpm::Domain{}.area_H() / static_cast<double>(p.size()));
+
+    // The matrix-free form first (cheap), and its candidate count (the kernel's lanes).
+    auto a0 = Clock::now();
+    const gpm::DiscreteLaplacian free(p, V, w, h, gpm::LaplacianStorage::matrix_free);
+    const double setup_free = since(a0);
+    const gpm::FusedKernel counter(p, V, h, {gpm::KernelWeight{w, gpm::kLap}});
+    const gpm::PairCount pc = counter.count_pairs(free.omega());
+    const double nnz_est = free.nnz_estimate();
+
+    // The assembled form where it fits the budget.
+    std::unique_ptr<gpm::DiscreteLaplacian> asmb;
+    double setup_asm = 0;
+    if (12.0 * nnz_est <= max_bytes) {
+      a0 = Clock::now();
+      asmb = std::make_unique<gpm::DiscreteLaplacian>(p, V, w, h, gpm::LaplacianStorage::assembled,
+                                                      max_bytes);
+      setup_asm = since(a0);
+    }
+    const double nnz = asmb ? static_cast<double>(asmb->nnz()) : nnz_est;
+
+    Eigen::VectorXd x(static_cast<Eigen::Index>(free.n_unknowns())), y;
+    for (Eigen::Index k = 0; k < x.size(); ++k) x[k] = std::sin(0.001 * static_cast<double>(k));
+    // The two forms must compute the same product (up to the summation order).
+    double check = NAN;
+    if (asmb) {
+      Eigen::VectorXd ya, yf;
+      asmb->apply(x, ya);
+      free.apply(x, yf);
+      check = (ya - yf).lpNorm<Eigen::Infinity>() / ya.lpNorm<Eigen::Infinity>();
+      if (!(check < 1e-10))
+        throw gpm::NumericalError("assembled and matrix-free products differ at dx = " +
+                                  gpm::fmt(dx) + ": max relative difference " + gpm::fmt(check));
+    }
+
+    for (int nt : threads) {
+      omp_set_num_threads(nt);
+      struct Row {
+        std::string storage;
+        double setup, sec, cpu, bound, bound_cpu;
+      };
+      std::vector<Row> rows;
+      {
+        const Timing tm = time_it(static_cast<int>(repeats), [&] { free.apply(x, y); });
+        const bench::Limit lim = limits.get(mix, nt);
+        rows.push_back({"matrix_free", setup_free, tm.best, tm.cpu_best / nt,
+                        static_cast<double>(pc.candidates) / lim.rate,
+                        static_cast<double>(pc.candidates) / lim.rate_cpu});
+      }
+      if (asmb) {
+        const Timing tm = time_it(static_cast<int>(repeats), [&] { asmb->apply(x, y); });
+        const bench::Limit lim = limits.get("read", nt);
+        rows.push_back({"assembled", setup_asm, tm.best, tm.cpu_best / nt, 12.0 * nnz / lim.rate,
+                        12.0 * nnz / lim.rate_cpu});
+      }
+      const std::string winner =
+          rows.size() == 2 ? (rows[0].sec < rows[1].sec ? "matrix_free" : "assembled")
+                           : "matrix_free";
+      const std::string winner_cpu =
+          rows.size() == 2 ? (rows[0].cpu < rows[1].cpu ? "matrix_free" : "assembled")
+                           : "matrix_free";
+      for (const auto& r : rows) {
+        auto opt_fmt = [](double v) { return std::isfinite(v) ? gpm::fmt(v) : std::string(); };
+        std::printf("%-7.4g %7.4f %9.3g %-11s %3d %8.2f %9.4f %9.4f %6.3f %6.3f %s\n", dx, h, nnz,
+                    r.storage.c_str(), nt, r.setup, r.sec, r.bound, r.bound / r.sec,
+                    r.bound_cpu / r.cpu, r.storage == winner ? "<- faster" : "");
+        std::fflush(stdout);
+        t.add_row({gpm::fmt(dx), gpm::fmt(h), gpm::fmt(p.size()), gpm::fmt(free.n_unknowns()),
+                   gpm::fmt(nnz), gpm::fmt(12.0 * nnz / 1e9),
+                   gpm::fmt(static_cast<long long>(pc.candidates)), r.storage, gpm::fmt(nt),
+                   gpm::fmt(r.setup), gpm::fmt(r.sec), gpm::fmt(r.cpu), opt_fmt(r.bound),
+                   opt_fmt(r.bound / r.sec), opt_fmt(r.bound_cpu),
+                   opt_fmt(r.bound_cpu / r.cpu), winner, winner_cpu, opt_fmt(check)});
+      }
+    }
+    t.set("peak_rss_mib", gpm::peak_rss_mib());
+    t.set("loadavg_1min_end", bench::loadavg());
+    t.set("wall_time_s", since(t_start));
+    t.save(args.str("out"));  // after each level: a partial run leaves what it measured
+  }
+  std::printf("  wrote %s\n", args.str("out").c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return gpm::run_main("bench_laplacian", body, argc, argv); }

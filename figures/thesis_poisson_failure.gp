@@ -1,0 +1,64 @@
+# Where the discrete Poisson problem fails (thesis_poisson_failure).
+# Left: the h sweep on jittered grids (quartic polynomial): relative error of the solve with
+#   the connectivity check switched off, against h/Δx, one line per seed over the connected
+#   radii (incl. those just above each seed's threshold h*); the unconnected solves that end
+#   in a NumericalError are crosses on the top edge, one that returned is a large circle at its
+#   error, and the share of particles of Ω
+#   that are cut off from Γ ∪ Γ_H (right axis) shows where h-connectivity is lost.
+# Right: the maximum-principle probe (f = 0, data ≤ 0 outside Ω, so U ≤ 0 is promised):
+#   max_Ω U / max_Ω |U| against Δx, for the cubic spike (negative on (4/7, 1)) and the
+#   positive quartic polynomial, both readings of h.  Above 0 = the principle is violated.
+load 'figures/style.gp'
+set terminal svg size 1000,460 dynamic enhanced font 'Helvetica,12' background rgb 'white'
+set output out
+fa = datadir.'/thesis_poisson_failure.tsv'
+fb = datadir.'/thesis_poisson_failure_h.tsv'
+set multiplot layout 1,2
+
+# --- left panel: h sweep ---------------------------------------------------------------
+set title 'h below the h-connectivity threshold (Δx = 2^{-5})'
+unset logscale x
+set xrange [0.45:2.05]
+set yrange [1e-2:1e18]
+set xlabel 'h / Δx'
+set ylabel 'unchecked solve: max_Ω|ũ − U| / max_Ω|ũ|'
+set y2label 'share of Ω cut off from Γ ∪ Γ_H'
+set y2range [0:1.02]
+set y2tics 0.25 nomirror
+set ytics nomirror
+set key at graph 0.98, graph 0.62 right top box opaque font ',10'
+set format y '10^{%L}'
+set ytics 1e-2, 1e4
+ok(s) = rows(fb, sprintf('$1=="5" && $2=="%d" && $8=="yes"', s))
+plot ok(1) using 3:15 smooth unique with linespoints lt 1 title 'seed 1', \
+     ok(2) using 3:15 smooth unique with linespoints lt 2 title 'seed 2', \
+     ok(3) using 3:15 smooth unique with linespoints lt 3 title 'seed 3', \
+     ok(4) using 3:15 smooth unique with linespoints lt 4 title 'seed 4', \
+     rows(fb, '$1=="5" && $13!="ok"') using 3:(1e17) with points lt 1 pt 2 ps 1.2 title 'unchecked CG throws', \
+     rows(fb, '$1=="5" && $8=="no" && $13=="ok"') using 3:15 with points lt 3 pt 6 ps 2 title 'unconnected, CG "converged"', \
+     rows(fb, '$1=="5" && $2=="1"') using 3:($9/$6) axes x1y2 smooth unique with lines lt 7 lw 1 title 'cut off, seed 1'
+
+# --- right panel: maximum principle -------------------------------------------------------
+set title 'maximum principle, data ≤ 0 outside Ω'
+unset y2label
+unset y2tics
+set ytics mirror
+set logscale x 2
+set format x '2^{%L}'
+unset logscale y
+set format y '%g'
+set ytics autofreq
+set xrange [*:*] reverse
+set autoscale x
+set xrange [*:*] reverse
+set yrange [-0.15:1.15]
+set xlabel 'Δx'
+set ylabel 'max_Ω U / max_Ω |U|   (> 0: violated)'
+set key at graph 0.98, graph 0.6 right top box opaque font ',10'
+sel(r, w) = rows(fa, sprintf('$1=="%s" && $2=="%s"', r, w))
+plot sel('h10', 'cubic_spike') using 4:17 with linespoints lt 3 title 'cubic spike, printed h', \
+     sel('h15', 'cubic_spike') using 4:17 with linespoints lt 5 title 'cubic spike, 2^{-15} reading', \
+     sel('h10', 'quartic_polynomial') using 4:17 with linespoints lt 1 title 'quartic, printed h', \
+     sel('h15', 'quartic_polynomial') using 4:17 with linespoints lt 2 title 'quartic, 2^{-15} reading', \
+     0 with lines lt 7 lw 1 notitle
+unset multiplot

@@ -1,0 +1,31 @@
+# Cost model (issue 7, item 4): the plan of a profile — predicted pair interactions, time and
+# peak memory of every modelled study and level (src/gpm/study_plan.hpp) — printed before
+# anything runs, and, once the studies have run, the plan beside their measured times.
+#
+#   make plan PROFILE=paper   calibrate (a few seconds), print and write data/paper/plan*.tsv;
+#                             if data files of the profile exist, compare with them
+PLAN_STUDY_DATA := $(DATA)/imoto_fig5_table1.tsv $(DATA)/core_voronoi.tsv \
+  $(foreach t,4_1 4_2 4_3 4_4 4_5 4_6 4_7 4_5_h15 4_6_h15 4_7_h15,$(DATA)/thesis_table$(t).tsv)
+
+plan: build
+	@mkdir -p $(DATA)
+	$(BUILD)/plan --profile $(PROFILE) --out $(DATA)/plan.tsv --summary $(DATA)/plan_summary.tsv \
+	  --calibration-table $(DATA)/plan_calibration.tsv
+	$(BUILD)/plan_vs_actual --plan $(DATA)/plan.tsv --datadir $(DATA) --out $(DATA)/plan_vs_actual.tsv
+
+# For the report: the plan of this profile (calibrated on the spot), the paper profile's plan
+# from the same calibration (no study is run for it), and the comparison with this profile's
+# data files (rebuilt whenever one of them changes).
+DATAFILES += $(DATA)/plan.tsv $(DATA)/plan_paper.tsv $(DATA)/plan_vs_actual.tsv
+
+$(DATA)/plan.tsv: $(BUILD)/plan
+	@mkdir -p $(DATA)
+	$< --profile $(PROFILE) --out $@ --summary $(DATA)/plan_summary.tsv \
+	  --calibration-table $(DATA)/plan_calibration.tsv --quiet
+
+$(DATA)/plan_paper.tsv: $(BUILD)/plan $(DATA)/plan.tsv
+	$< --profile paper --calibration $(DATA)/plan.tsv --out $@ \
+	  --summary $(DATA)/plan_paper_summary.tsv --quiet
+
+$(DATA)/plan_vs_actual.tsv: $(BUILD)/plan_vs_actual $(DATA)/plan.tsv $(PLAN_STUDY_DATA)
+	$< --plan $(DATA)/plan.tsv --datadir $(DATA) --out $@

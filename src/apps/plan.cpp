@@ -1,0 +1,191 @@
+// plan: what a profile will cost, before any study runs.  For every modelled study and
+// level it prints the particles, the predicted pair interactions, time and peak memory
+// (study_plan.hpp: the units, the calibration, the memory model), and writes
+//   --out      one row per unit of work (a fused pass, a Voronoi decomposition, a Poisson
+//              solve, a heat run), the calibration in the header;
+//   --summary  one row per (study, level), a row per study (level = all) and the total.
+// The times come from a calibration of a few seconds on the spot (the studies' own code
+// paths on small levels), or from an earlier plan file's header (--calibration), so that
+// the quick and paper plans of one `make` share one calibration.
+//
+//   plan --profile paper --out data/paper/plan.tsv --summary data/paper/plan_summary.tsv
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+
+#include "gpm/args.hpp"
+#include "gpm/error.hpp"
+#include "gpm/profile.hpp"
+#include "gpm/study_plan.hpp"
+#include "gpm/tsv.hpp"
+
+using namespace gpm;
+
+namespace {
+
+std::string human_time(double s) {
+  char b[32];
+  if (s < 120) std::snprintf(b, sizeof b, "%.1f s", s);
+  else if (s < 7200) std::snprintf(b, sizeof b, "%.1f min", s / 60);
+  else std::snprintf(b, sizeof b, "%.1f h", s / 3600);
+  return b;
+}
+
+// Per (study, level) and per study: sums of time and pair interactions, largest memory.
+struct Agg {
+  int units = 0;
+  double N = 0, pair_work = 0, time_s = 0, peak_mib = 0;
+  std::set<std::string> methods;
+  void add(const PlanUnit& u) {
+    ++units;
+    N = std::max(N, u.N);
+    pair_work += u.method == "voronoi" ? 0 : u.pairs * std::max(1.0, u.products);
+    time_s += u.time_s;
+    peak_mib = std::max(peak_mib, u.mem_mib);
+    methods.insert(u.method);
+  }
+  std::string method_list() const {
+    std::string s;
+    for (auto& m : methods) s += (s.empty() ? "" : "+") + m;
+    return s;
+  }
+};
+
+int body(int argc, char** argv) {
+  Args a("plan",
+         "Predicted pair interactions, time and peak memory of every modelled study and level\n"
+         "of a profile, printed before anything runs (see src/gpm/study_plan.hpp).");
+  a.opt("profile", "quick", "quick or paper")
+      .opt("out", "", "TSV: one row per unit of work (required)")
+      .opt("summary", "", "TSV: per (study, level), per study and total (optional)")
+      .opt("calibration", "", "reuse the calibration in the header of this earlier plan file")
+      .opt("calibration-table", "", "TSV: the calibration as a readable table (optional)")
+      .opt("bench", "data/bench/kernel.tsv", "make bench's kernel file, shown beside the "
+                                             "calibration when present")
+      .flag("quiet", "do not print the table");
+  a.parse(argc, argv);
+  if (a.str("out").empty()) throw InputError("--out PATH is required (see --help)");
+  const Profile profile = parse_profile(a.str("profile"));
+  const auto t0 = std::chrono::steady_clock::now();
+
+  Calibration cal;
+  if (!a.str("calibration").empty()) {
+    if (!std::filesystem::exists(a.str("calibration")))
+      throw InputError("--calibration: no file " + a.str("calibration"));
+    cal = Calibration::read(TsvTable::load(a.str("calibration")));
+  } else {
+    cal = calibrate();
+  }
+  const std::vector<PlanUnit> units = plan_units(profile, cal);
+
+  // --- The units file. ------------------------------------------------------------------
+  TsvTable t;
+  t.set("program", "plan");
+  t.set("profile", profile_name(profile));
+  t.set("pairs_note", "neighbour pairs of one pass (fused) / non-zeros of the Laplacian "
+                      "(assembled, matrix_free): (1/dx^2) * A(h)/dx^2, A = mean |B(x,h) & Omega_H|");
+  t.set("time_note", "predicted wall time of the unit as the study records it (recorded = yes)");
+  t.set("memory_note", "predicted peak resident size of the study program during the unit");
+  cal.write(t);
+  add_provenance(t);
+  t.columns = {"study", "variant", "level", "dx", "h", "N", "pairs", "products", "method",
+               "time_s", "peak_mib", "recorded", "basis"};
+  std::map<std::string, std::map<int, Agg>> per_level;
+  std::map<std::string, Agg> per_study;
+  Agg all;
+  for (auto& u : units) {
+    t.add_row({u.study, u.variant, fmt(u.level), fmt(u.dx), fmt(u.h), fmt(u.N), fmt(u.pairs),
+               fmt(u.products), u.method, fmt(u.time_s), fmt(u.mem_mib),
+               u.recorded ? "yes" : "no", u.basis});
+    per_level[u.study][u.level].add(u);
+    per_study[u.study].add(u);
+    all.add(u);
+  }
+  t.set("total_time_s", all.time_s);
+  t.set("peak_mib", all.peak_mib);
+  t.set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  t.save(a.str("out"));
+
+  // --- The summary. -------------------------------------------------------------------------
+  TsvTable s;
+  s.set("program", "plan --summary");
+  s.set("profile", profile_name(profile));
+  s.set("units_file", a.str("out"));
+  s.set("calibration_source", cal.source);
+  s.set("pair_interactions_note", "sum over units of pairs x max(1, products) (Voronoi: 0)");
+  add_provenance(s);
+  s.columns = {"study", "level", "units", "N", "pair_interactions", "time_s", "peak_mib", "method"};
+  auto row = [&](const std::string& study, const std::string& level, const Agg& g) {
+    s.add_row({study, level, fmt(g.units), fmt(g.N), fmt(g.pair_work), fmt(g.time_s),
+               fmt(g.peak_mib), g.method_list()});
+  };
+  for (auto& study : planned_studies()) {
+    for (auto& [k, g] : per_level[study]) row(study, fmt(k), g);
+    row(study, "all", per_study[study]);
+  }
+  row("total", "all", all);
+  if (!a.str("summary").empty()) s.save(a.str("summary"));
+
+  // --- The calibration as a table (quantity, value, unit). --------------------------------
+  if (!a.str("calibration-table").empty()) {
+    TsvTable c;
+    c.set("program", "plan --calibration-table");
+    c.set("profile", profile_name(profile));
+    c.set("calibration_source", cal.source);
+    add_provenance(c);
+    c.columns = {"quantity", "value", "unit"};
+    for (auto& [mix, pc] : cal.fused) {
+      c.add_row({"fused pass " + mix + ": pair rate", fmt(1 / pc.per_pair_s), "pairs/s"});
+      c.add_row({"fused pass " + mix + ": per target", fmt(pc.per_target_s * 1e6), "us"});
+    }
+    c.add_row({"Voronoi volumes", fmt(cal.voronoi_s_per_particle * 1e6), "us/particle"});
+    c.add_row({"Laplacian set-up", fmt(cal.setup_s_per_nnz * 1e9), "ns/non-zero"});
+    c.add_row({"assembled product", fmt(cal.spmv_s_per_nnz * 1e9), "ns/non-zero"});
+    c.add_row({"matrix-free product", fmt(cal.matrix_free_s_per_pair * 1e9), "ns/pair"});
+    c.add_row({"calibration wall time", fmt(cal.seconds), "s"});
+    c.add_row({"calibration CPU time", fmt(cal.cpu_seconds), "s"});
+    c.add_row({"load average before / after", fmt(cal.load_before) + " / " + fmt(cal.load_after), ""});
+    if (std::filesystem::exists(a.str("bench"))) {
+      const TsvTable b = TsvTable::load(a.str("bench"));
+      const int cv = b.column("variant"), ct = b.column("threads"), cr = b.column("pairs_per_s");
+      if (cv >= 0 && ct >= 0 && cr >= 0)
+        for (auto& r : b.rows)
+          if (r[cv] == "fused9" && r[ct] == "2")
+            c.add_row({"make bench fused9, 2 threads (" + b.get("written_utc").value_or("?") + ")",
+                       r[cr], "pairs/s"});
+    }
+    c.save(a.str("calibration-table"));
+  }
+
+  // --- The printed table. -----------------------------------------------------------------
+  if (!a.has("quiet")) {
+    std::printf("plan, profile %s (%s: %.1f s wall, %.1f s CPU, load %.1f; %zu units)\n",
+                profile_name(profile).c_str(), cal.source.c_str(), cal.seconds, cal.cpu_seconds,
+                cal.load_before, units.size());
+    std::printf("%-22s %5s %5s %11s %11s %12s %10s  %s\n", "study", "level", "units", "N",
+                "pair inter.", "time", "peak MiB", "method");
+    for (auto& study : planned_studies()) {
+      for (auto& [k, g] : per_level[study])
+        std::printf("%-22s %5d %5d %11.4g %11.4g %12s %10.0f  %s\n", study.c_str(), k, g.units,
+                    g.N, g.pair_work, human_time(g.time_s).c_str(), g.peak_mib,
+                    g.method_list().c_str());
+      const Agg& g = per_study[study];
+      std::printf("%-22s %5s %5d %11s %11.4g %12s %10.0f\n", study.c_str(), "all", g.units, "",
+                  g.pair_work, human_time(g.time_s).c_str(), g.peak_mib);
+    }
+    std::printf("%-22s %5s %5d %11s %11.4g %12s %10.0f\n", "TOTAL", "", all.units, "",
+                all.pair_work, human_time(all.time_s).c_str(), all.peak_mib);
+    std::printf("wrote %s%s%s\n", a.str("out").c_str(), a.str("summary").empty() ? "" : " and ",
+                a.str("summary").c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return run_main("plan", body, argc, argv); }
