@@ -35,7 +35,6 @@ plot ok(1) using 3:15 smooth unique with linespoints lt 1 title 'seed 1', \
      ok(3) using 3:15 smooth unique with linespoints lt 3 title 'seed 3', \
      ok(4) using 3:15 smooth unique with linespoints lt 4 title 'seed 4', \
      rows(fb, '$1=="5" && $13!="ok"') using 3:(1e17) with points lt 1 pt 2 ps 1.2 title 'unchecked CG throws', \
-     rows(fb, '$1=="5" && $8=="no" && $13=="ok"') using 3:15 with points lt 3 pt 6 ps 2 title 'unconnected, CG "converged"', \
      rows(fb, '$1=="5" && $2=="1"') using 3:($9/$6) axes x1y2 smooth unique with lines lt 7 lw 1 title 'cut off, seed 1'
 
 # --- right panel: maximum principle -------------------------------------------------------

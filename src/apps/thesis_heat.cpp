@@ -164,6 +164,7 @@ int body(int argc, char** argv) {
                    fmt(static_cast<long long>(r.steps_done)), fmt(r.mean_cg_iterations), fmt(r.max_rel_residual),
                    fmt(r.seconds_per_step), fmt(r.seconds)});
         cache.table().set("wall_time_s", total);
+        cache.table().set("peak_rss_mib", peak_rss_mib());  // of the process that computed the last row
         cache.save();
         if (!a.str("rates-input").empty()) write_rates_input(cache, a.str("rates-input"));
         if (r.blew_up)

@@ -113,6 +113,7 @@ int body(int argc, char** argv) {
                    fmt(r.cg.iterations), fmt(r.cg.rel_residual), fmt(L.assembly_seconds()),
                    fmt(r.solve_seconds), fmt(secs)});
         cache.table().set("wall_time_s", total);
+        cache.table().set("peak_rss_mib", peak_rss_mib());  // of the process that computed the last row
         cache.save();
         std::fprintf(stderr,
                      "thesis_table4_4: %s %-28s dx=2^-%d h=%.4f N=%zu nnz=%.3g %s  "

@@ -190,17 +190,20 @@ Calibration calibrate() {
   const Domain dom;
   auto log = [](const char* what, double v) { std::fprintf(stderr, "[plan] calibration %s: %.4g\n", what, v); };
 
-  // Fused passes: two h at Δx = 2^-7 per weight mix, h = 3Δx (per-target work dominates)
-  // and 30Δx (~2,800 neighbours: the pair rate rises with the neighbour count, and the
-  // expensive units have hundreds to thousands of neighbours).
+  // Fused passes: two h at Δx = 2^-8 per weight mix, h = 3Δx (per-target work dominates)
+  // and 40Δx (~5,000 neighbours: the pair rate rises with the neighbour count, and the
+  // expensive units have thousands to tens of thousands).  At 2^-7 with 30Δx the large pass
+  // took only ~0.1 s, so a few ms of noise in the small pass moved the fitted per-target
+  // cost enough to overstate the nine-weight pair rate six-fold; 2^-8 makes both passes
+  // long enough (the large one ~0.5 s) that the fit is stable.
   {
-    const double dx = dx_of(7);
+    const double dx = dx_of(8);
     const Particles p = jittered_grid(dx, 1, 0.25, dom);
     const auto V = uniform_volumes(p, dom);
     const double targets = static_cast<double>(p.count_in_omega());
     for (auto& m : fused_mixes()) {
       const auto [pa, ta] = time_fused(p, V, 3 * dx, m);
-      const auto [pb, tb] = time_fused(p, V, 30 * dx, m);
+      const auto [pb, tb] = time_fused(p, V, 40 * dx, m);
       c.fused[m.name] = PassCost::fit(targets, pa, ta, pb, tb);
       std::fprintf(stderr, "[plan] calibration fused %s: %.3g s/target, %.3g pairs/s\n",
                    m.name.c_str(), c.fused[m.name].per_target_s, 1 / c.fused[m.name].per_pair_s);
