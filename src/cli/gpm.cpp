@@ -120,6 +120,7 @@ int cmd_trunc(int argc, char** argv) {
   a.opt("h", "", "influence radius");
   a.opt("m", "", "regular order m (alternative to --h)");
   a.opt("seed", "1", "random seed of the jitter");
+  a.opt("jitter", "0.25", "jitter amplitude in units of dx (0: the plain grid)");
   a.parse(argc, argv, 2);
   TruncationSetting s;
   s.op = parse_operator(a.str("operator"));
@@ -128,6 +129,7 @@ int cmd_trunc(int argc, char** argv) {
   s.function = a.str("function");
   s.dx = a.positive("dx");
   s.seed = a.integer("seed");
+  s.jitter = a.num("jitter");
   if (a.str("h").empty() == a.str("m").empty())
     throw InputError("give exactly one of --h or --m");
   s.h = a.str("h").empty() ? imoto_h(a.positive("m"), s.dx) : a.positive("h");

@@ -46,7 +46,7 @@ TruncationResult truncation_error(const TruncationSetting& s) {
   const WeightFunction& w = weight(s.weight);
 
   // Particles and volumes: |Ω_H|/N (imoto §5, thesis (A.10)) or Voronoi cell areas.
-  const Particles p = jittered_grid(s.dx, s.seed);
+  const Particles p = jittered_grid(s.dx, s.seed, s.jitter);
   std::vector<double> V;
   if (s.volumes == Volumes::uniform)
     V = uniform_volumes(p, dom);

@@ -29,6 +29,7 @@ struct TruncationSetting {
   std::string function = "sin2pi";
   double dx = 0, h = 0;
   uint64_t seed = 1;
+  double jitter = 0.25;  // |η| bound in units of Δx (jittered_grid's amplitude); 0 = plain grid
 };
 
 struct TruncationResult {
