@@ -279,12 +279,7 @@ int body(int argc, char** argv) {
     // Particles, volumes, data and probes: shared by both weights and readings of h.
     const Particles p = jittered_grid(dx, seed);
     const auto V = uniform_volumes(p, dom);
-    std::vector<double> f(p.size()), g(p.size());
-    for (std::size_t i = 0; i < p.size(); ++i)
-      g[i] = u.v(p.x[i], p.y[i]), f[i] = -u.lap(p.x[i], p.y[i]);
-    double umax = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.in_omega[i]) umax = std::max(umax, std::fabs(g[i]));
+    const auto [f, g, umax] = poisson_data(p, u);
     std::vector<double> zero(p.size(), 0.0), f_src(p.size(), 0.0);
     f_src[nearest(p, 0.5, 0.5, true)] = -1;
     for (const auto& rule : kHRules)
@@ -354,12 +349,7 @@ int body(int argc, char** argv) {
       const double dx = std::ldexp(1.0, -k);
       const Particles p = jittered_grid(dx, static_cast<uint64_t>(s));
       const auto V = uniform_volumes(p, dom);
-      std::vector<double> f(p.size()), g(p.size());
-      for (std::size_t i = 0; i < p.size(); ++i)
-        g[i] = u.v(p.x[i], p.y[i]), f[i] = -u.lap(p.x[i], p.y[i]);
-      double umax = 0;
-      for (std::size_t i = 0; i < p.size(); ++i)
-        if (p.in_omega[i]) umax = std::max(umax, std::fabs(g[i]));
+      const auto [f, g, umax] = poisson_data(p, u);
       // The threshold of this grid, and radii just below and above it.
       const double h_star = h_connectivity_threshold(p, dx);
       std::vector<double> radii;

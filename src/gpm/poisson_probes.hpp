@@ -17,8 +17,27 @@
 #include "gpm/connectivity.hpp"
 #include "gpm/domain.hpp"
 #include "gpm/laplacian_matrix.hpp"
+#include "gpm/testfunctions.hpp"
 
 namespace gpm {
+
+// The data of a Poisson problem −Δ_h U = f, U = g̃ outside Ω, for the exact solution u at
+// every particle: g[i] = u(x_i), f[i] = −Δu(x_i); umax = max over Ω of |u|.
+struct PoissonData {
+  std::vector<double> f, g;
+  double umax = 0;
+};
+inline PoissonData poisson_data(const Particles& p, const TestFunction& u) {
+  PoissonData d;
+  d.f.resize(p.size());
+  d.g.resize(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    d.g[i] = u.v(p.x[i], p.y[i]);
+    d.f[i] = -u.lap(p.x[i], p.y[i]);
+    if (p.in_omega[i]) d.umax = std::max(d.umax, std::fabs(d.g[i]));
+  }
+  return d;
+}
 
 inline double omega_max(const Particles& p, const std::vector<double>& U) {
   double m = -1e300;

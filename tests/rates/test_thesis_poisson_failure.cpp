@@ -92,9 +92,7 @@ TEST_CASE("Poisson failure: h just below the connectivity threshold is refused",
   for (uint64_t seed : {1, 2, 3, 4}) {
     const Particles p = jittered_grid(kDx, seed);
     const auto V = uniform_volumes(p);
-    std::vector<double> f(p.size()), g(p.size());
-    for (std::size_t i = 0; i < p.size(); ++i)
-      g[i] = u.v(p.x[i], p.y[i]), f[i] = -u.lap(p.x[i], p.y[i]);
+    const auto [f, g, umax] = poisson_data(p, u);
     const double hs = h_connectivity_threshold(p, kDx);
     INFO("seed " << seed << ": h*/dx = " << hs / kDx);
     // The jitter is ±Δx/4 per coordinate: h* lies between Δx/2 and 1.5·√2·Δx.
