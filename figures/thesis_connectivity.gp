@@ -12,8 +12,16 @@ p = datadir.'/thesis_connectivity_particles.tsv'; e = datadir.'/thesis_connectiv
 H = system(sprintf("awk -F' = ' '/^# h =/{print $2}' '%s'", p))
 OK = system(sprintf("awk -F' = ' '/^# h_connected_%s =/{print $2}' '%s'", C, p))
 set title sprintf('%s, h = %.4g: h-connectivity %s', T, H+0, OK eq 'yes' ? 'holds' : 'fails')
+# The connected case has no unconnected group: plot only the series that have points
+# (an empty series makes gnuplot warn).
+if (OK eq 'yes') {
+plot rows(e, sprintf('$1=="%s" && $6==0', C)) using 2:3:($4-$2):($5-$3) with vectors nohead lt 7 dt 1 lw 0.4 title 'edges of G', \
+     rows(p, sprintf('$1=="%s" && $4==0', C)) using 2:3 with points lt 2 pt 4 ps 0.5 title 'particles on Γ ∪ Γ_H (BFS sources)', \
+     rows(p, sprintf('$1=="%s" && $4==1 && $6==0', C)) using 2:3 with points lt 1 pt 7 ps 0.4 title 'particles in Ω reached'
+} else {
 plot rows(e, sprintf('$1=="%s" && $6==0', C)) using 2:3:($4-$2):($5-$3) with vectors nohead lt 7 dt 1 lw 0.4 title 'edges of G', \
      rows(e, sprintf('$1=="%s" && $6==1', C)) using 2:3:($4-$2):($5-$3) with vectors nohead lt 3 dt 1 lw 1.5 title 'edges of the unconnected group', \
      rows(p, sprintf('$1=="%s" && $4==0', C)) using 2:3 with points lt 2 pt 4 ps 0.5 title 'particles on Γ ∪ Γ_H (BFS sources)', \
      rows(p, sprintf('$1=="%s" && $4==1 && $6==0', C)) using 2:3 with points lt 1 pt 7 ps 0.4 title 'particles in Ω reached', \
      rows(p, sprintf('$1=="%s" && $6==1', C)) using 2:3 with points lt 3 pt 9 ps 1.0 title 'particles in Ω not reached'
+}
