@@ -95,13 +95,7 @@ int body(int argc, char** argv) {
   const std::string out = args.str("out");
   if (out.empty()) throw InputError("--out PATH is required (see --help)");
   const Profile profile = parse_profile(args.str("profile"));
-  std::vector<int> levels;
-  if (args.str("levels").empty())
-    levels = pick(profile, kQuickLevels, kPaperLevels);
-  else
-    for (auto& s : args.list("levels"))
-      levels.push_back(static_cast<int>(parse_int(s, "--levels", 2, 13)));
-  if (levels.empty()) throw InputError("--levels: no level given");
+  const std::vector<int> levels = levels_option(args, profile, kQuickLevels, kPaperLevels, 2, 13);
   std::vector<uint64_t> seeds;
   for (auto& s : args.list("seeds"))
     seeds.push_back(static_cast<uint64_t>(parse_int(s, "--seeds", 0, (1LL << 62))));

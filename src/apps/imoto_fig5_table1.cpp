@@ -121,16 +121,7 @@ int body(int argc, char** argv) {
   const std::string out = args.str("out");
   if (out.empty()) throw InputError("--out PATH is required (see --help)");
   const Profile profile = parse_profile(args.str("profile"));
-  std::vector<int> levels;
-  if (args.str("levels").empty()) {
-    levels = pick(profile, kQuickLevels, kPaperLevels);
-  } else {
-    for (double v : args.nums("levels")) {
-      if (v != std::floor(v) || v < 3 || v > 13)
-        throw InputError("--levels: " + fmt(v) + " is not an integer in [3, 13]");
-      levels.push_back(static_cast<int>(v));
-    }
-  }
+  const std::vector<int> levels = levels_option(args, profile, kQuickLevels, kPaperLevels, 3, 13);
   const long long seed_ll = args.integer("seed");
   if (seed_ll < 0) throw InputError("--seed: " + std::to_string(seed_ll) + " is negative");
   const uint64_t seed = static_cast<uint64_t>(seed_ll);

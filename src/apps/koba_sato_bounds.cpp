@@ -182,14 +182,7 @@ int body(int argc, char** argv) {
   const std::string hyp_path = or_default("hypotheses", sibling(out, "_hypotheses.tsv"));
   const std::string fig_prefix = or_default("fig-prefix", dir_of(out) + "/koba_sato_fig");
 
-  std::vector<int> levels;
-  if (args.str("levels").empty())
-    levels = pick(profile, kQuickLevels, kPaperLevels);
-  else
-    for (double v : args.nums("levels")) {
-      if (v != std::floor(v) || v < 6 || v > 10) throw InputError("--levels: each level must be an integer in 6..10");
-      levels.push_back(static_cast<int>(v));
-    }
+  const std::vector<int> levels = levels_option(args, profile, kQuickLevels, kPaperLevels, 6, 10);
   std::vector<uint64_t> seeds;
   const std::string seed_text = or_default("seeds", profile == Profile::quick ? kQuickSeeds : kPaperSeeds);
   std::vector<double> seed_values;

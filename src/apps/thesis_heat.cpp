@@ -113,11 +113,7 @@ int body(int argc, char** argv) {
   hs.blowup_factor = a.positive("blowup");
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
-  std::vector<int> levels = pick(prof, ts.quick, ts.paper);
-  if (!a.str("levels").empty()) {
-    levels.clear();
-    for (double k : a.nums("levels")) levels.push_back(static_cast<int>(k));
-  }
+  const std::vector<int> levels = levels_option(a, prof, ts.quick, ts.paper, 3, 13);
 
   // --- The data file: one row per (weight, θ, level), cached. -----------------------------
   LevelCache cache(

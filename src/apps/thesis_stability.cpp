@@ -79,11 +79,7 @@ int body(int argc, char** argv) {
   if (!(stop_growth > 1)) throw InputError("--stop-growth must exceed 1, got " + a.str("stop-growth"));
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
-  std::vector<int> levels = pick(prof, kQuick, kPaper);
-  if (!a.str("levels").empty()) {
-    levels.clear();
-    for (double k : a.nums("levels")) levels.push_back(static_cast<int>(k));
-  }
+  const std::vector<int> levels = levels_option(a, prof, kQuick, kPaper, 3, 13);
 
   // --- The data file: one row per (weight, h rule, level), cached. ------------------------
   LevelCache cache(

@@ -61,11 +61,7 @@ int body(int argc, char** argv) {
   const double tol = a.positive("tol");
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
-  std::vector<int> levels = pick(prof, kQuickLevels, kPaperLevels);
-  if (!a.str("levels").empty()) {
-    levels.clear();
-    for (double k : a.nums("levels")) levels.push_back(static_cast<int>(k));
-  }
+  const std::vector<int> levels = levels_option(a, prof, kQuickLevels, kPaperLevels, 3, 13);
 
   // --- The data file: one row per (reading of h, weight, level), cached. ------------------
   LevelCache cache(a.str("out"),

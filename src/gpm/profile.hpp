@@ -19,6 +19,12 @@ inline const std::vector<int>& pick(Profile p, const std::vector<int>& quick,
   return p == Profile::quick ? quick : paper;
 }
 
+class Args;
+// The levels of a run: the profile's list, or the comma-separated --levels option when given
+// (each an integer in [lo, hi]; InputError "--levels: 5.5 is not an integer in [3, 13]").
+std::vector<int> levels_option(const Args& a, Profile p, const std::vector<int>& quick,
+                               const std::vector<int>& paper, int lo, int hi);
+
 // Peak resident memory of this process so far, in MiB (VmHWM).
 double peak_rss_mib();
 
