@@ -17,6 +17,19 @@ $(error unknown PROFILE '$(PROFILE)'; valid: quick, paper)
 endif
 endif
 
+# The paper profile's data live in the committed result store results/paper/ (see its
+# README): data/paper is a link to it, so a paper run resumes from every committed unit and
+# its finished units land where git sees them.
+ifeq ($(PROFILE),paper)
+STORE_LINK := $(shell mkdir -p data results/paper; \
+  if [ -L data/paper ]; then echo ok; \
+  elif [ -e data/paper ]; then echo conflict; \
+  else ln -s ../results/paper data/paper && echo ok; fi)
+ifneq ($(STORE_LINK),ok)
+$(error data/paper is a directory, not the link to the result store results/paper: move its files into results/paper (or away) and remove it)
+endif
+endif
+
 # Debian packages the project needs (compilers, libraries, plotting, report).
 PACKAGES := build-essential cmake git pkg-config libeigen3-dev libcgal-dev libgmp-dev \
             libmpfr-dev libboost-dev libgsl-dev libglpk-dev glpk-utils catch2 gnuplot-nox pandoc

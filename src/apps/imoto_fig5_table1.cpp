@@ -117,9 +117,13 @@ int body(int argc, char** argv) {
       .opt("printed-max-level", "8", "finest level of the --printed-out check")
       .opt("cost-out", "", "optional TSV: pairs and time per (level, m) of the paper profile,\n"
                            "  measured where computed, else extrapolated at the measured rate");
+  add_cache_options(args);
   args.parse(argc, argv);
   const std::string out = args.str("out");
   if (out.empty()) throw InputError("--out PATH is required (see --help)");
+  const CacheMode mode = cache_mode(args);
+  require_distinct_paths({{"--out", out}, {"--printed-out", args.str("printed-out")},
+                          {"--cost-out", args.str("cost-out")}});
   const Profile profile = parse_profile(args.str("profile"));
   const std::vector<int> levels = levels_option(args, profile, kQuickLevels, kPaperLevels, 3, 13);
   const long long seed_ll = args.integer("seed");
@@ -138,14 +142,15 @@ int body(int argc, char** argv) {
       {"h", "h_N = 2.6 * 2^(5/m-5) * dx^(1/m)"},
       {"H", fmt(dom.H)},
       {"jitter", "|eta| < 1/4, counter-based hash of (seed,i,j), mirrored at the edge"},
-      {"norm", "relative l-inf over particles in Omega; denominators: discrete maxima"},
+      {"norm", "relative l-inf over particles in Omega; denominators: discrete maxima; "
+               "gradient: |.| the Euclidean length of the vector"},
       {"Pi3_constant", "6/pi (printed 5/pi does not normalize)"},
       {"time_s_note", "wall time of the whole (level, m) unit: particles, kernel, errors"},
       {"smoothing_part", "interpolant only: (M2/4)*8pi^2*h^2, M2 = int |x|^2 w dx (no particles)"}};
   LevelCache cache(out, params,
                    {"level", "m", "operator", "weight", "dx", "h", "N", "N_in_omega", "pairs",
                     "rel_error", "smoothing_part", "time_s", "kernel_s"},
-                   2);
+                   2, mode);
   cache.table().set("profile", profile_name(profile));
   if (cache.reused() > 0)
     std::fprintf(stderr, "[imoto_fig5_table1] %zu rows reused from %s\n", cache.reused(),
@@ -155,7 +160,7 @@ int body(int argc, char** argv) {
   double total = 0;
   for (int k : levels)
     for (double m : kOrders)
-      if (!cache.has({fmt(k), fmt(m)})) total += estimated_pairs(k, m);
+      if (!cache.has({fmt(k), fmt(m)}, kCases.size())) total += estimated_pairs(k, m);
   Progress progress("imoto_fig5_table1", total, "pairs", 0.0);
   double done = 0;
   const auto t_start = std::chrono::steady_clock::now();
@@ -166,13 +171,13 @@ int body(int argc, char** argv) {
   // The loop over resolutions: one particle set per level, shared by the three m.
   for (int level : levels) {
     bool any = false;
-    for (double m : kOrders) any |= !cache.has({fmt(level), fmt(m)});
+    for (double m : kOrders) any |= !cache.has({fmt(level), fmt(m)}, kCases.size());
     if (!any) continue;
     const double dx = std::ldexp(1.0, -level);
     const Particles p = jittered_grid(dx, seed, 0.25, dom);
     const std::vector<double> V = uniform_volumes(p, dom);
     for (double m : kOrders) {
-      if (cache.has({fmt(level), fmt(m)})) continue;
+      if (cache.has({fmt(level), fmt(m)}, kCases.size())) continue;
       const auto t0 = std::chrono::steady_clock::now();
       const double h = imoto_h(m, dx);
       const FusedErrors e = fused_errors(p, V, h, requests, {kFunction});
@@ -201,6 +206,8 @@ int body(int argc, char** argv) {
     }
   }
   progress.finish();
+  cache.finish();
+  if (!cache.writes()) return 0;
 
   // The cost of the paper profile: measured units as they are, the others extrapolated from
   // the estimated pair count at the mean kernel rate (pairs/s) of this run's finest level.

@@ -96,9 +96,12 @@ int body(int argc, char** argv) {
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
       .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB)")
       .opt("levels", "", "override the profile's levels (comma-separated k)");
+  add_cache_options(a);
   a.parse(argc, argv);
   if (a.str("out").empty() || a.str("table").empty())
     throw InputError("--table and --out are required (see --help)");
+  const CacheMode mode = cache_mode(a);
+  require_distinct_paths({{"--out", a.str("out")}, {"--rates-input", a.str("rates-input")}});
   const TableSetting& ts = table_setting(a.str("table"));
   const Profile prof = parse_profile(a.str("profile"));
   const uint64_t seed = static_cast<uint64_t>(a.integer("seed"));
@@ -128,7 +131,7 @@ int body(int argc, char** argv) {
       {"weight", "theta", "level", "dx", "h", "N", "N_omega", "storage", "K", "dt",
        "rel_error", "rel_error_max", "growth_max", "blew_up", "blowup_step", "growth", "amplification",
        "steps_done", "cg_mean_iterations", "max_rel_residual", "s_per_step", "seconds"},
-      3);
+      3, mode);
   const Domain dom;
   double total = 0;
   for (int k : levels) {
@@ -162,7 +165,8 @@ int body(int argc, char** argv) {
         cache.table().set("wall_time_s", total);
         cache.table().set("peak_rss_mib", peak_rss_mib());  // of the process that computed the last row
         cache.save();
-        if (!a.str("rates-input").empty()) write_rates_input(cache, a.str("rates-input"));
+        if (cache.writes() && !a.str("rates-input").empty())
+          write_rates_input(cache, a.str("rates-input"));
         if (r.blew_up)
           std::fprintf(stderr,
                        "thesis_heat %s: %-28s theta=%-3g dx=2^-%d h=%.4f K=%ld  BLOW-UP at step "
@@ -178,6 +182,8 @@ int body(int argc, char** argv) {
       }
     }
   }
+  cache.finish();
+  if (!cache.writes()) return 0;
   if (!a.str("rates-input").empty()) write_rates_input(cache, a.str("rates-input"));
   std::printf("thesis_heat %s: wrote %s (%zu rows, %zu reused, %.1f s computed)\n",
               ts.table.c_str(), a.str("out").c_str(), cache.rows().size(), cache.reused(),

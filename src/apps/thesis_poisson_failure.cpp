@@ -243,9 +243,12 @@ int body(int argc, char** argv) {
       .opt("out", "", "data file of part (a) (required)")
       .opt("out-sweep", "", "data file of part (b), the h sweep (required)")
       .opt("seed", "1", "jitter seed of part (a)");
+  add_cache_options(a);
   a.parse(argc, argv);
   if (a.str("out").empty() || a.str("out-sweep").empty())
     throw InputError("--out PATH and --out-sweep PATH are required (see --help)");
+  const CacheMode mode = cache_mode(a);
+  require_distinct_paths({{"--out", a.str("out")}, {"--out-sweep", a.str("out-sweep")}});
   const Profile prof = parse_profile(a.str("profile"));
   const uint64_t seed = static_cast<uint64_t>(a.integer("seed"));
   const int dense_max = prof == Profile::quick ? kQuickDenseMax : kPaperDenseMax;
@@ -272,7 +275,7 @@ int body(int argc, char** argv) {
                  "cg_iterations", "rel_error", "cg_message", "mp_source", "mp_boundary",
                  "mp_boundary_abs",
                  "lambda_min", "lambda_max", "green_min", "harmonic_min", "seconds"},
-                3);
+                3, mode);
   double total = 0;
   for (int k : pick(prof, kQuickLevels, kPaperLevels)) {
     const double dx = std::ldexp(1.0, -k);
@@ -342,7 +345,7 @@ int body(int argc, char** argv) {
                  "connected", "unconnected", "isolated", "checked_status", "checked_message",
                  "unchecked_status", "unchecked_iterations", "rel_error", "max_abs_U", "true_residual",
                  "unchecked_message", "seconds"},
-                3);
+                3, mode);
   double total_b = 0;
   for (int k : pick(prof, kQuickSweepLevels, kPaperSweepLevels))
     for (int s : pick(prof, kQuickSeeds, kPaperSeeds)) {
@@ -405,6 +408,9 @@ int body(int argc, char** argv) {
                      err, secs);
       }
     }
+  ca.finish();
+  cb.finish();
+  if (!ca.writes()) return 0;
   std::printf("thesis_poisson_failure: wrote %s (%zu rows, %zu reused) and %s (%zu rows, "
               "%zu reused), %.1f s computed\n",
               a.str("out").c_str(), ca.rows().size(), ca.reused(), a.str("out-sweep").c_str(),

@@ -69,8 +69,10 @@ int body(int argc, char** argv) {
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
       .opt("max-gb", "4", "memory budget of an assembled Laplacian (GB)")
       .opt("levels", "", "override the profile's levels (comma-separated k)");
+  add_cache_options(a);
   a.parse(argc, argv);
   if (a.str("out").empty()) throw InputError("--out is required (see --help)");
+  const CacheMode mode = cache_mode(a);
   const Profile prof = parse_profile(a.str("profile"));
   const uint64_t seed = static_cast<uint64_t>(a.integer("seed"));
   const double tol = a.positive("tol"), stop_growth = a.positive("stop-growth");
@@ -102,7 +104,7 @@ int body(int argc, char** argv) {
        "growth_below_0", "growth_above_0", "steps_above_0", "factor_above_0", "predicted_0",
        "growth_below_q", "growth_above_q", "steps_above_q", "factor_above_q", "predicted_q",
        "confirmed", "time_s"},
-      3);
+      3, mode);
   const Domain dom;
   double total = 0;
   for (int k : levels) {
@@ -166,6 +168,8 @@ int body(int argc, char** argv) {
       }
     }
   }
+  cache.finish();
+  if (!cache.writes()) return 0;
   std::printf("thesis_stability: wrote %s (%zu rows, %zu reused, %.1f s computed)\n",
               a.str("out").c_str(), cache.rows().size(), cache.reused(), total);
   return 0;

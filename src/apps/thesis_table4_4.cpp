@@ -54,8 +54,10 @@ int body(int argc, char** argv) {
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
       .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB); above: matrix-free")
       .opt("levels", "", "override the profile's levels (comma-separated k, dx = 2^-k)");
+  add_cache_options(a);
   a.parse(argc, argv);
   if (a.str("out").empty()) throw InputError("--out PATH is required (see --help)");
+  const CacheMode mode = cache_mode(a);
   const Profile prof = parse_profile(a.str("profile"));
   const uint64_t seed = static_cast<uint64_t>(a.integer("seed"));
   const double tol = a.positive("tol");
@@ -73,7 +75,7 @@ int body(int argc, char** argv) {
                    {"h_rule", "weight", "level", "dx", "h", "N", "N_omega", "nnz", "storage",
                     "rel_error", "cg_iterations", "rel_residual", "assembly_s", "solve_s",
                     "seconds"},
-                   3);
+                   3, mode);
   const TestFunction& u = test_function("sin2pi");
   const Domain dom;
   double total = 0;
@@ -120,6 +122,8 @@ int body(int argc, char** argv) {
       }
     }
   }
+  cache.finish();
+  if (!cache.writes()) return 0;
   std::printf("thesis_table4_4: wrote %s (%zu rows, %zu reused, %.1f s computed)\n",
               a.str("out").c_str(), cache.rows().size(), cache.reused(), total);
   return 0;

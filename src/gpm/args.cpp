@@ -9,6 +9,7 @@
 
 #include "gpm/command_line.hpp"
 #include "gpm/error.hpp"
+#include "gpm/provenance.hpp"
 
 namespace gpm {
 
@@ -129,6 +130,7 @@ std::vector<std::pair<std::string, std::string>> Args::values() const {
 
 int run_main(const std::string& program, int (*body)(int, char**), int argc, char** argv) {
   try {
+    set_program(program);
     set_command_line(argc, argv);
     return body(argc, argv);
   } catch (const InputError& e) {
@@ -137,6 +139,9 @@ int run_main(const std::string& program, int (*body)(int, char**), int argc, cha
   } catch (const NumericalError& e) {
     std::fprintf(stderr, "%s: numerical failure: %s\n", program.c_str(), e.what());
     return 3;
+  } catch (const StoreMismatch& e) {
+    std::fprintf(stderr, "%s: store check failed: %s\n", program.c_str(), e.what());
+    return 4;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());
     return 1;

@@ -41,7 +41,8 @@ class Args {
 // Strict parse of a decimal number or an expression 2^-k; throws InputError naming `what`.
 double parse_number(const std::string& text, const std::string& what);
 
-// Runs `body` and turns gpm errors into one line on stderr and exit code 1 (2 for usage).
+// Runs `body` and turns gpm errors into one line on stderr and an exit code: 2 bad input,
+// 3 numerical failure, 4 a result store that disagrees with the code, 1 anything else.
 int run_main(const std::string& program, int (*body)(int, char**), int argc, char** argv);
 
 }  // namespace gpm

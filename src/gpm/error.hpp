@@ -17,6 +17,12 @@ struct NumericalError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A result store whose rows disagree with what the current code computes for the same
+// units (store.hpp: --verify, --recheck).  The message names the file, unit and column.
+struct StoreMismatch : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // Checks that x is finite and positive; otherwise throws InputError naming `what`.
 void require_positive(double x, const std::string& what);
 void require_finite(double x, const std::string& what);

@@ -12,38 +12,6 @@
 
 namespace gpm {
 
-LevelCache::LevelCache(std::string path, std::vector<std::pair<std::string, std::string>> params,
-                       std::vector<std::string> columns, int key_columns)
-    : path_(std::move(path)), key_columns_(key_columns) {
-  for (auto& [k, v] : params) table_.set(k, v);
-  table_.columns = std::move(columns);
-  // Reuse only a file written with the same parameters AND the same columns.
-  auto old = TsvTable::load_matching(path_, params);
-  if (!old.empty()) {
-    const auto header = TsvTable::load(path_).columns;
-    if (header == table_.columns) {
-      table_.rows = std::move(old);
-      reused_ = table_.rows.size();
-    }
-  }
-}
-
-bool LevelCache::has(const std::vector<std::string>& key) const {
-  for (auto& r : table_.rows) {
-    bool match = r.size() >= key.size();
-    for (std::size_t c = 0; match && c < key.size(); ++c) match = r[c] == key[c];
-    if (match) return true;
-  }
-  return false;
-}
-
-void LevelCache::add(std::vector<std::string> row) { table_.add_row(std::move(row)); }
-
-void LevelCache::save() {
-  add_provenance(table_);
-  table_.save(path_);
-}
-
 std::vector<double> uniform_volumes(const Particles& p, const Domain& dom) {
   return std::vector<double>(p.size(), dom.area_H() / static_cast<double>(p.size()));
 }
@@ -107,9 +75,11 @@ FusedErrors fused_errors(const Particles& p, const std::vector<double>& V, doubl
               q = std::fabs(tf[f]->v(x, y));
               break;
             case Operator::grad:
-              e = std::max(std::fabs(tf[f]->vx(x, y) - res.grad_x(w, f)[k]),
-                           std::fabs(tf[f]->vy(x, y) - res.grad_y(w, f)[k]));
-              q = std::max(std::fabs(tf[f]->vx(x, y)), std::fabs(tf[f]->vy(x, y)));
+              // Euclidean length of the error vector (imoto §1: |x| is the Euclidean
+              // norm on R^d; thesis (1.27) [C]^d and [ℓ∞(Ω)]² inherit it).
+              e = std::hypot(tf[f]->vx(x, y) - res.grad_x(w, f)[k],
+                             tf[f]->vy(x, y) - res.grad_y(w, f)[k]);
+              q = std::hypot(tf[f]->vx(x, y), tf[f]->vy(x, y));
               break;
             case Operator::lap:
               e = std::fabs(tf[f]->lap(x, y) - res.laplacian(w, f)[k]);

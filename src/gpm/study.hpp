@@ -4,7 +4,7 @@
 //
 // A study program reads like the documents' "numerical results" paragraph:
 //
-//   LevelCache cache(out, params, columns, /*key columns*/ 2);
+//   LevelCache cache(out, params, columns, /*key columns*/ 2);   // store.hpp
 //   for (int k : levels) for (double m : orders) {
 //     if (cache.has({fmt(k), fmt(m)})) continue;            // done in an earlier run
 //     ... build particles, volumes, h ...
@@ -17,32 +17,10 @@
 
 #include "gpm/domain.hpp"
 #include "gpm/truncation.hpp"
+#include "gpm/store.hpp"
 #include "gpm/tsv.hpp"
 
 namespace gpm {
-
-// The data file of a study, row by row.  Rows whose first `key_columns` values match a
-// key are one finished unit of work (a level, or a level × order).  On construction the
-// rows of an existing file are kept if its header agrees with `params` on every key (same
-// study, same parameters); otherwise the file is started afresh.
-class LevelCache {
- public:
-  LevelCache(std::string path, std::vector<std::pair<std::string, std::string>> params,
-             std::vector<std::string> columns, int key_columns);
-  bool has(const std::vector<std::string>& key) const;
-  std::size_t reused() const { return reused_; }
-  void add(std::vector<std::string> row);
-  // Writes every row (atomic) with the params, provenance and any extra meta set on table().
-  void save();
-  TsvTable& table() { return table_; }
-  const std::vector<std::vector<std::string>>& rows() const { return table_.rows; }
-
- private:
-  std::string path_;
-  TsvTable table_;
-  int key_columns_;
-  std::size_t reused_ = 0;
-};
 
 // One requested operator of one weight.
 struct ErrorRequest {

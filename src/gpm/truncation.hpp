@@ -3,8 +3,9 @@
 // kernel, and return the relative ℓ∞ error (imoto §5, thesis §4.1):
 //   interp: max|v − Π_h v| / max|v|,   grad: max|∇v − ∇_h v| / max|∇v|,
 //   lap:    max|Δv − Δ_h v| / max|Δv|,
-// maxima over the particles in Ω; |·| of a gradient is the max norm of the two
-// components ([ℓ∞(Ω)]², thesis §4.1.2).
+// maxima over the particles in Ω; |·| of a gradient is the Euclidean length of the vector
+// (imoto §1 defines |x| as the Euclidean norm on R^d; the thesis' [ℓ∞(Ω)]² of §4.1.2 is the
+// maximum over particles of that length).
 #pragma once
 #include <cstdint>
 #include <string>

@@ -13,6 +13,7 @@
 
 #include "gpm/command_line.hpp"
 #include "gpm/error.hpp"
+#include "gpm/provenance.hpp"
 
 namespace gpm {
 
@@ -150,7 +151,7 @@ const std::string& command_line() { return g_command_line; }
 
 void add_provenance(TsvTable& t) {
   if (!g_command_line.empty()) t.set("command", g_command_line);
-  t.set("git_revision", GPM_GIT_REV);
+  t.set("git_revision", git_revision());
   char host[256] = {0};
   ::gethostname(host, sizeof host - 1);
   t.set("host", host);
