@@ -3,13 +3,14 @@
 #
 # The fingerprint of a program is the SHA-256 (first 12 hex digits) of the SHA-256 of each
 # numerics source of the core (src/gpm, without the files that only parse options, print
-# progress, plan costs or keep the store), of CMakeLists.txt (compile flags) and of the program's own source.
+# progress, plan costs or keep the store), of the compiler and its flags (FLAGS) and of the
+# program's own source.
 # A data row carries the fingerprint of the program that computed it (see src/gpm/store.hpp):
 # a row is reused as current only under the same fingerprint, otherwise after a recorded
 # re-check.  OUT is rewritten only when its content changes, so an unchanged tree recompiles
 # nothing.
 #
-# Inputs: -DSRC=<source dir> -DOUT=<generated .cpp>
+# Inputs: -DSRC=<source dir> -DOUT=<generated .cpp> -DFLAGS=<compiler, version, flags>
 cmake_minimum_required(VERSION 3.22)
 set(io_only args command_line error progress profile cost_model study_plan provenance store)
 file(GLOB core ${SRC}/src/gpm/*.cpp ${SRC}/src/gpm/*.hpp)
@@ -24,8 +25,7 @@ foreach(f IN LISTS core)
   file(RELATIVE_PATH r ${SRC} ${f})
   string(APPEND core_text "${r} ${h}\n")
 endforeach()
-file(SHA256 ${SRC}/CMakeLists.txt h)
-string(APPEND core_text "CMakeLists.txt ${h}\n")
+string(APPEND core_text "build ${FLAGS}\n")
 
 file(GLOB programs ${SRC}/src/apps/*.cpp ${SRC}/src/cli/*.cpp ${SRC}/bench/*.cpp)
 list(SORT programs)

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# make test's check of the result store (results/paper): recompute the cheapest units of
+# every committed paper-profile file under the current code and compare them with the stored
+# rows (--verify: numbers to 1e-9 relative, texts exactly; nothing is written).  A store that
+# no longer matches its code fails the suite.  Files not yet in the store are named, not
+# passed silently.
+#
+# usage: verify_store.sh BUILD_DIR STORE_DIR
+set -u
+build=$1
+store=$2
+failed=0 checked=0 absent=()
+verify() {  # verify FILE PROGRAM ARGS...
+  local file=$1 prog=$2
+  shift 2
+  if [ ! -f "$store/$file" ]; then absent+=("$file"); return; fi
+  echo "== $file: $prog $* --verify"
+  if "$build/$prog" "$@" --profile paper --out "$store/$file" --verify 2>&1 | grep '\[store\]'; then :; fi
+  if [ "${PIPESTATUS[0]}" -eq 0 ]; then checked=$((checked + 1)); else failed=$((failed + 1)); fi
+}
+# The cheap units of each study: the coarse levels, which take seconds.
+verify imoto_fig5_table1.tsv   imoto_fig5_table1 --levels 5,6,7
+verify thesis_table4_1.tsv     thesis_table4_1 --levels 5,6,7
+verify thesis_table4_2.tsv     thesis_table4_2 --levels 5,6,7
+verify thesis_table4_3.tsv     thesis_table4_3 --levels 5,6,7
+verify thesis_table4_4.tsv     thesis_table4_4 --levels 5,6
+for t in 5 6 7; do
+  verify thesis_table4_$t.tsv     thesis_heat --table 4.$t --levels 5
+  verify thesis_table4_${t}_h15.tsv thesis_heat --table 4.$t --h-rule h15 --levels 5
+done
+verify thesis_stability.tsv    thesis_stability --levels 5
+[ ${#absent[@]} -gt 0 ] && echo "not in the store yet (nothing to check): ${absent[*]}"
+stale=$(cat "$store"/*.tsv 2>/dev/null | grep -v '^#' | grep -c 'of code ' || true)
+echo "store: $checked files agree with the current code, $failed differ; $stale rows carried over by a recorded re-check"
+[ "$failed" -eq 0 ] && [ "$checked" -gt 0 ]
