@@ -13,6 +13,7 @@
 #include <string>
 
 #include "gpm/args.hpp"
+#include "gpm/provenance.hpp"
 #include "gpm/domain.hpp"
 #include "gpm/error.hpp"
 #include "gpm/truncation.hpp"
@@ -146,13 +147,32 @@ int cmd_trunc(int argc, char** argv) {
   return 0;
 }
 
+// The fingerprint of the code that decides each named program's numbers, as the result
+// store's rows carry it (provenance.hpp): a stored row is current when they agree.
+int cmd_fingerprint(int argc, char** argv) {
+  if (argc >= 3 && (std::string(argv[2]) == "--help" || std::string(argv[2]) == "-h")) {
+    std::cout << "usage: gpm fingerprint PROGRAM...\n"
+                 "The code fingerprint of each program: the `code` column of a result-store row\n"
+                 "it computed with the code of this build (results/paper/README.md).\n";
+    return 0;
+  }
+  if (argc < 3) throw InputError("gpm fingerprint: name at least one program (see --help)");
+  TsvTable t;
+  t.set("git_revision", git_revision());
+  t.columns = {"program", "code"};
+  for (int i = 2; i < argc; ++i) t.add_row({argv[i], code_fingerprint(argv[i])});
+  print(t);
+  return 0;
+}
+
 int dispatch(int argc, char** argv) {
   const std::string usage =
       "usage: gpm SUBCOMMAND [options]   (gpm SUBCOMMAND --help for its options)\n"
       "  weights     weight functions and their computed properties\n"
       "  particles   a jittered-grid distribution\n"
       "  voronoi     Voronoi cell areas, covering distances and r_c\n"
-      "  trunc       relative l-infinity error of an operator\n";
+      "  trunc       relative l-infinity error of an operator\n"
+      "  fingerprint the code fingerprint of programs (result-store rows)\n";
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::cout << usage;
     return argc < 2 ? 2 : 0;
@@ -162,7 +182,9 @@ int dispatch(int argc, char** argv) {
   if (sub == "particles") return cmd_particles(argc, argv);
   if (sub == "voronoi") return cmd_voronoi(argc, argv);
   if (sub == "trunc") return cmd_trunc(argc, argv);
-  throw InputError("unknown subcommand '" + sub + "'; valid: weights, particles, voronoi, trunc");
+  if (sub == "fingerprint") return cmd_fingerprint(argc, argv);
+  throw InputError("unknown subcommand '" + sub +
+                   "'; valid: weights, particles, voronoi, trunc, fingerprint");
 }
 
 }  // namespace

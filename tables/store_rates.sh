@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# The documents' rates from the committed result store (results/paper), whatever profile the
+# report is built for: rate_table on every stored study file (one slice per reading of h and
+# volume choice, as the profile's own rate tables), merged into one file for the report.
+# No study is run.  Columns: table, slice, setup, key, published, reproduced, levels, status.
+# `setup` says whether the slice is one of the documents' own set-ups (both readings of h
+# are: which one the thesis ran is open) or a variant beyond them (uniform volumes where the
+# thesis uses Voronoi volumes), which has no published value to agree with.
+# SUMMARY lists, per stored file, its rows, levels, and how many rows the current code made,
+# how many a recorded re-check carried over, and how many come from other code.
+#
+# usage: store_rates.sh BUILD_DIR STORE_DIR OUT SUMMARY
+set -euo pipefail
+build=$1 store=$2 out=$3 summary=$4
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+pub=tables/published
+
+# rate TABLE SLICE DATA PUBLISHED KEYS: one rate table into $tmp/TABLE.SLICE.tsv
+rate() {
+  "$build/rate_table" --data "$3" --published "$4" --key "$5" --out "$tmp/$1.$2.tsv" >/dev/null
+}
+# slice FILE READING VOLUMES: the rows of one (h reading, volumes) pair, header kept
+slice() {
+  awk -F'\t' -v r="$2" -v v="$3" '/^#/ || $1=="h_reading" || ($1==r && $2==v)' "$1"
+}
+# finite FILE: the rows of the heat series (weight, theta) that never blew up
+finite() {
+  awk -F'\t' '
+    FNR==1 && NR!=FNR { pass=2 }
+    /^#/ { if (pass==2) print; next }
+    !seen[pass]++ { for (i=1;i<=NF;i++) c[$i]=i; if (pass==2) print; next }
+    pass!=2 { if ($c["blew_up"]=="yes") bad[$1 "|" $2]=1; next }
+    !(($1 "|" $2) in bad)' "$1" "$1"
+}
+
+for t in 4_1 4_2 4_3; do
+  f=$store/thesis_table$t.tsv
+  [ -f "$f" ] || continue
+  key=weight,function
+  [ $t = 4_3 ] && key=weight,operator,function
+  for s in printed_voronoi scaled_voronoi printed_uniform scaled_uniform; do
+    slice "$f" "${s%_*}" "${s#*_}" > "$tmp/slice.tsv"
+    [ "$(grep -vc '^#' "$tmp/slice.tsv")" -gt 1 ] || continue
+    rate "thesis_table$t" "$s" "$tmp/slice.tsv" "$pub/thesis_table${t}_long.tsv" "$key"
+  done
+done
+if [ -f "$store/thesis_table4_4.tsv" ]; then
+  rate thesis_table4_4 all "$store/thesis_table4_4.tsv" "$pub/thesis_table4_4_long.tsv" h_rule,weight
+fi
+for t in 4_5 4_6 4_7; do
+  for r in h10 h15; do
+    f=$store/thesis_table$t.tsv
+    if [ $r = h15 ]; then f=$store/thesis_table${t}_h15.tsv; fi
+    [ -f "$f" ] || continue
+    finite "$f" > "$tmp/finite.tsv"
+    rate "thesis_table$t" "$r" "$tmp/finite.tsv" "$pub/thesis_table${t}_long.tsv" weight,theta
+  done
+done
+if [ -f "$store/imoto_fig5_table1.tsv" ]; then
+  rate imoto_table1 all "$store/imoto_fig5_table1.tsv" "$pub/imoto_table1.tsv" operator,weight,m
+fi
+
+# Merge: the key columns of each table joined into one "key" cell; columns found by name.
+{
+  echo "# program = tables/store_rates.sh"
+  echo "# store = $store"
+  echo "# note = rates at the documents' levels from the committed paper-profile rows; status from rate_table (tolerance in its header)"
+  printf 'table\tslice\tsetup\tkey\tpublished\treproduced\tlevels\tstatus\n'
+  for r in "$tmp"/*.tsv; do
+    [ -e "$r" ] || continue
+    name=$(basename "$r" .tsv)
+    awk -F'\t' -v t="${name%%.*}" -v s="${name#*.}" '
+      /^# key = / { nk = split(substr($0, 9), keys, ",") }
+      /^#/ { next }
+      !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
+      { k = $c[keys[1]]; for (j=2;j<=nk;j++) k = k " " $c[keys[j]];
+        setup = s ~ /uniform/ ? "beyond the document (uniform volumes)" : "document"
+        status = setup == "document" ? $c["status"] : "no published value for this set-up"
+        printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", t, s, setup, k, $c["published"], $c["reproduced"], $c["levels"], status }' "$r"
+  done
+} > "$out.tmp"
+mv "$out.tmp" "$out"
+
+# Where the stored rows come from, file by file.
+{
+  echo "# program = tables/store_rates.sh (summary)"
+  echo "# store = $store"
+  echo "# current = rows whose code column is the fingerprint of this build's program (gpm fingerprint)"
+  printf 'file\tprogram\trows\tlevels\tcurrent_computed\tcurrent_by_recheck\tother_code\tmade_on\n'
+  for f in "$store"/*.tsv; do
+    [ -e "$f" ] || continue
+    prog=$(sed -n 's/^# program = //p' "$f" | head -1)
+    code=$("$build/gpm" fingerprint "$prog" | awk -F'\t' 'NR>2 { print $2 }')
+    awk -F'\t' -v file="$(basename "$f")" -v prog="$prog" -v code="$code" '
+      /^#/ { next }
+      !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
+      { n++; lv[$c["level"]]=1; m[$c["made_on"]]=1
+        if ($c["code"] != code) other++
+        else if ($c["checked"] ~ /recheck/) carried++
+        else fresh++ }
+      END { l=""; for (k=1; k<=20; k++) if (k in lv) l = l (l=="" ? "" : ",") k
+            mo=""; for (k in m) mo = mo (mo=="" ? "" : "; ") k
+            printf "%s\t%s\t%d\t%s\t%d\t%d\t%d\t%s\n", file, prog, n, l, fresh, carried, other, mo }' "$f"
+  done
+} > "$summary.tmp"
+mv "$summary.tmp" "$summary"
