@@ -41,6 +41,14 @@ all: report
 help:
 	@sed -n '1,7p' Makefile
 
+# In the paper profile a study first re-checks its coarse units against the stored rows
+# (results/paper/README.md): when the code changed but its numbers did not, the rows of the
+# older code are carried over instead of being recomputed for hours; when the numbers changed,
+# the run that follows recomputes them.  Usage in a recipe, before the study's own command:
+#   $(call store_recheck,PROGRAM [ARGS],LEVELS)
+store_recheck = $(if $(filter paper,$(PROFILE)),@if [ -f $@ ]; then $(1) --profile paper --out $@ \
+  --recheck --levels $(2) || echo "recheck: numbers changed, the run recomputes the older rows"; fi)
+
 # --- set-up -----------------------------------------------------------------------------
 # Installs only what is missing; a second run costs one dpkg query per package.
 deps:

@@ -16,6 +16,7 @@ FIGFILES  += $(foreach f,fig1_1 fig1_2 fig1_3 fig1_4 fig4_1 fig4_2 fig4_3 fig4_4
 
 # --- data ------------------------------------------------------------------------------
 $(DATA)/thesis_table4_%.tsv: $(BUILD)/thesis_table4_%
+	$(call store_recheck,$<,5$(,)6$(,)7)
 	$< --profile $(PROFILE) --out $@ --cost $(DATA)/thesis_table4_$*_cost.tsv
 	@touch $@ $(DATA)/thesis_table4_$*_cost.tsv  # a fully cached rerun leaves the file as it was
 $(DATA)/thesis_table4_%_cost.tsv: $(DATA)/thesis_table4_%.tsv

@@ -11,6 +11,7 @@ FIGFILES  += $(FIGOUT)/thesis_fig4_8.svg $(FIGOUT)/thesis_fig4_9.svg \
              $(FIGOUT)/thesis_heat_readings.svg
 
 $(DATA)/thesis_table4_4.tsv: $(BUILD)/thesis_table4_4
+	$(call store_recheck,$<,5$(,)6)
 	$< --profile $(PROFILE) --out $@
 	@touch $@  # a fully cached rerun leaves the file as it was
 
@@ -21,6 +22,7 @@ $(DATA)/thesis_table4_4_rates.tsv: $(BUILD)/rate_table $(DATA)/thesis_table4_4.t
 # One run of thesis_heat per table; it also writes the rows of the series that never
 # blew up (…_finite.tsv), which is what rate_table reads.
 $(DATA)/thesis_table%.tsv: $(BUILD)/thesis_heat
+	$(call store_recheck,$< --table $(subst _,.,$*),5)
 	$< --table $(subst _,.,$*) --profile $(PROFILE) --out $@ --rates-input $(DATA)/thesis_table$*_finite.tsv
 	@touch $@ $(DATA)/thesis_table$*_finite.tsv
 
@@ -32,6 +34,7 @@ $(DATA)/thesis_table%_rates.tsv: $(BUILD)/rate_table $(DATA)/thesis_table%.tsv t
 # data files (…_h15.tsv), rates against the same published values.  The shorter stem makes
 # make prefer these rules over the generic ones above.
 $(DATA)/thesis_table%_h15.tsv: $(BUILD)/thesis_heat
+	$(call store_recheck,$< --table $(subst _,.,$*) --h-rule h15,5)
 	$< --table $(subst _,.,$*) --h-rule h15 --profile $(PROFILE) --out $@ \
 	  --rates-input $(DATA)/thesis_table$*_h15_finite.tsv
 	@touch $@ $(DATA)/thesis_table$*_h15_finite.tsv

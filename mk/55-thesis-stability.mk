@@ -4,6 +4,7 @@ DATAFILES += $(DATA)/thesis_stability.tsv
 FIGFILES  += $(FIGOUT)/thesis_stability.svg
 
 $(DATA)/thesis_stability.tsv: $(BUILD)/thesis_stability
+	$(call store_recheck,$<,5)
 	$< --profile $(PROFILE) --out $@
 	@touch $@  # a fully cached rerun leaves the file as it was
 

@@ -9,16 +9,26 @@
 # SUMMARY lists, per stored file, its rows, levels, and how many rows the current code made,
 # how many a recorded re-check carried over, and how many come from other code.
 #
-# usage: store_rates.sh BUILD_DIR STORE_DIR OUT SUMMARY
+# SCORE counts the verdicts per (table, slice).
+#
+# usage: store_rates.sh BUILD_DIR STORE_DIR OUT SUMMARY SCORE
 set -euo pipefail
-build=$1 store=$2 out=$3 summary=$4
+build=$1 store=$2 out=$3 summary=$4 score=$5
 tmp=$(mktemp -d)
+# Header lines every output carries (the report prints them under each table).
+rev=$(git describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)
+provenance() {
+  printf '# profile = paper (the committed store %s)\n# seed = 1\n# git_revision = %s\n# written_utc = %s\n' \
+    "$store" "$rev" "$(date -u +%Y-%m-%dT%H:%M:%SZ)"
+}
 trap 'rm -rf "$tmp"' EXIT
 pub=tables/published
 
-# rate TABLE SLICE DATA PUBLISHED KEYS: one rate table into $tmp/TABLE.SLICE.tsv
+# rate TABLE SLICE DATA PUBLISHED KEYS: one rate table into $tmp/rates/TABLE.SLICE.tsv
+mkdir "$tmp/rates"
 rate() {
-  "$build/rate_table" --data "$3" --published "$4" --key "$5" --out "$tmp/$1.$2.tsv" >/dev/null
+  "$build/rate_table" --data "$3" --published "$4" --key "$5" --levels published \
+    --out "$tmp/rates/$1.$2.tsv" >/dev/null
 }
 # slice FILE READING VOLUMES: the rows of one (h reading, volumes) pair, header kept
 slice() {
@@ -64,10 +74,11 @@ fi
 # Merge: the key columns of each table joined into one "key" cell; columns found by name.
 {
   echo "# program = tables/store_rates.sh"
+  provenance
   echo "# store = $store"
   echo "# note = rates at the documents' levels from the committed paper-profile rows; status from rate_table (tolerance in its header)"
   printf 'table\tslice\tsetup\tkey\tpublished\treproduced\tlevels\tstatus\n'
-  for r in "$tmp"/*.tsv; do
+  for r in "$tmp"/rates/*.tsv; do
     [ -e "$r" ] || continue
     name=$(basename "$r" .tsv)
     awk -F'\t' -v t="${name%%.*}" -v s="${name#*.}" '
@@ -85,6 +96,7 @@ mv "$out.tmp" "$out"
 # Where the stored rows come from, file by file.
 {
   echo "# program = tables/store_rates.sh (summary)"
+  provenance
   echo "# store = $store"
   echo "# current = rows whose code column is the fingerprint of this build's program (gpm fingerprint)"
   printf 'file\tprogram\trows\tlevels\tcurrent_computed\tcurrent_by_recheck\tother_code\tmade_on\n'
@@ -105,3 +117,20 @@ mv "$out.tmp" "$out"
   done
 } > "$summary.tmp"
 mv "$summary.tmp" "$summary"
+
+# Verdict counts per table and slice, in the order the rates file lists them.
+awk -F'\t' '
+  BEGIN { OFS = "\t" }
+  /^#/ { next }
+  !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
+  { k = $c["table"] OFS $c["slice"] OFS $c["setup"]
+    if (!(k in n)) order[++m] = k
+    n[k]++; st[k, $c["status"]]++ }
+  END {
+    print "# program = tables/store_rates.sh (score)"
+    while ((getline line < "/dev/stdin") > 0) print line
+    print "table", "slice", "setup", "rates", "agrees", "differs", "not_computed", "undefined"
+    for (i=1;i<=m;i++) { k = order[i]
+      a = st[k, "agrees"] + 0; d = st[k, "differs-unexplained"] + st[k, "differs-explained"]
+      print k, n[k], a, d, st[k, "not-computed"] + 0, n[k] - a - d - st[k, "not-computed"] } }' "$out" > "$score.tmp" < <(provenance)
+mv "$score.tmp" "$score"

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <sstream>
 #include <set>
 #include <string>
 #include <vector>
@@ -49,6 +50,8 @@ int body(int argc, char** argv) {
   a.opt("x", "h", "abscissa of the rate (log e against log x)");
   a.opt("y", "rel_error", "error column");
   a.opt("value", "numerical", "published column holding the rate");
+  a.opt("levels", "", "the two levels the rate comes from, e.g. 10,11, or 'published' for the\n"
+                      "  published file's rate_levels (the document's); default: the two finest");
   a.opt("tolerance", "0.15", "|reproduced − published| that still counts as agreement");
   a.opt("out", "", "output TSV");
   a.parse(argc, argv);
@@ -101,6 +104,25 @@ int body(int argc, char** argv) {
   for (const char* c : {"published", "theoretical", "reproduced", "difference", "lsq_slope",
                         "levels", "status", "reason"})
     out.columns.push_back(c);
+  // The two levels of every rate: fixed (the document's) or the finest two of each series.
+  std::vector<int> fixed;
+  if (!a.str("levels").empty()) {
+    std::string lv = a.str("levels");
+    if (lv == "published") {
+      const auto v = pub.get("rate_levels");
+      if (!v) throw InputError("--levels published: " + a.str("published") + " has no rate_levels");
+      lv = *v;
+    }
+    std::stringstream ss(lv);
+    for (std::string item; std::getline(ss, item, ',');) {
+      const double k = parse_number(item, "--levels");
+      if (k != std::floor(k)) throw InputError("--levels: '" + item + "' is not an integer");
+      fixed.push_back(static_cast<int>(k));
+    }
+    if (fixed.size() != 2 || !(fixed[0] < fixed[1]))
+      throw InputError("--levels: '" + lv + "' is not two increasing levels");
+    out.set("rate_levels", lv);
+  }
   std::map<std::string, int> counts;
   for (auto& r : pub.rows) {
     std::vector<std::string> kv;
@@ -109,8 +131,12 @@ int body(int argc, char** argv) {
     const double published = parse_number(r.at(cv), a.str("value"));
     std::string rep = "NA", diff = "NA", lsq = "NA", levels = "", status = "not-computed", why = "";
     auto it = series.find(key);
-    if (it != series.end() && it->second.size() >= 2) {
-      auto last = std::prev(it->second.end()), prev = std::prev(last);
+    const bool have = it != series.end() &&
+                      (fixed.empty() ? it->second.size() >= 2
+                                     : it->second.count(fixed[0]) && it->second.count(fixed[1]));
+    if (have) {
+      auto last = fixed.empty() ? std::prev(it->second.end()) : it->second.find(fixed[1]);
+      auto prev = fixed.empty() ? std::prev(last) : it->second.find(fixed[0]);
       const double rate = two_level_rate(prev->second.first, prev->second.second,
                                          last->second.first, last->second.second);
       std::vector<double> xs, ys;

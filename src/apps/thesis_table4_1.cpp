@@ -12,31 +12,10 @@
 #include "gpm/args.hpp"
 #include "gpm/thesis_truncation.hpp"
 
-using namespace gpm;
-
-namespace {
-
-int body(int argc, char** argv) {
-  ThesisTableSpec s;
-  s.program = "thesis_table4_1";
-  s.summary =
-      "Thesis Figure 4.3 / Table 4.1: interpolant errors for the quadratic spike, cubic and\n"
-      "quintic B-splines, h = (3.1^3 2^-10 dx)^(1/3), Voronoi (and uniform) volumes.";
-  s.table = "Table 4.1 (Section 4.1.1)";
-  s.c = 3;
-  s.p = 3;
-  s.requests = {{"quadratic_spike", Operator::interp},
-                {"cubic_bspline", Operator::interp},
-                {"quintic_bspline", Operator::interp}};
-  s.readings = {HReading::printed};  // the scaled reading is the same formula for p = 3
-  // Quick profile: each level costs about 10x the one before (pairs ∝ Δx^(-10/3)).
-  s.quick_printed = {5, 6, 7, 8, 9, 10};
-  s.quick_scaled = {5, 6, 7, 8, 9, 10};
-  s.paper_levels = {5, 6, 7, 8, 9, 10, 11};
-  s.rate_levels = "10,11";
-  return run_thesis_table(s, argc, argv);
+// The table's weights, readings of h and levels are defined once, in thesis_table_specs()
+// (src/gpm/thesis_truncation.cpp), which `make plan` and the tests read too.
+int main(int argc, char** argv) {
+  return gpm::run_main("thesis_table4_1", [](int c, char** v) {
+    return gpm::run_thesis_table(gpm::thesis_table_spec("thesis_table4_1"), c, v);
+  }, argc, argv);
 }
-
-}  // namespace
-
-int main(int argc, char** argv) { return run_main("thesis_table4_1", body, argc, argv); }

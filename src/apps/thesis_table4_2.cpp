@@ -9,32 +9,10 @@
 #include "gpm/args.hpp"
 #include "gpm/thesis_truncation.hpp"
 
-using namespace gpm;
-
-namespace {
-
-int body(int argc, char** argv) {
-  ThesisTableSpec s;
-  s.program = "thesis_table4_2";
-  s.summary =
-      "Thesis Figure 4.5 / Table 4.2: interpolant errors incl. the cubic spike,\n"
-      "h = (3.1^3 2^-10 dx)^(1/5) (printed) and 3.1*2^(5/5-5) dx^(1/5) (scaled).";
-  s.table = "Table 4.2 (Section 4.1.1)";
-  s.c = 3;
-  s.p = 5;
-  s.requests = {{"cubic_bspline", Operator::interp},
-                {"quintic_bspline", Operator::interp},
-                {"quadratic_spike", Operator::interp},
-                {"cubic_spike", Operator::interp}};
-  s.readings = {HReading::printed, HReading::scaled};
-  // Pairs grow ≈ 12x per level; the printed reading has ~6x the pairs of the scaled one.
-  s.quick_printed = {5, 6, 7, 8};
-  s.quick_scaled = {5, 6, 7, 8, 9};
-  s.paper_levels = {5, 6, 7, 8, 9, 10, 11, 12};
-  s.rate_levels = "11,12";
-  return run_thesis_table(s, argc, argv);
+// The table's weights, readings of h and levels are defined once, in thesis_table_specs()
+// (src/gpm/thesis_truncation.cpp), which `make plan` and the tests read too.
+int main(int argc, char** argv) {
+  return gpm::run_main("thesis_table4_2", [](int c, char** v) {
+    return gpm::run_thesis_table(gpm::thesis_table_spec("thesis_table4_2"), c, v);
+  }, argc, argv);
 }
-
-}  // namespace
-
-int main(int argc, char** argv) { return run_main("thesis_table4_2", body, argc, argv); }

@@ -299,11 +299,13 @@ void LevelCache::finish() {
     }
     for (auto& key : units) place(key);
     table_.rows = std::move(merged);
+    // Only rows of a code whose own units were just recomputed and agreed are carried over:
+    // agreement with rows that the current code made itself proves nothing about older rows.
     std::size_t restamped = 0;
     if (agree) {
       const int cchecked = table_.column("checked");
       for (auto& r : table_.rows)
-        if (r[ccode] != code_) {
+        if (r[ccode] != code_ && old_codes.count(r[ccode])) {
           // The chain of checks stays readable: an older record is kept before the new one.
           const std::string before = r[cchecked] == "computed" || r[cchecked] == "-"
                                          ? std::string()

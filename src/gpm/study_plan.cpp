@@ -45,6 +45,12 @@ struct FusedMix {
   }
 };
 
+// The thesis' truncation tables: levels, readings and h from thesis_table_specs() (the
+// programs' own definitions); here only the calibration mix each table's pass is timed with.
+std::string thesis_mix(const std::string& program) {  // "thesis_table4_1" -> "thesis4_1"
+  return "thesis" + program.substr(std::string("thesis_table").size());
+}
+
 const std::vector<FusedMix>& fused_mixes() {
   static const std::vector<FusedMix> m = [] {
     std::vector<FusedMix> v;
@@ -53,25 +59,10 @@ const std::vector<FusedMix>& fused_mixes() {
     for (const char* w : {"Grad1", "Grad2", "Grad3"}) im.requests.push_back({w, Operator::grad});
     for (const char* w : {"Lap1", "Lap2", "Lap3"}) im.requests.push_back({w, Operator::lap});
     v.push_back(im);
-    const std::vector<std::string> both = {"quartic", "sin2pi"};
-    v.push_back({"thesis4_1",
-                 {{"quadratic_spike", Operator::interp},
-                  {"cubic_bspline", Operator::interp},
-                  {"quintic_bspline", Operator::interp}},
-                 both});
-    v.push_back({"thesis4_2",
-                 {{"cubic_bspline", Operator::interp},
-                  {"quintic_bspline", Operator::interp},
-                  {"quadratic_spike", Operator::interp},
-                  {"cubic_spike", Operator::interp}},
-                 both});
-    FusedMix t3{"thesis4_3", {}, both};
-    for (const char* w : {"quartic_polynomial", "piecewise_cubic_polynomial",
-                          "piecewise_quintic_polynomial"}) {
-      t3.requests.push_back({w, Operator::grad});
-      t3.requests.push_back({w, Operator::lap});
-    }
-    v.push_back(t3);
+    // The thesis tables' mixes are their programs' own requests (thesis_table_specs()).
+    std::vector<std::string> cases;
+    for (auto& c : thesis_cases()) cases.push_back(c.function);
+    for (auto& t : thesis_table_specs()) v.push_back({thesis_mix(t.program), t.requests, cases});
     return v;
   }();
   return m;
@@ -83,21 +74,6 @@ const FusedMix& mix(const std::string& name) {
   throw InputError("unknown weight mix '" + name + "'");
 }
 
-// The thesis' truncation tables (thesis_table4_{1,2,3}.cpp).
-struct ThesisPlan {
-  std::string study, mix;
-  int c, p;
-  std::vector<HReading> readings;
-  std::vector<int> quick_printed, quick_scaled, paper;
-};
-const std::vector<ThesisPlan> kThesis = {
-    {"thesis_table4_1", "thesis4_1", 3, 3, {HReading::printed}, {5, 6, 7, 8, 9, 10},
-     {5, 6, 7, 8, 9, 10}, {5, 6, 7, 8, 9, 10, 11}},
-    {"thesis_table4_2", "thesis4_2", 3, 5, {HReading::printed, HReading::scaled},
-     {5, 6, 7, 8}, {5, 6, 7, 8, 9}, {5, 6, 7, 8, 9, 10, 11, 12}},
-    {"thesis_table4_3", "thesis4_3", 4, 4, {HReading::printed, HReading::scaled},
-     {5, 6, 7, 8}, {5, 6, 7, 8, 9}, {5, 6, 7, 8, 9, 10, 11}},
-};
 const std::vector<int> kImotoQuick = {5, 6, 7, 8, 9, 10}, kImotoPaper = {5, 6, 7, 8, 9, 10, 11, 12};
 const std::vector<double> kImotoOrders = {1, 3, 5};
 
@@ -169,7 +145,7 @@ double load_average() {
 
 std::vector<std::string> planned_studies() {
   std::vector<std::string> s = {"imoto_fig5_table1"};
-  for (auto& t : kThesis) s.push_back(t.study);
+  for (auto& t : thesis_table_specs()) s.push_back(t.program);
   s.push_back("thesis_table4_4");
   for (auto& hp : kHeat)
     for (const char* suffix : {"", "_h15"}) {
@@ -383,18 +359,20 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
     for (double m : kImotoOrders) add_fused("imoto_fig5_table1", "m=" + fmt(m), k, imoto_h(m, dx_of(k)), "imoto9");
 
   // Thesis Tables 4.1–4.3: per (reading, volumes, level); Voronoi once per level.
-  for (auto& t : kThesis) {
+  for (auto& t : thesis_table_specs()) {
     std::vector<int> all;
     for (HReading r : t.readings) {
-      const auto& lv = paper ? t.paper : (r == HReading::printed ? t.quick_printed : t.quick_scaled);
+      const auto& lv = paper ? t.paper_levels : (r == HReading::printed ? t.quick_printed : t.quick_scaled);
       all.insert(all.end(), lv.begin(), lv.end());
       for (int k : lv)
         for (const char* vol : {"voronoi", "uniform"})
-          add_fused(t.study, h_reading_name(r) + "/" + vol, k, thesis_h(r, t.c, t.p, dx_of(k)), t.mix);
+          if (!(paper && std::string(vol) == "uniform" && k > t.paper_uniform_max_level))
+            add_fused(t.program, h_reading_name(r) + "/" + vol, k,
+                      thesis_h(r, t.c, t.p, dx_of(k)), thesis_mix(t.program));
     }
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
-    for (int k : all) add_voronoi(t.study, "voronoi", k);
+    for (int k : all) add_voronoi(t.program, "voronoi", k);
   }
 
   // The Laplacian products: assembled (12 B per non-zero) unless over the programs' memory
@@ -510,8 +488,8 @@ std::map<std::pair<std::string, int>, RecordedUnit> recorded_units(
   };
   if (study == "imoto_fig5_table1") {
     for (auto& r : d.rows) put("m=" + r[col(d, "m", study)], level(r), v(r, "time_s"), v(r, "pairs"));
-  } else if (study.rfind("thesis_table4_", 0) == 0 && study.size() == 15 &&
-             std::string("123").find(study[14]) != std::string::npos) {
+  } else if (std::any_of(thesis_table_specs().begin(), thesis_table_specs().end(),
+                         [&](const ThesisTableSpec& t) { return t.program == study; })) {
     for (auto& r : d.rows) {
       const int k = level(r);
       put(r[col(d, "h_reading", study)] + "/" + r[col(d, "volumes", study)], k, v(r, "time_s"),

@@ -43,7 +43,15 @@ struct ThesisTableSpec {
   std::vector<int> quick_printed, quick_scaled;  // levels of the quick profile per reading
   std::vector<int> paper_levels;        // the thesis' levels (both readings)
   std::string rate_levels;              // levels the thesis takes its rates from, e.g. "10,11"
+  // Uniform volumes V_i = |Ω_H|/N are a variant beyond the thesis (it uses Voronoi volumes):
+  // in the paper profile they run up to this level only, where their (different) behaviour
+  // is already plain, instead of doubling the cost of the thesis' finest levels.
+  int paper_uniform_max_level = 10;
 };
+
+// The three tables, defined once: their programs, `make plan` and the tests read them here.
+const std::vector<ThesisTableSpec>& thesis_table_specs();
+const ThesisTableSpec& thesis_table_spec(const std::string& program);  // InputError if unknown
 
 // Runs the table: for each level (ascending) and each (reading, volumes) not yet in the data
 // file, one fused pass; writes one row per weight × operator × case and saves after every

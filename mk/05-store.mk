@@ -1,0 +1,12 @@
+# Paper scale from the committed result store (results/paper), for every profile: the
+# documents' rates computed from the stored rows (no study is run), the provenance of those
+# rows, and the verdict counts.  A fresh clone's `make report` shows them at once.
+STORE := results/paper
+STORE_FILES := $(wildcard $(STORE)/*.tsv)
+DATAFILES += $(DATA)/store_rates.tsv $(DATA)/store_summary.tsv $(DATA)/store_score.tsv
+
+$(DATA)/store_rates.tsv: tables/store_rates.sh $(STORE_FILES) $(BUILD)/rate_table $(BUILD)/gpm \
+    $(wildcard tables/published/*.tsv)
+	@mkdir -p $(DATA)
+	bash $< $(BUILD) $(STORE) $@ $(DATA)/store_summary.tsv $(DATA)/store_score.tsv
+$(DATA)/store_summary.tsv $(DATA)/store_score.tsv: $(DATA)/store_rates.tsv ;
