@@ -26,6 +26,7 @@
 #include "gpm/args.hpp"
 #include "gpm/domain.hpp"
 #include "gpm/error.hpp"
+#include "gpm/influence_radius.hpp"
 #include "gpm/kernel.hpp"
 #include "gpm/laplacian_matrix.hpp"
 #include "gpm/profile.hpp"
@@ -113,7 +114,7 @@ int body(int argc, char** argv) {
 
   // One loop over the resolutions: build both forms, time products per thread count.
   for (double dx : dxs) {
-    const double h = std::pow(std::pow(2.6, 4) * std::pow(2.0, -10) * dx, 0.25);
+    const double h = gpm::pde_h("h10", dx);
     const gpm::Particles p = gpm::jittered_grid(dx, static_cast<uint64_t>(args.integer("seed")));
     const std::vector<double> V(p.size(), gpm::Domain{}.area_H() / static_cast<double>(p.size()));
 

@@ -28,6 +28,7 @@
 #include "gpm/domain.hpp"
 #include "gpm/error.hpp"
 #include "gpm/heat.hpp"
+#include "gpm/influence_radius.hpp"
 #include "gpm/laplacian_matrix.hpp"
 #include "gpm/poisson.hpp"
 #include "gpm/profile.hpp"
@@ -106,9 +107,7 @@ int body(int argc, char** argv) {
   const Profile prof = parse_profile(a.str("profile"));
   const uint64_t seed = static_cast<uint64_t>(a.integer("seed"));
   const std::string h_rule = a.str("h-rule");
-  if (h_rule != "h10" && h_rule != "h15")
-    throw InputError("--h-rule: '" + h_rule + "' is not h10 or h15");
-  const double h_scale = h_rule == "h10" ? std::pow(2.0, -10) : std::pow(2.0, -15);
+  pde_h(h_rule, 1.0);  // InputError naming the rule unless h10 or h15
   HeatSetting hs;
   hs.kappa = kKappa;
   hs.T = kT;
@@ -126,7 +125,7 @@ int body(int argc, char** argv) {
        {"dt_nominal", ts.dt_rule}, {"steps", "K = ceil(T/dt_nominal), dt = T/K"},
        {"tol", fmt(hs.tol)}, {"blowup", fmt(hs.blowup_factor)},
        {"h_rule", h_rule},
-       {"h", h_rule == "h10" ? "(2.6^4 2^-10 dx)^(1/4)" : "(2.6^4 2^-15 dx)^(1/4)"}, {"volumes", "uniform |Omega_H|/N"},
+       {"h", pde_h_formula(h_rule)}, {"volumes", "uniform |Omega_H|/N"},
        {"error", "(4.2): max_k ||u-U||_l2(Omega_H) / max_k ||u||_l2(Omega_H)"}},
       {"weight", "theta", "level", "dx", "h", "N", "N_omega", "storage", "K", "dt",
        "rel_error", "rel_error_max", "growth_max", "blew_up", "blowup_step", "growth", "amplification",
@@ -136,7 +135,7 @@ int body(int argc, char** argv) {
   double total = 0;
   for (int k : levels) {
     const double dx = std::ldexp(1.0, -k);
-    const double h = std::pow(std::pow(2.6, 4) * h_scale * dx, 0.25);
+    const double h = pde_h(h_rule, dx);
     const double dt0 = ts.c * std::pow(h, ts.p);
     const Particles p = jittered_grid(dx, seed);
     const auto V = uniform_volumes(p, dom);

@@ -50,6 +50,7 @@
 #include "gpm/connectivity.hpp"
 #include "gpm/domain.hpp"
 #include "gpm/error.hpp"
+#include "gpm/influence_radius.hpp"
 #include "gpm/laplacian_matrix.hpp"
 #include "gpm/poisson.hpp"
 #include "gpm/poisson_probes.hpp"
@@ -66,7 +67,6 @@ namespace {
 // --- Parameters --------------------------------------------------------------------------
 // (a) weights, readings of h (as in thesis_table4_4) and levels.
 const std::vector<std::string> kWeights = {"cubic_spike", "quartic_polynomial"};
-const std::vector<std::string> kHRules = {"h10", "h15"};
 const std::vector<int> kQuickLevels = {5, 6};
 const std::vector<int> kPaperLevels = {5, 6, 7, 8};
 // Dense eigenvalues / inverse only up to this many unknowns (N_Ω ≈ 1,000 at 2^-5, 4,000 at
@@ -85,11 +85,6 @@ const std::vector<double> kNearThreshold = {0.98, 0.99, 0.995, 1.005, 1.02};
 const std::string kSweepWeight = "quartic_polynomial";
 const double kTol = 1e-10;   // CG relative residual (as thesis_table4_4)
 const int kMaxIter = 20000;  // CG iterations before "did not converge" is reported
-
-double influence_radius(const std::string& rule, double dx) {
-  const double c = rule == "h10" ? std::pow(2.0, -10) : std::pow(2.0, -15);
-  return std::pow(std::pow(2.6, 4) * c * dx, 0.25);
-}
 
 std::string seed_list(Profile prof) {
   std::string out;
@@ -285,11 +280,11 @@ int body(int argc, char** argv) {
     const auto [f, g, umax] = poisson_data(p, u);
     std::vector<double> zero(p.size(), 0.0), f_src(p.size(), 0.0);
     f_src[nearest(p, 0.5, 0.5, true)] = -1;
-    for (const auto& rule : kHRules)
+    for (const auto& rule : pde_h_rules())
       for (const auto& wname : kWeights) {
         if (ca.has({rule, wname, fmt(k)})) continue;
         const auto t0 = std::chrono::steady_clock::now();
-        const double h = influence_radius(rule, dx);
+        const double h = pde_h(rule, dx);
         const DiscreteLaplacian L(p, V, weight(wname), h, LaplacianStorage::assembled);
         std::vector<double> g_bnd(p.size(), 0.0);
         g_bnd[most_negative_boundary_particle(L)] = -1;

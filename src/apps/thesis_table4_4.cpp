@@ -19,6 +19,7 @@
 #include "gpm/args.hpp"
 #include "gpm/domain.hpp"
 #include "gpm/error.hpp"
+#include "gpm/influence_radius.hpp"
 #include "gpm/laplacian_matrix.hpp"
 #include "gpm/poisson.hpp"
 #include "gpm/profile.hpp"
@@ -36,12 +37,6 @@ const std::vector<int> kQuickLevels = {5, 6, 7};
 const std::vector<int> kPaperLevels = {5, 6, 7, 8, 9};
 const std::vector<std::string> kWeights = {"quartic_polynomial", "piecewise_cubic_polynomial",
                                            "piecewise_quintic_polynomial"};
-const std::vector<std::string> kHRules = {"h10", "h15"};
-
-double influence_radius(const std::string& rule, double dx) {
-  const double c = rule == "h10" ? std::pow(2.0, -10) : std::pow(2.0, -15);
-  return std::pow(std::pow(2.6, 4) * c * dx, 0.25);
-}
 
 int body(int argc, char** argv) {
   Args a("thesis_table4_4",
@@ -71,7 +66,7 @@ int body(int argc, char** argv) {
                     {"seed", fmt(static_cast<long long>(seed))}, {"tol", fmt(tol)},
                     {"function", "sin2pi"}, {"volumes", "uniform |Omega_H|/N"},
                     {"error", "max_Omega|u-U| / max_Omega|u|"},
-                    {"h10", "(2.6^4 2^-10 dx)^(1/4)"}, {"h15", "(2.6^4 2^-15 dx)^(1/4)"}},
+                    {"h10", pde_h_formula("h10")}, {"h15", pde_h_formula("h15")}},
                    {"h_rule", "weight", "level", "dx", "h", "N", "N_omega", "nnz", "storage",
                     "rel_error", "cg_iterations", "rel_residual", "assembly_s", "solve_s",
                     "seconds"},
@@ -92,8 +87,8 @@ int body(int argc, char** argv) {
     double umax = 0;
     for (std::size_t i = 0; i < p.size(); ++i)
       if (p.in_omega[i]) umax = std::max(umax, std::fabs(g[i]));
-    for (const auto& rule : kHRules) {
-      const double h = influence_radius(rule, dx);
+    for (const auto& rule : pde_h_rules()) {
+      const double h = pde_h(rule, dx);
       for (const auto& wname : kWeights) {
         if (cache.has({rule, wname, fmt(k)})) continue;
         const auto t0 = std::chrono::steady_clock::now();

@@ -16,6 +16,12 @@
 #include "gpm/provenance.hpp"
 #include "gpm/domain.hpp"
 #include "gpm/error.hpp"
+#include "gpm/influence_radius.hpp"
+#include "gpm/laplacian_matrix.hpp"
+#include "gpm/poisson.hpp"
+#include "gpm/poisson_probes.hpp"
+#include "gpm/study.hpp"
+#include "gpm/testfunctions.hpp"
 #include "gpm/truncation.hpp"
 #include "gpm/tsv.hpp"
 #include "gpm/voronoi.hpp"
@@ -147,6 +153,46 @@ int cmd_trunc(int argc, char** argv) {
   return 0;
 }
 
+// One discrete Poisson problem of thesis §4.2 (u = sin 2π(x+y), uniform volumes), with the
+// error, where it sits, and the solver's counts: the ad hoc run behind Table 4.4.
+int cmd_poisson(int argc, char** argv) {
+  Args a("gpm poisson", "One discrete Poisson problem (thesis (2.2), u = sin 2pi(x+y), V_i = |Omega_H|/N):\n"
+                        "relative l-inf error over Omega, where the maximum sits, CG counts.");
+  a.opt("dx", "2^-6", "grid spacing")
+      .opt("weight", "quartic_polynomial", "registry weight (gpm weights lists them)")
+      .opt("h", "", "influence radius (or --h-rule)")
+      .opt("h-rule", "h10", "h10 = (2.6^4 2^-10 dx)^(1/4) as printed, h15 = (2.6^4 2^-15 dx)^(1/4)")
+      .opt("seed", "1", "jitter seed")
+      .opt("jitter", "0.25", "jitter amplitude in units of dx (0: the plain grid)")
+      .opt("tol", "1e-10", "CG relative residual")
+      .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free");
+  a.parse(argc, argv, 2);
+  const double dx = a.positive("dx");
+  const double h = a.str("h").empty() ? pde_h(a.str("h-rule"), dx) : a.positive("h");
+  const double tol = a.positive("tol");
+  const double jitter = a.num("jitter");
+  if (jitter < 0 || jitter >= 0.5) throw InputError("--jitter: " + a.str("jitter") + " is not in [0, 0.5)");
+  const long long seed = a.integer("seed");
+  if (seed < 0) throw InputError("--seed: " + a.str("seed") + " is negative");
+  const Particles p = jittered_grid(dx, static_cast<uint64_t>(seed), jitter);
+  const auto V = uniform_volumes(p);
+  const auto d = poisson_data(p, test_function("sin2pi"));
+  const DiscreteLaplacian L(p, V, weight(a.str("weight")), h, parse_laplacian_storage(a.str("storage")));
+  const PoissonResult r = solve_poisson(p, L, d.f, d.g, tol);
+  const ErrorLocation e = locate_error(p, d.g, r.U, h);
+  TsvTable t = header_from(a, "poisson");
+  t.set("h_used", h);
+  t.set("rel_error_inner", "over the particles at least h from the boundary of Omega");
+  t.columns = {"dx", "h", "h_over_H", "N", "N_omega", "nnz", "rel_error", "max_x", "max_y",
+               "max_distance_over_h", "rel_error_inner", "cg_iterations", "rel_residual", "solve_s"};
+  t.add_row({fmt(dx), fmt(h), fmt(h / Domain{}.H), fmt(p.size()), fmt(L.n_unknowns()),
+             fmt(static_cast<long long>(L.nnz())), fmt(e.rel_error), fmt(e.x), fmt(e.y),
+             fmt(e.distance_to_boundary / h), fmt(e.rel_error_inner), fmt(r.cg.iterations),
+             fmt(r.cg.rel_residual), fmt(r.solve_seconds)});
+  print(t);
+  return 0;
+}
+
 // The fingerprint of the code that decides each named program's numbers, as the result
 // store's rows carry it (provenance.hpp): a stored row is current when they agree.
 int cmd_fingerprint(int argc, char** argv) {
@@ -172,6 +218,7 @@ int dispatch(int argc, char** argv) {
       "  particles   a jittered-grid distribution\n"
       "  voronoi     Voronoi cell areas, covering distances and r_c\n"
       "  trunc       relative l-infinity error of an operator\n"
+      "  poisson     one discrete Poisson problem: error, where it sits, CG counts\n"
       "  fingerprint the code fingerprint of programs (result-store rows)\n";
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::cout << usage;
@@ -182,9 +229,10 @@ int dispatch(int argc, char** argv) {
   if (sub == "particles") return cmd_particles(argc, argv);
   if (sub == "voronoi") return cmd_voronoi(argc, argv);
   if (sub == "trunc") return cmd_trunc(argc, argv);
+  if (sub == "poisson") return cmd_poisson(argc, argv);
   if (sub == "fingerprint") return cmd_fingerprint(argc, argv);
   throw InputError("unknown subcommand '" + sub +
-                   "'; valid: weights, particles, voronoi, trunc, fingerprint");
+                   "'; valid: weights, particles, voronoi, trunc, poisson, fingerprint");
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "gpm/poisson.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -63,6 +64,24 @@ PoissonResult solve_poisson(const Particles& p, const DiscreteLaplacian& L,
     res.U[omega[k]] = x[k];
   }
   return res;
+}
+
+ErrorLocation locate_error(const Particles& p, const std::vector<double>& exact,
+                           const std::vector<double>& U, double margin) {
+  ErrorLocation e;
+  double umax = 0, err = 0, inner = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!p.in_omega[i]) continue;
+    const double d = std::min({p.x[i], 1 - p.x[i], p.y[i], 1 - p.y[i]});  // to ∂Ω, Ω = (0,1)²
+    const double ei = std::fabs(exact[i] - U[i]);
+    umax = std::max(umax, std::fabs(exact[i]));
+    if (ei > err) err = ei, e.argmax = i, e.x = p.x[i], e.y = p.y[i], e.distance_to_boundary = d;
+    if (d >= margin) inner = std::max(inner, ei);
+  }
+  if (!(umax > 0)) throw InputError("the exact solution vanishes on Omega: relative error undefined");
+  e.rel_error = err / umax;
+  e.rel_error_inner = inner / umax;
+  return e;
 }
 
 }  // namespace gpm

@@ -44,4 +44,17 @@ PoissonResult solve_poisson(const Particles& p, const DiscreteLaplacian& L,
                             double tol = 1e-10, int max_iter = 20000,
                             bool check_connectivity = true);
 
+// Where the error of a solved problem sits: the relative ℓ∞(Ω) error max|u − U| / max|u|
+// over the particles in Ω, the particle attaining it and its distance from ∂Ω, and the same
+// relative error over the particles at least `margin` from ∂Ω (e.g. margin = h: targets whose
+// whole stencil lies in Ω, away from the boundary layer).
+struct ErrorLocation {
+  double rel_error = 0;
+  std::size_t argmax = 0;
+  double x = 0, y = 0, distance_to_boundary = 0;
+  double rel_error_inner = 0;  // over particles with distance ≥ margin (0 if there are none)
+};
+ErrorLocation locate_error(const Particles& p, const std::vector<double>& exact,
+                           const std::vector<double>& U, double margin);
+
 }  // namespace gpm

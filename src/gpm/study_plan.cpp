@@ -81,10 +81,6 @@ const std::vector<double> kImotoOrders = {1, 3, 5};
 const std::vector<std::string> kPdeWeights = {"quartic_polynomial", "piecewise_cubic_polynomial",
                                               "piecewise_quintic_polynomial"};
 const std::vector<int> kPoissonQuick = {5, 6, 7}, kPoissonPaper = {5, 6, 7, 8, 9};
-double pde_h(const std::string& rule, double dx) {  // h10 / h15
-  const double c = rule == "h10" ? std::pow(2.0, -10) : std::pow(2.0, -15);
-  return std::pow(std::pow(2.6, 4) * c * dx, 0.25);
-}
 struct HeatPlan {
   std::string table;  // "4.5"
   double c;           // Δt₀ = c·h^p

@@ -20,22 +20,6 @@
 
 namespace gpm {
 
-std::string h_reading_name(HReading r) { return r == HReading::printed ? "printed" : "scaled"; }
-
-HReading parse_h_reading(const std::string& s) {
-  if (s == "printed") return HReading::printed;
-  if (s == "scaled") return HReading::scaled;
-  throw InputError("unknown h reading '" + s + "'; valid: printed, scaled");
-}
-
-double thesis_h(HReading r, int c, int p, double dx) {
-  require_positive(dx, "dx");
-  if (p <= 0 || c <= 0) throw InputError("thesis_h: powers c and p must be positive");
-  if (r == HReading::printed)
-    return std::pow(std::pow(3.1, c) * std::ldexp(1.0, -10) * dx, 1.0 / p);
-  return 3.1 * std::pow(2.0, 5.0 / p - 5.0) * std::pow(dx, 1.0 / p);
-}
-
 const std::vector<ThesisCase>& thesis_cases() {
   static const std::vector<ThesisCase> c = {{"case1", "quartic"}, {"case2", "sin2pi"}};
   return c;

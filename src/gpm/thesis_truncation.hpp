@@ -3,27 +3,16 @@
 // measures every weight × operator × test function of a table in one fused kernel pass per
 // (h reading, volume choice, level).
 //
-// Which h?  The thesis prints h = (3.1^c · 2^-10 · Δx)^(1/p) with (c, p) = (3, 3) for
-// Table 4.1, (3, 5) for Table 4.2 and (4, 4) for Table 4.3.  For p = 3 this is
-// h = 3.1 · 2^-5 at Δx = 2^-5.  For p = 4, 5 the same 2^-10 gives h > H = 0.1 on the coarse
-// levels (the thesis itself requires 0 < h < H).  The "scaled" reading keeps h(2^-5) = 3.1·2^-5
-// for every power, like imoto's h_N = 2.6 · 2^(5/m − 5) Δx^(1/m):
-//     h = 3.1 · 2^(5/p − 5) · Δx^(1/p)   (= (3.1^p · 2^(−5(p−1)) · Δx)^(1/p)),
-// which coincides with the printed formula when c = p = 3.
+// The two readings of h (printed, scaled) are defined in influence_radius.hpp.
 #pragma once
 #include <string>
 #include <vector>
 
+#include "gpm/influence_radius.hpp"
 #include "gpm/study.hpp"
 
 namespace gpm {
 
-enum class HReading { printed, scaled };
-std::string h_reading_name(HReading r);
-HReading parse_h_reading(const std::string& s);  // InputError listing the valid names
-
-// The influence radius of the thesis' Chapter 4.1 for Δx in the given reading.
-double thesis_h(HReading r, int c, int p, double dx);
 
 // The thesis' two test functions: Case 1 (quartic) and Case 2 (sin 2π(x+y)).
 struct ThesisCase {

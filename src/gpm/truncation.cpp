@@ -32,12 +32,6 @@ std::string operator_name(Operator op) {
 
 std::string volumes_name(Volumes v) { return v == Volumes::uniform ? "uniform" : "voronoi"; }
 
-double imoto_h(double m, double dx) {
-  require_positive(m, "regular order m");
-  require_positive(dx, "dx");
-  return 2.6 * std::pow(2.0, 5.0 / m - 5.0) * std::pow(dx, 1.0 / m);
-}
-
 TruncationResult truncation_error(const TruncationSetting& s) {
   const auto t0 = std::chrono::steady_clock::now();
   require_positive(s.h, "h");

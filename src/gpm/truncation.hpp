@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <string>
 
+#include "gpm/influence_radius.hpp"
+
 namespace gpm {
 
 enum class Operator { interp, grad, lap };
@@ -20,8 +22,6 @@ Volumes parse_volumes(const std::string& s);
 std::string operator_name(Operator op);
 std::string volumes_name(Volumes v);
 
-// imoto §5: h_N = 2.6 · 2^(5/m − 5) · Δx^(1/m)  (h = 2.6·2^-5 at Δx = 2^-5 for every m).
-double imoto_h(double m, double dx);
 
 struct TruncationSetting {
   Operator op = Operator::interp;

@@ -19,6 +19,7 @@
 #include "gpm/domain.hpp"
 #include "gpm/error.hpp"
 #include "gpm/heat.hpp"
+#include "gpm/influence_radius.hpp"
 #include "gpm/laplacian_matrix.hpp"
 #include "gpm/norms.hpp"
 #include "gpm/poisson.hpp"
@@ -30,7 +31,7 @@ using namespace gpm;
 
 namespace {
 
-double printed_h(int k) { return std::pow(std::pow(2.6, 4) * std::pow(2.0, -10 - k), 0.25); }
+double printed_h(int k) { return pde_h("h10", std::ldexp(1.0, -k)); }
 
 struct PoissonRun {
   double h, err;

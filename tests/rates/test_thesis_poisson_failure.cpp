@@ -36,6 +36,7 @@
 #include "gpm/connectivity.hpp"
 #include "gpm/domain.hpp"
 #include "gpm/error.hpp"
+#include "gpm/influence_radius.hpp"
 #include "gpm/laplacian_matrix.hpp"
 #include "gpm/poisson.hpp"
 #include "gpm/poisson_probes.hpp"
@@ -49,8 +50,8 @@ namespace {
 
 const double kDx = 1.0 / 32;  // Δx = 2^-5, N = 1,521
 
-double h15(double dx) { return std::pow(std::pow(2.6, 4) * std::pow(2.0, -15) * dx, 0.25); }
-double h10(double dx) { return std::pow(std::pow(2.6, 4) * std::pow(2.0, -10) * dx, 0.25); }
+double h15(double dx) { return pde_h("h15", dx); }
+double h10(double dx) { return pde_h("h10", dx); }
 
 // The program's boundary probe: f = 0, g̃ = −1 at the particle outside Ω that Ω sees most
 // negatively (poisson_probes.hpp), 0 elsewhere.  The maximum principle promises U ≤ 0 in Ω.

@@ -20,6 +20,7 @@
 
 #include "gpm/domain.hpp"
 #include "gpm/heat.hpp"
+#include "gpm/influence_radius.hpp"
 #include "gpm/laplacian_matrix.hpp"
 #include "gpm/stability.hpp"
 #include "gpm/study.hpp"
@@ -30,7 +31,7 @@ using namespace gpm;
 namespace {
 
 double thesis_h(int k, int exponent) {
-  return std::pow(std::pow(2.6, 4) * std::ldexp(1.0, exponent - k), 0.25);
+  return pde_h(exponent == -10 ? "h10" : "h15", std::ldexp(1.0, -k));
 }
 
 const char* kHeatWeights[] = {"quartic_polynomial", "piecewise_cubic_polynomial",

@@ -9,6 +9,7 @@
 
 #include "gpm/cost_model.hpp"
 #include "gpm/domain.hpp"
+#include "gpm/influence_radius.hpp"
 #include "gpm/kernel.hpp"
 #include "gpm/study.hpp"
 #include "gpm/thesis_truncation.hpp"
@@ -23,7 +24,7 @@ double counted_pairs(const Particles& p, double h) {
   const FusedKernel k(p, V, h, {{weight("Pi2"), kInterp}});
   return static_cast<double>(k.count_pairs(omega_targets(p)).accepted);
 }
-double h10(double dx) { return std::pow(std::pow(2.6, 4) * std::pow(2.0, -10) * dx, 0.25); }
+double h10(double dx) { return pde_h("h10", dx); }
 }  // namespace
 
 TEST_CASE("mean disc area: pi h^2 inside, boundary cut above H", "[cost_model]") {

@@ -1,0 +1,31 @@
+// The influence-radius rules (influence_radius.hpp), each checked against a value the
+// documents state or imply.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "gpm/error.hpp"
+#include "gpm/influence_radius.hpp"
+
+using namespace gpm;
+
+TEST_CASE("influence radius rules", "[unit][radius]") {
+  const double dx5 = std::ldexp(1.0, -5);
+  // imoto §5: h = 2.6·2^-5 at Δx = 2^-5 for every m.
+  for (double m : {1.0, 3.0, 5.0}) CHECK(imoto_h(m, dx5) == Approx(2.6 / 32).epsilon(1e-14));
+  // thesis §4.1: printed and scaled coincide for p = 3; scaled gives 3.1·2^-5 at 2^-5.
+  CHECK(thesis_h(HReading::printed, 3, 3, 1e-3) ==
+        Approx(thesis_h(HReading::scaled, 3, 3, 1e-3)).epsilon(1e-14));
+  CHECK(thesis_h(HReading::scaled, 4, 4, dx5) == Approx(3.1 / 32).epsilon(1e-14));
+  // thesis §4.2–4.3: h15 = 2.6·2^-5 at 2^-5; h10 = 2^(5/4)·h15 at every Δx (h10 > H = 0.1
+  // at 2^-5 … 2^-8, below it from 2^-9 on).
+  CHECK(pde_h("h15", dx5) == Approx(2.6 / 32).epsilon(1e-14));
+  for (int k = 5; k <= 12; ++k) {
+    const double dx = std::ldexp(1.0, -k);
+    CHECK(pde_h("h10", dx) == Approx(std::pow(2.0, 1.25) * pde_h("h15", dx)).epsilon(1e-14));
+    CHECK((pde_h("h10", dx) > 0.1) == (k <= 8));
+  }
+  CHECK(pde_h_formula("h10") == "(2.6^4 2^-10 dx)^(1/4)");
+  REQUIRE_THROWS_AS(pde_h("h12", 1e-3), InputError);
+  REQUIRE_THROWS_AS(pde_h("h10", -1), InputError);
+}
