@@ -91,6 +91,8 @@ int body(int argc, char** argv) {
       .opt("out", "", "data file (required)")
       .opt("rates-input", "", "data file of the series that never blew up (for rate_table)")
       .opt("seed", "1", "jitter seed")
+      .opt("dt-rule", "fit", "fit: dt = T/K, K = ceil(T/dt0) (the thesis' dt = T/K); exact: dt = dt0,\n"
+                             "  K = ceil(T/dt0) steps (last step at K dt0 >= T)")
       .opt("h-rule", "h10", "h10: h = (2.6^4 2^-10 dx)^(1/4) as printed; h15: (2.6^4 2^-15 dx)^(1/4)")
       .opt("tol", "1e-10", "CG relative residual per implicit step")
       .opt("blowup", "1e6", "stop when ||U^k|| > blowup * ||U^0|| (l2(Omega_H))")
@@ -112,6 +114,10 @@ int body(int argc, char** argv) {
   hs.kappa = kKappa;
   hs.T = kT;
   hs.tol = a.positive("tol");
+  const std::string dt_rule = a.str("dt-rule");
+  if (dt_rule != "fit" && dt_rule != "exact")
+    throw InputError("--dt-rule: '" + dt_rule + "' is not fit or exact");
+  hs.fit_T = dt_rule == "fit";
   hs.blowup_factor = a.positive("blowup");
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
@@ -122,7 +128,8 @@ int body(int argc, char** argv) {
       a.str("out"),
       {{"program", "thesis_heat"}, {"table", ts.table}, {"profile", profile_name(prof)},
        {"seed", fmt(static_cast<long long>(seed))}, {"kappa", fmt(kKappa)}, {"T", fmt(kT)},
-       {"dt_nominal", ts.dt_rule}, {"steps", "K = ceil(T/dt_nominal), dt = T/K"},
+       {"dt_nominal", ts.dt_rule}, {"steps", hs.fit_T ? "K = ceil(T/dt_nominal), dt = T/K"
+                           : "dt = dt_nominal, K = ceil(T/dt_nominal) (last step at K dt >= T)"},
        {"tol", fmt(hs.tol)}, {"blowup", fmt(hs.blowup_factor)},
        {"h_rule", h_rule},
        {"h", pde_h_formula(h_rule)}, {"volumes", "uniform |Omega_H|/N"},

@@ -28,7 +28,7 @@ HeatResult solve_heat(const Particles& p, const DiscreteLaplacian& L, const Heat
   require_positive(s.kappa, "kappa");
   HeatResult res;
   res.K = heat_steps(s.T, s.dt_nominal);
-  res.dt = s.T / static_cast<double>(res.K);
+  res.dt = s.fit_T ? s.T / static_cast<double>(res.K) : s.dt_nominal;
   const double dt = res.dt, kdt = s.kappa * dt, th = s.theta;
   const double lambda = 2 * s.kappa * std::numbers::pi * std::numbers::pi;
   const auto& omega = L.omega();
