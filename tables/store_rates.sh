@@ -59,9 +59,10 @@ if [ -f "$store/thesis_table4_4.tsv" ]; then
   rate thesis_table4_4 all "$store/thesis_table4_4.tsv" "$pub/thesis_table4_4_long.tsv" h_rule,weight
 fi
 for t in 4_5 4_6 4_7; do
-  for r in h10 h15; do
+  for r in h10 h15 h10_dtexact; do
     f=$store/thesis_table$t.tsv
     if [ $r = h15 ]; then f=$store/thesis_table${t}_h15.tsv; fi
+    if [ $r = h10_dtexact ]; then f=$store/thesis_table${t}_dtexact.tsv; fi
     [ -f "$f" ] || continue
     finite "$f" > "$tmp/finite.tsv"
     rate "thesis_table$t" "$r" "$tmp/finite.tsv" "$pub/thesis_table${t}_long.tsv" weight,theta
@@ -87,8 +88,9 @@ fi
       !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
       { k = $c[keys[1]]; for (j=2;j<=nk;j++) k = k " " $c[keys[j]];
         setup = s ~ /uniform/ ? "beyond the document (uniform volumes)" : "document"
+        sl = s ~ /dtexact/ ? s " (dt = dt0 exactly)" : s
         status = setup == "document" ? $c["status"] : "no published value for this set-up"
-        printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", t, s, setup, k, $c["published"], $c["reproduced"], $c["levels"], status }' "$r"
+        printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", t, sl, setup, k, $c["published"], $c["reproduced"], $c["levels"], status }' "$r"
   done
 } > "$out.tmp"
 mv "$out.tmp" "$out"
