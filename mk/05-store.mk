@@ -10,3 +10,11 @@ $(DATA)/store_rates.tsv: tables/store_rates.sh $(STORE_FILES) $(BUILD)/rate_tabl
 	@mkdir -p $(DATA)
 	bash $< $(BUILD) $(STORE) $@ $(DATA)/store_summary.tsv $(DATA)/store_score.tsv
 $(DATA)/store_summary.tsv $(DATA)/store_score.tsv: $(DATA)/store_rates.tsv ;
+
+# The documents' open set-up questions, with the evidence the stored runs give (every number
+# read from the store by tables/decisions.sh).
+DATAFILES += $(DATA)/decisions.tsv
+$(DATA)/decisions.tsv: tables/decisions.sh $(STORE_FILES) $(BUILD)/rate_table \
+    tables/published/thesis_table4_7_long.tsv
+	@mkdir -p $(DATA)
+	bash $< $(BUILD) $(STORE) $@
