@@ -10,15 +10,16 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "../temp_dir.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
 struct TempReport {
-  fs::path root;
+  TempDir tmp{"gpm_verify_"};
+  fs::path root = tmp.dir;
   TempReport() {
-    root = fs::temp_directory_path() / ("gpm_verify_" + std::to_string(::getpid()));
-    fs::remove_all(root);
     fs::create_directories(root / "paper");
     fs::create_directories(root / "figures/out");
     fs::create_directories(root / "data");
@@ -28,7 +29,6 @@ struct TempReport {
     std::ofstream(root / "figures/out/a.svg") << "<svg><path d='M0 0L1 1'/></svg>\n";
     std::ofstream(root / "data/t.tsv") << "# program = x\na\n1\n";
   }
-  ~TempReport() { fs::remove_all(root); }
   // Exit status of the script on this directory; its messages go to `log`.
   int verify() const {
     const std::string cmd = std::string("sh ") + GPM_SOURCE_DIR + "/tests/report/verify_report.sh " +

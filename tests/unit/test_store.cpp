@@ -13,22 +13,12 @@
 #include "gpm/provenance.hpp"
 #include "gpm/store.hpp"
 #include "gpm/tsv.hpp"
+#include "../temp_dir.hpp"
 
 using namespace gpm;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct TempDir {
-  fs::path dir;
-  TempDir() {
-    dir = fs::temp_directory_path() / ("gpm_store_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~TempDir() { fs::remove_all(dir); }
-  std::string file(const std::string& name) const { return (dir / name).string(); }
-};
 
 const std::vector<std::pair<std::string, std::string>> kParams = {{"program", "store_test"},
                                                                   {"seed", "1"}};
@@ -54,7 +44,7 @@ std::vector<std::vector<std::string>> rows_of(const std::string& path) {
 }  // namespace
 
 TEST_CASE("store: rows carry the code fingerprint and are reused only under it", "[unit][store]") {
-  TempDir t;
+  TempDir t("gpm_store_");
   const std::string f = t.file("s.tsv");
   run_study(f, CacheMode::run);
   const TsvTable tab = TsvTable::load(f);
@@ -84,7 +74,7 @@ TEST_CASE("store: rows carry the code fingerprint and are reused only under it",
 }
 
 TEST_CASE("store: partial and malformed units are recomputed, not reused", "[unit][store]") {
-  TempDir t;
+  TempDir t("gpm_store_");
   const std::string f = t.file("s.tsv");
   run_study(f, CacheMode::run);
   // Drop one row of level 5 and cut a cell from a row of level 6.
@@ -117,7 +107,7 @@ TEST_CASE("store: partial and malformed units are recomputed, not reused", "[uni
 }
 
 TEST_CASE("store: a second writer on one file is refused", "[unit][store]") {
-  TempDir t;
+  TempDir t("gpm_store_");
   const std::string f = t.file("s.tsv");
   LevelCache first(f, kParams, kColumns, 1);
   REQUIRE_THROWS_AS(LevelCache(f, kParams, kColumns, 1), InputError);
@@ -125,7 +115,7 @@ TEST_CASE("store: a second writer on one file is refused", "[unit][store]") {
 }
 
 TEST_CASE("store: --out must be a regular file, and outputs distinct", "[unit][store]") {
-  TempDir t;
+  TempDir t("gpm_store_");
   REQUIRE_THROWS_AS(LevelCache(t.dir.string(), kParams, kColumns, 1), InputError);
   REQUIRE_THROWS_AS(require_distinct_paths({{"--out", t.file("a.tsv")},
                                             {"--cost", (t.dir / "." / "a.tsv").string()}}),
@@ -136,7 +126,7 @@ TEST_CASE("store: --out must be a regular file, and outputs distinct", "[unit][s
 
 TEST_CASE("store: --verify compares and writes nothing; --recheck re-stamps only on agreement",
           "[unit][store]") {
-  TempDir t;
+  TempDir t("gpm_store_");
   const std::string f = t.file("s.tsv");
   run_study(f, CacheMode::run);
   const auto before = fs::last_write_time(f);
@@ -166,7 +156,7 @@ TEST_CASE("store: --verify compares and writes nothing; --recheck re-stamps only
 }
 
 TEST_CASE("store: rows of a file without provenance columns need a recheck", "[unit][store]") {
-  TempDir t;
+  TempDir t("gpm_store_");
   const std::string f = t.file("s.tsv");
   TsvTable old;
   for (auto& [k, v] : kParams) old.set(k, v);
@@ -193,7 +183,7 @@ TEST_CASE("store: rows of a file without provenance columns need a recheck", "[u
 
 TEST_CASE("store: a recheck against the current code's own rows carries nothing over",
           "[unit][store]") {
-  TempDir t;
+  TempDir t("gpm_store_");
   const std::string f = t.file("s.tsv");
   run_study(f, CacheMode::run);
   // Level 6 from older code, level 5 current: re-checking level 5 compares current rows with
