@@ -110,6 +110,7 @@ LevelCache::LevelCache(std::string path, std::vector<std::pair<std::string, std:
     }
   }
   for (auto& [k, v] : params) table_.set(k, v);
+  table_.source = path_;  // for messages naming a malformed cell
   table_.columns = columns;
   for (auto& c : row_provenance_columns()) table_.columns.push_back(c);
   load(params, columns);
