@@ -137,11 +137,12 @@ int body(int argc, char** argv) {
       .opt("limit", "data/bench/limit.tsv",
            "bench_limit's output, for the fraction of the limit (absent file: no fractions)")
       .opt("profile", "bench", "label recorded as the file's profile (the report's rules pass theirs)")
-      .opt("out", "data/bench/kernel.tsv", "TSV output");
+      .output("out", "data/bench/kernel.tsv", "TSV output");
   args.parse(argc, argv);
   const double dx = args.positive("dx"), h = args.positive("h");
-  const long long repeats = args.integer("repeats");
-  if (repeats < 1) throw gpm::InputError("--repeats must be >= 1");
+  const long long repeats = args.integer("repeats", 1, 1000000);
+  const uint64_t seed = args.seed();
+  const int cells_per_h = static_cast<int>(args.integer("cells-per-h", 1, 64));
   std::vector<int> threads;
   for (double t : args.nums("threads")) {
     if (t < 1 || t != std::floor(t)) throw gpm::InputError("--threads: positive integers");
@@ -160,7 +161,7 @@ int body(int argc, char** argv) {
   const std::string w1 = args.str("weight");
   gpm::weight(w1);  // validates the name
 
-  const gpm::Particles p = gpm::jittered_grid(dx, static_cast<uint64_t>(args.integer("seed")));
+  const gpm::Particles p = gpm::jittered_grid(dx, seed);
   const std::vector<double> V(p.size(), gpm::Domain{}.area_H() / static_cast<double>(p.size()));
   const auto& f = gpm::test_function("sin2pi");
   std::vector<double> v(p.size());
@@ -241,7 +242,7 @@ int body(int argc, char** argv) {
       const int nt = threads[ti];
       gpm::KernelOptions opt;
       opt.threads = nt;
-      opt.cells_per_h = static_cast<int>(args.integer("cells-per-h"));
+      opt.cells_per_h = cells_per_h;
       opt.fast_rsqrt = args.has("fast-rsqrt");
       opt.fuse_single = !args.has("no-fuse-single");
       std::vector<std::vector<gpm::KernelWeight>> passes;  // one kernel call each

@@ -75,14 +75,14 @@ int body(int argc, char** argv) {
       .opt("max-gb", "6", "largest assembled matrix to build (GB); larger: matrix-free only")
       .opt("limit", "data/bench/limit.tsv", "bench_limit's output (the bounds)")
       .opt("profile", "bench", "label recorded as the file's profile (the report's rules pass theirs)")
-      .opt("out", "data/bench/laplacian.tsv", "TSV output");
+      .output("out", "data/bench/laplacian.tsv", "TSV output");
   args.parse(argc, argv);
   const auto t_start = Clock::now();
   const std::vector<double> dxs = args.nums("dx");
   for (double dx : dxs)
     if (!(dx > 0) || dx > 0.25) throw gpm::InputError("--dx: values in (0, 1/4], got " + gpm::fmt(dx));
-  const long long repeats = args.integer("repeats");
-  if (repeats < 1) throw gpm::InputError("--repeats must be >= 1");
+  const long long repeats = args.integer("repeats", 1, 1000000);
+  const uint64_t seed = args.seed();
   std::vector<int> threads;
   for (double t : args.nums("threads")) {
     if (t < 1 || t != std::floor(t)) throw gpm::InputError("--threads: positive integers");
@@ -115,7 +115,7 @@ int body(int argc, char** argv) {
   // One loop over the resolutions: build both forms, time products per thread count.
   for (double dx : dxs) {
     const double h = gpm::pde_h("h10", dx);
-    const gpm::Particles p = gpm::jittered_grid(dx, static_cast<uint64_t>(args.integer("seed")));
+    const gpm::Particles p = gpm::jittered_grid(dx, seed);
     const std::vector<double> V(p.size(), gpm::Domain{}.area_H() / static_cast<double>(p.size()));
 
     // The matrix-free form first (cheap), and its candidate count (the kernel's lanes).

@@ -267,11 +267,10 @@ int body(int argc, char** argv) {
       .opt("mixes", "Pi2:PGL,quartic_polynomial:PGL,quartic_polynomial:L",
            "kernel mixes weight:ops (ops PGL = Π+∇+Δ, L = ∇/Δ only)")
       .opt("profile", "bench", "label recorded as the file's profile (the report's rules pass theirs)")
-      .opt("out", "data/bench/limit.tsv", "TSV output");
+      .output("out", "data/bench/limit.tsv", "TSV output");
   args.parse(argc, argv);
   const auto t_start = Clock::now();
-  const long long repeats = args.integer("repeats");
-  if (repeats < 1) throw gpm::InputError("--repeats must be >= 1");
+  const long long repeats = args.integer("repeats", 1, 1000000);
   const double lanes = args.positive("lanes");
   const double mib = args.positive("mib");
   std::vector<int> threads;

@@ -29,9 +29,9 @@ class LimitTable {
     const int ct = t_.column("test"), cn = t_.column("threads"), cr = t_.column("rate"),
               cc = t_.column("rate_cpu");
     if (ct < 0 || cn < 0 || cr < 0) return {};
-    for (const auto& row : t_.rows)
-      if (row[ct] == test && row[cn] == std::to_string(threads))
-        return {std::stod(row[cr]), cc >= 0 && !row[cc].empty() ? std::stod(row[cc]) : NAN};
+    for (std::size_t i = 0; i < t_.rows.size(); ++i)
+      if (t_.text(i, ct) == test && t_.text(i, cn) == std::to_string(threads))
+        return {t_.number(i, cr), cc >= 0 && !t_.text(i, cc).empty() ? t_.number(i, cc) : NAN};
     return {};
   }
 

@@ -57,12 +57,10 @@ int col(const TsvTable& t, const std::string& name, const std::string& file) {
   return c;
 }
 
-double number(const std::string& s, const std::string& where) {
-  if (s == "NA" || s == "nan" || s == "inf") return std::numeric_limits<double>::quiet_NaN();
-  char* end = nullptr;
-  const double v = std::strtod(s.c_str(), &end);
-  if (end == s.c_str() || *end) throw InputError("not a number '" + s + "' in " + where);
-  return v;
+// A cell as a number; "NA" (not recorded) as NaN.  Anything else that is no number is an
+// error naming file, row and column (TsvTable::number).
+double number(const TsvTable& t, std::size_t row, int col) {
+  return t.text(row, col) == "NA" ? std::numeric_limits<double>::quiet_NaN() : t.number(row, col);
 }
 
 // A configuration column: a data column, or `meta:key` — a `# key = value` header line of
@@ -138,8 +136,8 @@ int body(int argc, char** argv) {
   a.opt("time-note", "", "what the time of a row measures (goes into the header)");
   a.opt("pairs-note", "", "what the pair count of a row counts (goes into the header)");
   a.opt("targets", "1e-2,1e-3,1e-4", "target relative errors of the reading");
-  a.opt("out", "", "atlas TSV");
-  a.opt("reading", "", "reading TSV (cheapest configuration per task and target)");
+  a.output("out", "", "atlas TSV");
+  a.output("reading", "", "reading TSV (cheapest configuration per task and target)");
   a.parse(argc, argv);
   for (const char* req : {"data", "study", "config", "out", "reading"})
     if (a.str(req).empty()) throw InputError(std::string("--") + req + " is required");
@@ -176,7 +174,8 @@ int body(int argc, char** argv) {
     const int pc = a.str("pairs").empty() ? -1 : col(t, a.str("pairs"), file);
     std::vector<int> fc;
     for (auto& [c, v] : conds) fc.push_back(col(t, c, file));
-    for (auto& r : t.rows) {
+    for (std::size_t i = 0; i < t.rows.size(); ++i) {
+      const auto& r = t.rows[i];
       bool keep = true;
       for (std::size_t k = 0; k < conds.size(); ++k) keep = keep && r[fc[k]] == conds[k].second;
       if (!keep) continue;
@@ -186,10 +185,10 @@ int body(int argc, char** argv) {
       p.task = label(task_f, p.task_vals);
       p.config = label(conf_f, p.config_vals);
       p.level = r[lc];
-      p.err = number(r[ec], file);
+      p.err = number(t, i, ec);
       p.time = 0;
-      for (int c : tc) p.time += number(r[c], file);
-      p.pairs = pc < 0 ? std::numeric_limits<double>::quiet_NaN() : number(r[pc], file);
+      for (int c : tc) p.time += number(t, i, c);
+      p.pairs = pc < 0 ? std::numeric_limits<double>::quiet_NaN() : number(t, i, pc);
       if (!std::isfinite(p.err) || !std::isfinite(p.time)) {
         ++dropped;
         continue;

@@ -34,18 +34,6 @@ namespace {
 const std::vector<int> kQuickLevels = {5, 6, 7, 8, 9};
 const std::vector<int> kPaperLevels = {5, 6, 7, 8, 9, 10, 11, 12};
 
-long long parse_int(const std::string& text, const std::string& what, long long lo,
-                    long long hi) {
-  char* end = nullptr;
-  const long long v = std::strtoll(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0')
-    throw InputError(what + ": cannot parse '" + text + "' as an integer");
-  if (v < lo || v > hi)
-    throw InputError(what + ": " + text + " is out of range [" + std::to_string(lo) + ", " +
-                     std::to_string(hi) + "]");
-  return v;
-}
-
 // Resets the peak-RSS mark (VmHWM) to the current RSS so that the next reading is the
 // peak of the next computation only (Linux ≥ 4.0).  Returns false where unsupported.
 bool reset_peak_rss() {
@@ -86,7 +74,7 @@ int body(int argc, char** argv) {
   Args args("core_voronoi",
             "Voronoi cells of Omega_H for the plain and the jittered grid: area sum, covering\n"
             "radius r_c vs the grid formula and the documents' claims, time and peak memory.");
-  args.opt("out", "", "output TSV file (required)")
+  args.output("out", "", "output TSV file (required)")
       .opt("levels", "", "comma-separated levels k, dx = 2^-k, 2..13 (default: by profile)")
       .opt("seeds", "1,2,3", "comma-separated jitter seeds (non-negative integers)")
       .opt("profile", "quick",
@@ -96,10 +84,7 @@ int body(int argc, char** argv) {
   if (out.empty()) throw InputError("--out PATH is required (see --help)");
   const Profile profile = parse_profile(args.str("profile"));
   const std::vector<int> levels = levels_option(args, profile, kQuickLevels, kPaperLevels, 2, 13);
-  std::vector<uint64_t> seeds;
-  for (auto& s : args.list("seeds"))
-    seeds.push_back(static_cast<uint64_t>(parse_int(s, "--seeds", 0, (1LL << 62))));
-  if (seeds.empty()) throw InputError("--seeds: no seed given");
+  const std::vector<uint64_t> seeds = args.seeds("seeds");
 
   const Domain dom;
   const double amplitude = 0.25;

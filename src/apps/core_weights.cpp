@@ -90,8 +90,8 @@ int body(int argc, char** argv) {
                  "Computes the properties of every reference weight function (normalization,\n"
                  "order of Hypothesis 1.1, positivity, p0, regularity hypotheses) and lists\n"
                  "the printed formulas that are wrong, with the computed evidence.");
-  args.opt("out", "", "property table TSV, one row per registry weight (required)")
-      .opt("errata", "", "errata TSV, one row per wrong printed formula (optional)")
+  args.output("out", "", "property table TSV, one row per registry weight (required)")
+      .output("errata", "", "errata TSV, one row per wrong printed formula (optional)")
       .opt("profile", "quick", "run profile recorded in the header: quick or paper "
                                "(the table is the same for both)");
   args.parse(argc, argv);

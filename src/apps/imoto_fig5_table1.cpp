@@ -109,34 +109,30 @@ int body(int argc, char** argv) {
             "(weights Pi1-3, Grad1-3, Lap1-3; m = 1, 3, 5; v = sin(2pi(x+y)); V_i = |Omega_H|/N)\n"
             "per level, all nine weights in one fused pass per (level, m).  Data of Figure 5\n"
             "and Table 1.  Finished (level, m) units are cached in --out.");
-  args.opt("out", "", "output TSV file (required)")
+  args.output("out", "", "output TSV file (required)")
       .opt("profile", "quick", "quick (levels 5-10) or paper (levels 5-12)")
       .opt("levels", "", "comma-separated levels k (dx = 2^-k), 3..13; default: by profile")
       .opt("seed", "1", "jitter seed (non-negative integer)")
-      .opt("printed-out", "", "optional TSV: (Pi3) with the printed constant 5/pi")
+      .output("printed-out", "", "optional TSV: (Pi3) with the printed constant 5/pi")
       .opt("printed-max-level", "8", "finest level of the --printed-out check")
-      .opt("cost-out", "", "optional TSV: pairs and time per (level, m) of the paper profile,\n"
+      .output("cost-out", "", "optional TSV: pairs and time per (level, m) of the paper profile,\n"
                            "  measured where computed, else extrapolated at the measured rate");
   add_cache_options(args);
   args.parse(argc, argv);
   const std::string out = args.str("out");
   if (out.empty()) throw InputError("--out PATH is required (see --help)");
   const CacheMode mode = cache_mode(args);
-  require_distinct_paths({{"--out", out}, {"--printed-out", args.str("printed-out")},
-                          {"--cost-out", args.str("cost-out")}});
   const Profile profile = parse_profile(args.str("profile"));
   const std::vector<int> levels = levels_option(args, profile, kQuickLevels, kPaperLevels, 3, 13);
-  const long long seed_ll = args.integer("seed");
-  if (seed_ll < 0) throw InputError("--seed: " + std::to_string(seed_ll) + " is negative");
-  const uint64_t seed = static_cast<uint64_t>(seed_ll);
-  const long long printed_max = args.integer("printed-max-level");
+  const uint64_t seed = args.seed();
+  const long long printed_max = args.integer("printed-max-level", 3, 13);
 
   // The data file's parameters: a cached row is reused only if all of these agree.
   const Domain dom;
   std::vector<std::pair<std::string, std::string>> params = {
       {"program", "imoto_fig5_table1"},
       {"document", "imoto-generalized-particle-method Sec. 5, Figure 5, Table 1"},
-      {"seed", fmt(seed_ll)},
+      {"seed", fmt(static_cast<long long>(seed))},
       {"function", "sin(2 pi (x+y))"},
       {"volumes", "V_i = |Omega_H|/N"},
       {"h", "h_N = 2.6 * 2^(5/m-5) * dx^(1/m)"},
@@ -212,20 +208,21 @@ int body(int argc, char** argv) {
   // The cost of the paper profile: measured units as they are, the others extrapolated from
   // the estimated pair count at the mean kernel rate (pairs/s) of this run's finest level.
   if (!args.str("cost-out").empty()) {
-    std::map<std::pair<int, std::string>, std::vector<std::string>> measured;
+    // (level, m) → row of the store; a malformed cell is named by file, row and column.
+    std::map<std::pair<int, std::string>, std::size_t> measured;
     double rate = 0;
     int finest = -1;
-    const auto& cols = cache.table().columns;
-    auto ci = [&](const char* n) { return std::find(cols.begin(), cols.end(), n) - cols.begin(); };
-    for (auto& r : cache.rows()) {
-      const int lv = std::stoi(r[0]);
-      measured[{lv, r[1]}] = r;
+    const TsvTable& st = cache.table();
+    const int c_pairs = st.column("pairs"), c_kernel = st.column("kernel_s"),
+              c_time = st.column("time_s");
+    for (std::size_t i = 0; i < st.rows.size(); ++i) {
+      const int lv = static_cast<int>(st.integer(i, 0));
+      measured[{lv, st.rows[i][1]}] = i;
       if (lv > finest) finest = lv, rate = 0;
     }
     double pairs_f = 0, secs_f = 0;
-    for (auto& [key, r] : measured)
-      if (key.first == finest)
-        pairs_f += std::stod(r[ci("pairs")]), secs_f += std::stod(r[ci("kernel_s")]);
+    for (auto& [key, i] : measured)
+      if (key.first == finest) pairs_f += st.number(i, c_pairs), secs_f += st.number(i, c_kernel);
     rate = secs_f > 0 ? pairs_f / secs_f : 0;
     TsvTable t;
     t.set("program", "imoto_fig5_table1 --cost-out");
@@ -242,8 +239,8 @@ int body(int argc, char** argv) {
         double pairs = 0, secs = 0;
         std::string src = "measured";
         if (it != measured.end()) {
-          pairs = std::stod(it->second[ci("pairs")]);
-          secs = std::stod(it->second[ci("time_s")]);
+          pairs = st.number(it->second, c_pairs);
+          secs = st.number(it->second, c_time);
         } else {
           pairs = estimated_pairs(level, m);
           secs = rate > 0 ? pairs / rate : NAN;

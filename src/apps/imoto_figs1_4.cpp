@@ -48,8 +48,13 @@ int body(int argc, char** argv) {
   args.parse(argc, argv);
   const std::string prefix = args.str("prefix");
   if (prefix.empty()) throw InputError("--prefix PATH is required (see --help)");
-  const long long seed = args.integer("seed");
-  if (seed < 0) throw InputError("--seed: " + std::to_string(seed) + " is negative");
+  const uint64_t seed = args.seed();
+  // Every file this run writes, checked before the first is computed.
+  std::vector<std::pair<std::string, std::string>> outputs;
+  for (const char* f : {"_particles.tsv", "_voronoi.tsv", "_fig3_particles.tsv",
+                        "_fig3_edges.tsv", "_fig3_discs.tsv"})
+    outputs.emplace_back("--prefix", prefix + f);
+  check_output_paths(outputs);
   const auto t0 = std::chrono::steady_clock::now();
   const Domain dom;
   auto header = [&](TsvTable& t, const char* what) {
@@ -66,7 +71,7 @@ int body(int argc, char** argv) {
 
   // Figures 1/4 and 2: the §5 distribution and its Voronoi cells.
   const double dx = std::ldexp(1.0, -kLevel);
-  const Particles p = jittered_grid(dx, static_cast<uint64_t>(seed), 0.25, dom);
+  const Particles p = jittered_grid(dx, seed, 0.25, dom);
   const VoronoiCells c = voronoi_cells(p, dom, true);
   TsvTable parts;
   header(parts, "particles");

@@ -173,9 +173,9 @@ int body(int argc, char** argv) {
             "imoto Sec. 3/5 regularity indicators: covering radius r_N over levels and seeds\n"
             "with a counter-example to r_N <= sqrt(2)(1+1/4)dx/2, and the Voronoi deviation\n"
             "d_N by the LP of Appendix B (GLPK) with (r_N + d_N)/h^m for m = 1, 3, 5.");
-  args.opt("out-cover", "", "covering-radius TSV (required)")
-      .opt("out-example", "", "counter-example TSV (required)")
-      .opt("out-deviation", "", "Voronoi-deviation TSV (required)")
+  args.output("out-cover", "", "covering-radius TSV (required)")
+      .output("out-example", "", "counter-example TSV (required)")
+      .output("out-deviation", "", "Voronoi-deviation TSV (required)")
       .opt("profile", "quick", "quick or paper (both: LP at 2^-5 and 2^-6; r_N at 2^-5..2^-10)")
       .opt("seeds", "1,2,3,4,5", "comma-separated jitter seeds for r_N")
       .opt("lp-seed", "1", "jitter seed of the LP (the seed of imoto_fig5_table1)")
@@ -185,13 +185,8 @@ int body(int argc, char** argv) {
   for (const char* o : {"out-cover", "out-example", "out-deviation"})
     if (args.str(o).empty()) throw InputError(std::string("--") + o + " PATH is required");
   const Profile profile = parse_profile(args.str("profile"));
-  std::vector<uint64_t> seeds;
-  for (double s : args.nums("seeds")) {
-    if (s < 0 || s != std::floor(s)) throw InputError("--seeds: " + fmt(s) + " is not a seed");
-    seeds.push_back(static_cast<uint64_t>(s));
-  }
-  const long long lp_seed = args.integer("lp-seed");
-  if (lp_seed < 0) throw InputError("--lp-seed: " + std::to_string(lp_seed) + " is negative");
+  const std::vector<uint64_t> seeds = args.seeds("seeds");
+  const uint64_t lp_seed = args.seed("lp-seed");
   const std::string method = args.str("lp-method");
   if (method != "interior" && method != "simplex")
     throw InputError("--lp-method: unknown '" + method + "'; valid: interior, simplex");

@@ -94,9 +94,15 @@ struct Worst {
   std::string where;
 };
 
-// Particles, cells and radii around one a_k, for Figures 1–2.
-void write_figure_data(const std::string& prefix, int level, uint64_t seed, double c_star,
-                       double lambda, const std::vector<std::pair<std::string, std::string>>& hdr) {
+// Particles, cells and radii around one a_k, for Figures 1–2: computed before the study (it
+// takes milliseconds and checks that --fig-level and --fig-cstar give a valid site), written
+// after it.
+struct FigureData {
+  TsvTable particles, cells, circles;
+};
+
+FigureData figure_data(int level, uint64_t seed, double c_star, double lambda,
+                       const std::vector<std::pair<std::string, std::string>>& hdr) {
   const Domain dom;
   const double dx = std::ldexp(1.0, -level);
   const Particles p = jittered_grid(dx, seed);
@@ -127,13 +133,13 @@ void write_figure_data(const std::string& prefix, int level, uint64_t seed, doub
     t.set("roles", "k = a_k, R = R(a_k, h), o = other");
     add_provenance(t);
   };
-  TsvTable tp;
+  FigureData fd;
+  TsvTable& tp = fd.particles;
   header(tp, "particles");
   tp.columns = {"x", "y", "in_omega", "role"};
   for (std::size_t i = 0; i < p.size(); ++i)
     tp.add_row({fmt(p.x[i]), fmt(p.y[i]), p.in_omega[i] ? "1" : "0", std::string(1, role[i])});
-  tp.save(prefix + "_particles.tsv");
-  TsvTable tc;
+  TsvTable& tc = fd.cells;
   header(tc, "Voronoi cells, one vertex per row, first vertex repeated to close the polygon");
   tc.columns = {"cell", "x", "y", "role"};
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -141,21 +147,22 @@ void write_figure_data(const std::string& prefix, int level, uint64_t seed, doub
     for (std::size_t j = 0; j <= c.n; ++j)
       tc.add_row({fmt(i), fmt(c.x[j % c.n]), fmt(c.y[j % c.n]), std::string(1, role[i])});
   }
-  tc.save(prefix + "_cells.tsv");
-  TsvTable tr;
+  TsvTable& tr = fd.circles;
   header(tr, "circles around a_k");
   tr.columns = {"name", "x", "y", "r"};
   for (auto [name, r] : {std::pair<const char*, double>{"delta", delta}, {"r_sigma", r_sigma},
                          {"lambda_h", lambda * h}, {"h", h}})
     tr.add_row({name, fmt(p.x[k]), fmt(p.y[k]), fmt(r)});
-  tr.save(prefix + "_circles.tsv");
+  return fd;
 }
+
+const char* kFigureFiles[] = {"_particles.tsv", "_cells.tsv", "_circles.tsv"};
 
 int body(int argc, char** argv) {
   Args args("koba_sato_bounds",
             "Koba & Sato Theorems 1.3-1.6 on jittered-grid Voronoi cells: the error of the four\n"
             "operators at a_k against the theorems' bounds with constants computed from the cells.");
-  args.opt("out", "", "output TSV file, one row per case (required)")
+  args.output("out", "", "output TSV file, one row per case (required)")
       .opt("profile", "quick", "quick (level 8, 1 seed, 4 sites) or paper (levels 8-9, 3 seeds, 8 sites)")
       .opt("levels", "", "comma-separated levels k, dx = 2^-k, 6..10 (default: by profile)")
       .opt("seeds", "", "comma-separated jitter seeds (default: by profile)")
@@ -164,12 +171,12 @@ int body(int argc, char** argv) {
       .opt("lambdas", "0.25,0.5,0.75", "lambda values in (0,1)")
       .opt("weights", "step,Pi1,quadratic_spike", "step and/or registry weights, w(x) = W(|x|/h) on the annulus")
       .opt("functions", "sin2pi,wave,quartic,linear", "test functions")
-      .opt("summary", "", "summary TSV (default: OUT with _summary.tsv)")
-      .opt("constants", "", "constants TSV (default: OUT with _constants.tsv)")
-      .opt("hypotheses", "", "hypotheses TSV (default: OUT with _hypotheses.tsv)")
+      .output("summary", "", "summary TSV (default: OUT with _summary.tsv)")
+      .output("constants", "", "constants TSV (default: OUT with _constants.tsv)")
+      .output("hypotheses", "", "hypotheses TSV (default: OUT with _hypotheses.tsv)")
       .opt("fig-prefix", "", "prefix of the Figure 1-2 data files (default: DIR(OUT)/koba_sato_fig)")
-      .opt("fig-level", "4", "level of the tessellation drawn in Figures 1-2")
-      .opt("fig-cstar", "3", "C* drawn in Figures 1-2");
+      .opt("fig-level", "4", "level of the tessellation drawn in Figures 1-2, 2..10")
+      .opt("fig-cstar", "3", "C* drawn in Figures 1-2 (> 1)");
   args.parse(argc, argv);
   const std::string out = args.str("out");
   if (out.empty()) throw InputError("--out PATH is required (see --help)");
@@ -183,26 +190,16 @@ int body(int argc, char** argv) {
   const std::string fig_prefix = or_default("fig-prefix", dir_of(out) + "/koba_sato_fig");
 
   const std::vector<int> levels = levels_option(args, profile, kQuickLevels, kPaperLevels, 6, 10);
-  std::vector<uint64_t> seeds;
-  const std::string seed_text = or_default("seeds", profile == Profile::quick ? kQuickSeeds : kPaperSeeds);
-  std::vector<double> seed_values;
-  for (std::size_t b = 0; b <= seed_text.size();) {
-    const std::size_t e = std::min(seed_text.find(',', b), seed_text.size());
-    if (e > b) seed_values.push_back(parse_number(seed_text.substr(b, e - b), "--seeds"));
-    b = e + 1;
-  }
-  for (double v : seed_values) {
-    if (v != std::floor(v) || v < 0) throw InputError("--seeds: seeds are non-negative integers");
-    seeds.push_back(static_cast<uint64_t>(v));
-  }
-  const long long n_sites =
-      args.str("sites").empty() ? (profile == Profile::quick ? kQuickSites : kPaperSites) : args.integer("sites");
-  if (n_sites < 1 || n_sites > 64) throw InputError("--sites must lie in 1..64");
+  const std::vector<uint64_t> seeds =
+      parse_seeds(or_default("seeds", profile == Profile::quick ? kQuickSeeds : kPaperSeeds), "--seeds");
+  const long long n_sites = args.str("sites").empty()
+                                ? (profile == Profile::quick ? kQuickSites : kPaperSites)
+                                : args.integer("sites", 1, 64);
   const std::vector<double> cstars = args.nums("cstars"), lambdas = args.nums("lambdas");
   for (double c : cstars)
-    if (!(c > 1)) throw InputError("--cstars: C* must exceed 1 (h > r_sigma)");
+    if (!(c > 1)) throw InputError("--cstars: C* must exceed 1 (h > r_sigma), got " + fmt(c));
   for (double l : lambdas)
-    if (!(l > 0 && l < 1)) throw InputError("--lambdas: lambda must lie in (0, 1)");
+    if (!(l > 0 && l < 1)) throw InputError("--lambdas: lambda must lie in (0, 1), got " + fmt(l));
   const std::vector<std::string> weight_names = args.list("weights");
   std::vector<const KsFunction*> funcs;
   for (auto& n : args.list("functions")) funcs.push_back(&ks_function(n));
@@ -212,6 +209,23 @@ int body(int argc, char** argv) {
     throw InputError("every list option needs at least one value");
   const double lambda_sample =
       std::find(lambdas.begin(), lambdas.end(), 0.5) != lambdas.end() ? 0.5 : lambdas.front();
+  const int fig_level = static_cast<int>(args.integer("fig-level", 2, 10));
+  const double fig_cstar = args.num("fig-cstar");
+  if (!(fig_cstar > 1))
+    throw InputError("--fig-cstar: C* must exceed 1 (h > r_sigma), got " + args.str("fig-cstar"));
+  // Every file of the run, the defaults derived from --out included, before any work.
+  std::vector<std::pair<std::string, std::string>> outputs = {
+      {"--out", out}, {"--summary", summary_path}, {"--constants", constants_path},
+      {"--hypotheses", hyp_path}};
+  for (const char* f : kFigureFiles) outputs.emplace_back("--fig-prefix", fig_prefix + f);
+  check_output_paths(outputs);
+  FigureData fig;
+  try {
+    fig = figure_data(fig_level, seeds.front(), fig_cstar, lambda_sample, args.values());
+  } catch (const InputError& e) {
+    throw InputError("--fig-level " + args.str("fig-level") + " with --fig-cstar " +
+                     args.str("fig-cstar") + ": " + e.what());
+  }
 
   const auto t_start = std::chrono::steady_clock::now();
   const Domain dom;
@@ -412,8 +426,9 @@ int body(int argc, char** argv) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   for (TsvTable* x : {&t, &tc, &th, &ts}) x->set("wall_time_s", wall);
   ts.set("violations_total", static_cast<double>(total_viol));
-  write_figure_data(fig_prefix, static_cast<int>(args.integer("fig-level")), seeds.front(),
-                    args.num("fig-cstar"), lambda_sample, args.values());
+  fig.particles.save(fig_prefix + kFigureFiles[0]);
+  fig.cells.save(fig_prefix + kFigureFiles[1]);
+  fig.circles.save(fig_prefix + kFigureFiles[2]);
   tc.save(constants_path);
   th.save(hyp_path);
   ts.save(summary_path);

@@ -46,7 +46,7 @@ int body(int argc, char** argv) {
   Args args("koba_sato_cor71",
             "Koba & Sato Corollary 7.1: every printed coefficient of cases (i) and (ii)\n"
             "against its exact value from the corollary's formulas and from Theorems 1.3-1.6.");
-  args.opt("out", "", "output TSV file (required)")
+  args.output("out", "", "output TSV file (required)")
       .opt("published", std::string(GPM_SOURCE_DIR) + "/tables/published/koba_sato_cor71.tsv",
            "the transcribed printed values")
       .opt("m-max", "3", "case (i) is evaluated for m = 1..m-max (1..12)")
@@ -55,8 +55,7 @@ int body(int argc, char** argv) {
   const std::string out = args.str("out");
   if (out.empty()) throw InputError("--out PATH is required (see --help)");
   const Profile profile = parse_profile(args.str("profile"));
-  const long long m_max = args.integer("m-max");
-  if (m_max < 1 || m_max > 12) throw InputError("--m-max must lie in 1..12, got " + args.str("m-max"));
+  const long long m_max = args.integer("m-max", 1, 12);
   const auto t0 = std::chrono::steady_clock::now();
 
   const TsvTable pub = TsvTable::load(args.str("published"));

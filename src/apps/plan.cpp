@@ -61,10 +61,10 @@ int body(int argc, char** argv) {
          "Predicted pair interactions, time and peak memory of every modelled study and level\n"
          "of a profile, printed before anything runs (see src/gpm/study_plan.hpp).");
   a.opt("profile", "quick", "quick or paper")
-      .opt("out", "", "TSV: one row per unit of work (required)")
-      .opt("summary", "", "TSV: per (study, level), per study and total (optional)")
+      .output("out", "", "TSV: one row per unit of work (required)")
+      .output("summary", "", "TSV: per (study, level), per study and total (optional)")
       .opt("calibration", "", "reuse the calibration in the header of this earlier plan file")
-      .opt("calibration-table", "", "TSV: the calibration as a readable table (optional)")
+      .output("calibration-table", "", "TSV: the calibration as a readable table (optional)")
       .opt("bench", "data/bench/kernel.tsv", "make bench's kernel file, shown beside the "
                                              "calibration when present")
       .flag("quiet", "do not print the table");

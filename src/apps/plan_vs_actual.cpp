@@ -50,7 +50,7 @@ int body(int argc, char** argv) {
          "Predicted (plan) against measured (data files) seconds per study and level.");
   a.opt("plan", "", "plan file (plan --out) (required)")
       .opt("datadir", "", "directory of the studies' data files (required)")
-      .opt("out", "", "output TSV (required)");
+      .output("out", "", "output TSV (required)");
   a.parse(argc, argv);
   if (a.str("plan").empty() || a.str("datadir").empty() || a.str("out").empty())
     throw InputError("--plan, --datadir and --out are required (see --help)");
@@ -86,15 +86,15 @@ int body(int argc, char** argv) {
     const std::string path = a.str("datadir") + "/" + study + ".tsv";
     // The plan's pair interactions per unit (and its non-zeros, which heat rows lack).
     std::map<std::pair<std::string, int>, double> planned_pairs, planned_work;
-    for (auto& r : plan.rows)
-      if (r[c_study] == study) {
-        const std::pair<std::string, int> key{r[c_var], std::stoi(r[c_level])};
-        const double pairs = parse_number(r[c_pairs], "pairs");
-        planned_pairs[key] = pairs;
-        planned_work[key] = r[c_method] == "voronoi"
-                                ? nan
-                                : pairs * std::max(1.0, parse_number(r[c_prod], "products"));
-      }
+    for (std::size_t i = 0; i < plan.rows.size(); ++i) {
+      const auto& r = plan.rows[i];
+      if (r[c_study] != study) continue;
+      const std::pair<std::string, int> key{r[c_var], static_cast<int>(plan.integer(i, c_level))};
+      const double pairs = plan.number(i, c_pairs);
+      planned_pairs[key] = pairs;
+      planned_work[key] =
+          r[c_method] == "voronoi" ? nan : pairs * std::max(1.0, plan.number(i, c_prod));
+    }
     std::map<std::pair<std::string, int>, RecordedUnit> rec;
     double peak_actual = nan;
     if (std::filesystem::exists(path)) {
@@ -105,14 +105,15 @@ int body(int argc, char** argv) {
     std::map<int, Cmp> lv;
     Cmp st;
     std::map<std::pair<std::string, int>, bool> planned_keys;
-    for (auto& r : plan.rows) {
+    for (std::size_t i = 0; i < plan.rows.size(); ++i) {
+      const auto& r = plan.rows[i];
       if (r[c_study] != study) continue;
-      const int k = std::stoi(r[c_level]);
-      const double pred = parse_number(r[c_time], "time_s");
+      const int k = static_cast<int>(plan.integer(i, c_level));
+      const double pred = plan.number(i, c_time);
       Cmp& c = lv[k];
       c.predicted_all_s += pred;
       st.predicted_all_s += pred;
-      c.peak_pred = std::max(c.peak_pred, parse_number(r[c_mem], "peak_mib"));
+      c.peak_pred = std::max(c.peak_pred, plan.number(i, c_mem));
       st.peak_pred = std::max(st.peak_pred, c.peak_pred);
       if (r[c_rec] != "yes") continue;
       ++c.planned, ++st.planned;

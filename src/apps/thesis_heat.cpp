@@ -88,8 +88,8 @@ int body(int argc, char** argv) {
          "per weight, theta and level for one time-step setting (Tables 4.5-4.7).");
   a.opt("table", "", "4.5 (dt = 0.0025h^2), 4.6 (dt = 0.5h^2) or 4.7 (dt = 0.5h) (required)")
       .opt("profile", "quick", "quick or paper (levels per table at the top of the source)")
-      .opt("out", "", "data file (required)")
-      .opt("rates-input", "", "data file of the series that never blew up (for rate_table)")
+      .output("out", "", "data file (required)")
+      .output("rates-input", "", "data file of the series that never blew up (for rate_table)")
       .opt("seed", "1", "jitter seed")
       .opt("dt-rule", "fit", "fit: dt = T/K, K = ceil(T/dt0) (the thesis' dt = T/K); exact: dt = dt0,\n"
                              "  K = ceil(T/dt0) steps (last step at K dt0 >= T)")
@@ -104,21 +104,22 @@ int body(int argc, char** argv) {
   if (a.str("out").empty() || a.str("table").empty())
     throw InputError("--table and --out are required (see --help)");
   const CacheMode mode = cache_mode(a);
-  require_distinct_paths({{"--out", a.str("out")}, {"--rates-input", a.str("rates-input")}});
   const TableSetting& ts = table_setting(a.str("table"));
   const Profile prof = parse_profile(a.str("profile"));
-  const uint64_t seed = static_cast<uint64_t>(a.integer("seed"));
+  const uint64_t seed = a.seed();
   const std::string h_rule = a.str("h-rule");
   pde_h(h_rule, 1.0);  // InputError naming the rule unless h10 or h15
   HeatSetting hs;
   hs.kappa = kKappa;
   hs.T = kT;
-  hs.tol = a.positive("tol");
+  hs.tol = a.tolerance("tol");
   const std::string dt_rule = a.str("dt-rule");
   if (dt_rule != "fit" && dt_rule != "exact")
     throw InputError("--dt-rule: '" + dt_rule + "' is not fit or exact");
   hs.fit_T = dt_rule == "fit";
   hs.blowup_factor = a.positive("blowup");
+  // ||U^k|| ≤ blowup·||U^0|| holds at k = 0 only for a factor above 1.
+  if (!(hs.blowup_factor > 1)) throw InputError("--blowup must exceed 1, got " + a.str("blowup"));
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
   const std::vector<int> levels = levels_option(a, prof, ts.quick, ts.paper, 3, 13);

@@ -235,17 +235,16 @@ int body(int argc, char** argv) {
          "unchecked solve.");
   a.opt("profile", "quick", "quick (levels 5-6, sweep at 2^-5, 4 seeds) or paper "
                             "(levels 5-8, sweep at 2^-5..2^-7, 8 seeds)")
-      .opt("out", "", "data file of part (a) (required)")
-      .opt("out-sweep", "", "data file of part (b), the h sweep (required)")
+      .output("out", "", "data file of part (a) (required)")
+      .output("out-sweep", "", "data file of part (b), the h sweep (required)")
       .opt("seed", "1", "jitter seed of part (a)");
   add_cache_options(a);
   a.parse(argc, argv);
   if (a.str("out").empty() || a.str("out-sweep").empty())
     throw InputError("--out PATH and --out-sweep PATH are required (see --help)");
   const CacheMode mode = cache_mode(a);
-  require_distinct_paths({{"--out", a.str("out")}, {"--out-sweep", a.str("out-sweep")}});
   const Profile prof = parse_profile(a.str("profile"));
-  const uint64_t seed = static_cast<uint64_t>(a.integer("seed"));
+  const uint64_t seed = a.seed();
   const int dense_max = prof == Profile::quick ? kQuickDenseMax : kPaperDenseMax;
   const Domain dom;
   const TestFunction& u = test_function("sin2pi");

@@ -60,7 +60,7 @@ int body(int argc, char** argv) {
          "heat problem, from the largest eigenvalue of the discrete Laplacian (Lanczos),\n"
          "confirmed by runs at 0.9 and 1.1 times the limit, against the bound (3.3).");
   a.opt("profile", "quick", "quick (dx = 2^-5, 2^-6) or paper (2^-5..2^-9)")
-      .opt("out", "", "data file (required)")
+      .output("out", "", "data file (required)")
       .opt("seed", "1", "jitter seed of the particles (the start vectors use seed 1)")
       .opt("tol", "1e-4", "Lanczos: stop when the Ritz residual <= tol * lambda_max")
       .opt("steps", "100", "confirmation runs: at most this many steps")
@@ -73,10 +73,9 @@ int body(int argc, char** argv) {
   if (a.str("out").empty()) throw InputError("--out is required (see --help)");
   const CacheMode mode = cache_mode(a);
   const Profile prof = parse_profile(a.str("profile"));
-  const uint64_t seed = static_cast<uint64_t>(a.integer("seed"));
-  const double tol = a.positive("tol"), stop_growth = a.positive("stop-growth");
-  const long steps = a.integer("steps");
-  if (steps < 1) throw InputError("--steps must be at least 1, got " + a.str("steps"));
+  const uint64_t seed = a.seed();
+  const double tol = a.tolerance("tol"), stop_growth = a.positive("stop-growth");
+  const long steps = static_cast<long>(a.integer("steps", 1, 1000000000));
   if (!(stop_growth > 1)) throw InputError("--stop-growth must exceed 1, got " + a.str("stop-growth"));
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;

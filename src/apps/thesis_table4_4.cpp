@@ -43,7 +43,7 @@ int body(int argc, char** argv) {
          "Discrete Poisson problem (thesis §4.2): relative l-infinity errors per weight,\n"
          "level and reading of h (Figure 4.8, Table 4.4).");
   a.opt("profile", "quick", "quick (levels 5-7) or paper (levels 5-9)")
-      .opt("out", "", "data file (required)")
+      .output("out", "", "data file (required)")
       .opt("seed", "1", "jitter seed")
       .opt("tol", "1e-10", "CG relative residual on the symmetric form")
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
@@ -54,8 +54,8 @@ int body(int argc, char** argv) {
   if (a.str("out").empty()) throw InputError("--out PATH is required (see --help)");
   const CacheMode mode = cache_mode(a);
   const Profile prof = parse_profile(a.str("profile"));
-  const uint64_t seed = static_cast<uint64_t>(a.integer("seed"));
-  const double tol = a.positive("tol");
+  const uint64_t seed = a.seed();
+  const double tol = a.tolerance("tol");
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
   const std::vector<int> levels = levels_option(a, prof, kQuickLevels, kPaperLevels, 3, 13);

@@ -134,8 +134,8 @@ std::string rel_error_definition(const std::vector<ErrorRequest>& requests) {
 
 int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
   Args args(spec.program, spec.summary);
-  args.opt("out", "", "output TSV file (required)")
-      .opt("cost", "", "optional TSV: paper-profile time and peak memory per pass, "
+  args.output("out", "", "output TSV file (required)")
+      .output("cost", "", "optional TSV: paper-profile time and peak memory per pass, "
                        "measured where run, else extrapolated")
       .opt("profile", "quick", "quick or paper (the thesis' levels)")
       .opt("readings", "", "comma-separated h readings: printed, scaled (default: the table's)")
@@ -147,13 +147,10 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
   add_cache_options(args);
   args.parse(argc, argv);
   const CacheMode mode = cache_mode(args);
-  require_distinct_paths({{"--out", args.str("out")}, {"--cost", args.str("cost")}});
   const std::string out = args.str("out");
   if (out.empty()) throw InputError("--out PATH is required (see --help)");
   const Profile profile = parse_profile(args.str("profile"));
-  const long long seed_ll = args.integer("seed");
-  if (seed_ll < 0) throw InputError("--seed: must be non-negative, got " + args.str("seed"));
-  const auto seed = static_cast<uint64_t>(seed_ll);
+  const uint64_t seed = args.seed();
   std::vector<HReading> readings = spec.readings;
   if (!args.str("readings").empty()) {
     readings.clear();
@@ -165,9 +162,7 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
     throw InputError("--readings and --volumes must name at least one choice each");
   int max_level = 99;
   if (!args.str("max-level").empty()) {
-    max_level = static_cast<int>(args.integer("max-level"));
-    if (max_level < 2 || max_level > 13)
-      throw InputError("--max-level: " + args.str("max-level") + " is out of range [2, 13]");
+    max_level = static_cast<int>(args.integer("max-level", 2, 13));
   }
   const std::vector<int> given = args.str("levels").empty()
                                     ? std::vector<int>{}
@@ -313,20 +308,22 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
     double total_s = 0, peak = 0;
     for (HReading r : readings)
       for (Volumes v : volumes) {
-        // Finest measured pass of (r, v): one row per request × case; take the first.
-        std::map<int, const std::vector<std::string>*> measured;
-        for (auto& row : cache.rows())
-          if (row[cr] == h_reading_name(r) && row[cv] == volumes_name(v))
-            measured.emplace(std::stoi(row[cl]), &row);
+        // Finest measured pass of (r, v): one row per request × case; take the first.  Rows
+        // by index, so that a malformed cell is named by file, row and column.
+        const TsvTable& st = cache.table();
+        std::map<int, std::size_t> measured;
+        for (std::size_t i = 0; i < st.rows.size(); ++i)
+          if (st.rows[i][cr] == h_reading_name(r) && st.rows[i][cv] == volumes_name(v))
+            measured.emplace(static_cast<int>(st.integer(i, cl)), i);
         if (measured.empty()) continue;
-        const auto& ref = *measured.rbegin()->second;
+        const std::size_t ref = measured.rbegin()->second;
         const int kref = measured.rbegin()->first;
         const double dxr = std::ldexp(1.0, -kref);
-        const double Nr = std::stod(ref[cn]);
-        const double calib = std::stod(ref[cp]) / predicted_pairs(dxr, thesis_h(r, spec.c, spec.p, dxr));
-        const double pps = std::stod(ref[cp]) / std::max(1e-9, std::stod(ref[ct]));
-        const double vps = std::stod(ref[cvo]) / Nr;
-        const double mpp = std::stod(ref[cm]) / Nr;
+        const double Nr = st.number(ref, cn);
+        const double calib = st.number(ref, cp) / predicted_pairs(dxr, thesis_h(r, spec.c, spec.p, dxr));
+        const double pps = st.number(ref, cp) / std::max(1e-9, st.number(ref, ct));
+        const double vps = st.number(ref, cvo) / Nr;
+        const double mpp = st.number(ref, cm) / Nr;
         for (int k : spec.paper_levels) {
           if (v == Volumes::uniform && k > spec.paper_uniform_max_level) continue;
           const double dx = std::ldexp(1.0, -k);
@@ -338,11 +335,11 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
           double ts, vs, mem, pairs;
           std::string src;
           if (it != measured.end()) {
-            const auto& m = *it->second;
-            pairs = std::stod(m[cp]);
-            ts = std::stod(m[ct]);
-            vs = std::stod(m[cvo]);
-            mem = std::stod(m[cm]);
+            const std::size_t m = it->second;
+            pairs = st.number(m, cp);
+            ts = st.number(m, ct);
+            vs = st.number(m, cvo);
+            mem = st.number(m, cm);
             src = "measured";
           } else {
             pairs = calib * predicted_pairs(dx, h);
