@@ -7,8 +7,10 @@
 //
 // Every subcommand writes TSV to stdout (a `# key = value` header, then columns) and
 // has --help.  Errors are one line on stderr and a non-zero exit.
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <string>
 
@@ -20,6 +22,7 @@
 #include "gpm/laplacian_matrix.hpp"
 #include "gpm/poisson.hpp"
 #include "gpm/poisson_probes.hpp"
+#include "gpm/profile.hpp"
 #include "gpm/study.hpp"
 #include "gpm/testfunctions.hpp"
 #include "gpm/truncation.hpp"
@@ -31,7 +34,14 @@ using namespace gpm;
 
 namespace {
 
-void print(const TsvTable& t) { t.write(std::cout); }
+// The table to stdout; a failed write (a full disk) stops the subcommand with the reason,
+// read from errno at once, before later calls can overwrite it.
+void print(const TsvTable& t) {
+  t.write(std::cout);
+  if (!std::cout.flush())
+    throw std::runtime_error(std::string("cannot write to standard output: ") +
+                             std::strerror(errno));
+}
 
 TsvTable header_from(const Args& a, const std::string& sub) {
   TsvTable t;
@@ -42,6 +52,11 @@ TsvTable header_from(const Args& a, const std::string& sub) {
 }
 
 const char* yes(bool b) { return b ? "yes" : "no"; }
+
+// Memory per particle of the subcommands that print one table row (of strings) per
+// particle, or per polygon vertex: peak RSS / N measured at dx = 2^-10 (particles 286 bytes,
+// voronoi 333) and 2^-9 (voronoi --polygons 1360), with half as much again to spare.
+constexpr double kParticlesBytes = 450, kVoronoiBytes = 500, kPolygonsBytes = 2000;
 
 int cmd_weights(int argc, char** argv) {
   Args a("gpm weights", "The weight registry: each weight's computed properties (TSV).");
@@ -71,7 +86,11 @@ int cmd_particles(int argc, char** argv) {
   a.opt("seed", "1", "random seed of the jitter");
   a.opt("jitter", "0.25", "jitter amplitude as a fraction of dx (0 = plain grid)");
   a.parse(argc, argv, 2);
-  const auto p = jittered_grid(a.positive("dx"), a.integer("seed"), a.num("jitter"));
+  const double dx = a.positive("dx");
+  const uint64_t seed = a.seed();
+  const double jitter = a.num("jitter");
+  require_grid_fits_memory(dx, kParticlesBytes, "--dx");
+  const auto p = jittered_grid(dx, seed, jitter);
   TsvTable t = header_from(a, "particles");
   t.set("N", fmt(p.size()));
   t.set("N_in_omega", fmt(p.count_in_omega()));
@@ -91,7 +110,11 @@ int cmd_voronoi(int argc, char** argv) {
   a.opt("jitter", "0.25", "jitter amplitude as a fraction of dx");
   a.flag("polygons", "print the clipped cell polygons instead (columns: particle, x, y)");
   a.parse(argc, argv, 2);
-  const auto p = jittered_grid(a.positive("dx"), a.integer("seed"), a.num("jitter"));
+  const double dx = a.positive("dx");
+  const uint64_t seed = a.seed();
+  const double jitter = a.num("jitter");
+  require_grid_fits_memory(dx, a.has("polygons") ? kPolygonsBytes : kVoronoiBytes, "--dx");
+  const auto p = jittered_grid(dx, seed, jitter);
   const auto v = voronoi_cells(p, Domain{}, a.has("polygons"));
   TsvTable t = header_from(a, "voronoi");
   t.set("N", fmt(p.size()));
@@ -135,14 +158,41 @@ int cmd_trunc(int argc, char** argv) {
   s.volumes = parse_volumes(a.str("volumes"));
   s.function = a.str("function");
   s.dx = a.positive("dx");
-  s.seed = a.integer("seed");
+  s.seed = a.seed();
   s.jitter = a.num("jitter");
   if (a.str("h").empty() == a.str("m").empty())
     throw InputError("give exactly one of --h or --m");
+  const std::string h_opt = a.str("h").empty() ? "--m" : "--h";
   s.h = a.str("h").empty() ? imoto_h(a.positive("m"), s.dx) : a.positive("h");
-  const auto r = truncation_error(s);
+  // A huge --h (or a tiny --m, through h = 2.6·2^(5/m−5)·dx^(1/m)) would make every
+  // particle a neighbour of every other, or h non-finite.
+  if (!(s.h > 0 && s.h < max_influence_radius()))
+    throw InputError(h_opt + " " + a.str(h_opt.substr(2)) + " gives h = " + fmt(s.h) +
+                     ": h must lie in (0, " + fmt(max_influence_radius()) +
+                     "), the side of Omega_H being the most a local operator can reach");
+  require_grid_fits_memory(s.dx, truncation_bytes_per_particle(s.volumes), "--dx");
+  TruncationResult r;
+  try {
+    r = truncation_error(s);
+  } catch (const InputError& e) {
+    // The kernel's cell list has cells of size h/4: a tiny h asks for more cells than it
+    // holds, and its message should say which option made it so.
+    if (std::string(e.what()).rfind("cell list:", 0) != 0) throw;
+    throw InputError(h_opt + " " + a.str(h_opt.substr(2)) + " is too small: " + e.what());
+  }
   TsvTable t = header_from(a, "trunc");
   t.set("h_used", s.h);
+  t.set("largest_spacing", r.largest_spacing);
+  t.set("isolated_targets", fmt(r.isolated_targets));
+  if (r.isolated_targets > 0) {
+    char msg[320];
+    std::snprintf(msg, sizeof msg,
+                  "h = %g is below the largest particle spacing %.4g: %zu of %zu targets in "
+                  "Omega have no neighbour but themselves, so rel_error is no approximation "
+                  "error", s.h, r.largest_spacing, r.isolated_targets, r.n_in_omega);
+    t.set("warning", msg);
+    std::fprintf(stderr, "gpm trunc: warning: %s\n", msg);
+  }
   t.columns = {"dx", "h", "N", "N_in_omega", "pairs", "rel_error", "time_s"};
   t.add_row({fmt(s.dx), fmt(s.h), fmt(r.n), fmt(r.n_in_omega), fmt(r.pairs), fmt(r.rel_error),
              fmt(r.seconds)});

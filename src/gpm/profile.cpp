@@ -1,10 +1,12 @@
 #include "gpm/profile.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <string>
 
 #include "gpm/args.hpp"
+#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
 #include "gpm/tsv.hpp"
 
@@ -32,19 +34,54 @@ std::vector<int> levels_option(const Args& a, Profile p, const std::vector<int>&
   return levels;
 }
 
-double peak_rss_mib() {
-  std::ifstream in("/proc/self/status");
-  std::string key;
-  while (in >> key) {
-    if (key == "VmHWM:") {
+namespace {
+
+// The value of a "Key:   N kB" line of a /proc file, in kB (0 if absent).
+double proc_kb(const char* file, const std::string& key) {
+  std::ifstream in(file);
+  std::string k;
+  while (in >> k) {
+    if (k == key) {
       double kb = 0;
       in >> kb;
-      return kb / 1024.0;
+      return kb;
     }
     std::string rest;
     std::getline(in, rest);
   }
   return 0;
+}
+
+}  // namespace
+
+double peak_rss_mib() { return proc_kb("/proc/self/status", "VmHWM:") / 1024.0; }
+
+double machine_memory_bytes() { return proc_kb("/proc/meminfo", "MemTotal:") * 1024.0; }
+
+namespace {
+std::string gib(double bytes) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+  return b;
+}
+}  // namespace
+
+void require_grid_fits_memory(double dx, double bytes_per_particle, const std::string& option) {
+  require_positive(dx, option);
+  const Domain dom;
+  if (dx >= 0.5)
+    throw InputError(option + " " + fmt(dx) + " is too coarse: no grid node would lie inside "
+                              "Omega = (0,1)^2 (dx must be < 0.5)");
+  // In doubles: at dx = 1e-300 the count overflows any integer type.
+  const double per_axis = std::floor(dom.side() / dx) + 1;
+  const double n = per_axis * per_axis, need = n * bytes_per_particle;
+  const double have = machine_memory_bytes();
+  if (have > 0 && !(need <= have)) {
+    char count[32];
+    std::snprintf(count, sizeof count, "%.3g", n);
+    throw InputError(option + " " + fmt(dx) + " needs about " + count + " particles and " +
+                     gib(need) + " of memory; this machine has " + gib(have) + " (MemTotal)");
+  }
 }
 
 }  // namespace gpm

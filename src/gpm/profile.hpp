@@ -28,4 +28,14 @@ std::vector<int> levels_option(const Args& a, Profile p, const std::vector<int>&
 // Peak resident memory of this process so far, in MiB (VmHWM).
 double peak_rss_mib();
 
+// The machine's memory in bytes (MemTotal of /proc/meminfo; 0 where unknown).
+double machine_memory_bytes();
+
+// Refuses, before anything is allocated, a grid spacing whose jittered grid on Ω_H would
+// need more memory than the machine has: N ≈ (side/dx + 1)² particles times
+// `bytes_per_particle` (what the caller's data structures hold per particle).  The
+// InputError names `option`, dx, N and both memory sizes.  Also refuses dx ≥ 0.5 (no node
+// inside Ω) so that no caller builds a grid it cannot use.
+void require_grid_fits_memory(double dx, double bytes_per_particle, const std::string& option);
+
 }  // namespace gpm

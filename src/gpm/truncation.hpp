@@ -14,6 +14,8 @@
 
 namespace gpm {
 
+struct Particles;
+
 enum class Operator { interp, grad, lap };
 enum class Volumes { uniform, voronoi };
 
@@ -39,8 +41,30 @@ struct TruncationResult {
   double rel_error = 0;
   double seconds = 0;      // wall time of the whole measurement
   bool h_exceeds_H = false;
+  // Below the largest spacing, some targets see no particle but themselves: their operator
+  // values are no approximation at all, and rel_error says nothing about the method.
+  double largest_spacing = 0;    // max over targets in Ω of the distance to the nearest other particle
+  std::size_t isolated_targets = 0;  // targets in Ω with no other particle within h
 };
 
 TruncationResult truncation_error(const TruncationSetting& s);
+
+// Largest h a measurement accepts: the side of Ω_H.  Beyond it every particle is a neighbour
+// of every other (O(N²) pairs) and the kernel says nothing about a local operator.
+double max_influence_radius();
+
+// Peak memory of truncation_error per particle of the grid, in bytes: particles, volumes,
+// cell list, sampled fields and kernel workspace (Voronoi volumes add the triangulation).
+// Measured at Δx = 2^-10 (peak RSS / N) and rounded up; see truncation.cpp.
+double truncation_bytes_per_particle(Volumes v);
+
+// For the jittered grid p (amplitude `jitter` in units of dx): the largest distance from a
+// particle in Ω to its nearest other particle, and how many particles in Ω have no other
+// particle closer than h.
+struct TargetSpacing {
+  double largest = 0;
+  std::size_t isolated = 0;
+};
+TargetSpacing target_spacing(const Particles& p, double dx, double jitter, double h);
 
 }  // namespace gpm
