@@ -7,7 +7,10 @@
 //   agrees               |reproduced − published| ≤ tolerance
 //   differs-explained    otherwise, and tables/explained/<table>.tsv gives the reason
 //   differs-unexplained  otherwise
+//   undefined            the rate is not a number (an error ≤ 0 or not finite at one of the
+//                        two levels): no agreement and no explained deviation can be claimed
 //   not-computed         the data file has fewer than two levels for this setting.
+// Two data rows with the same key and level are refused (one would silently replace the other).
 // The output is a data file like any other: the report shows it, `make test-paper` checks it.
 #include <cmath>
 #include <cstdio>
@@ -32,9 +35,10 @@ int col(const TsvTable& t, const std::string& name, const std::string& file) {
   return c;
 }
 
-std::string join(const std::vector<std::string>& v, const char* sep = "|") {
+// The key of row i: its cells in the key columns, joined by '|'.
+std::string key_of(const TsvTable& t, std::size_t i, const std::vector<int>& cols) {
   std::string s;
-  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? sep : "") + v[i];
+  for (std::size_t k = 0; k < cols.size(); ++k) s += (k ? "|" : "") + t.text(i, cols[k]);
   return s;
 }
 
@@ -52,12 +56,12 @@ int body(int argc, char** argv) {
   a.opt("value", "numerical", "published column holding the rate");
   a.opt("levels", "", "the two levels the rate comes from, e.g. 10,11, or 'published' for the\n"
                       "  published file's rate_levels (the document's); default: the two finest");
-  a.opt("tolerance", "0.15", "|reproduced − published| that still counts as agreement");
-  a.opt("out", "", "output TSV");
+  a.opt("tolerance", "0.15", "|reproduced − published| that still counts as agreement, in (0, 1)");
+  a.output("out", "", "output TSV");
   a.parse(argc, argv);
   for (const char* req : {"data", "published", "key", "out"})
     if (a.str(req).empty()) throw InputError(std::string("--") + req + " is required");
-  const double tol = a.positive("tolerance");
+  const double tol = a.tolerance("tolerance");
   const auto keys = a.list("key");
 
   const TsvTable data = TsvTable::load(a.str("data"));
@@ -78,20 +82,24 @@ int body(int argc, char** argv) {
     std::vector<int> ek;
     for (auto& k : keys) ek.push_back(col(ex, k, a.str("explained")));
     const int cr = col(ex, "reason", a.str("explained"));
-    for (auto& r : ex.rows) {
-      std::vector<std::string> kv;
-      for (int c : ek) kv.push_back(r.at(c));
-      reason[join(kv)] = r.at(cr);
-    }
+    for (std::size_t i = 0; i < ex.rows.size(); ++i) reason[key_of(ex, i, ek)] = ex.text(i, cr);
   }
 
-  // Per key: (level, x, y) sorted by level.
-  std::map<std::string, std::map<int, std::pair<double, double>>> series;
-  for (auto& r : data.rows) {
-    std::vector<std::string> kv;
-    for (int c : dk) kv.push_back(r.at(c));
-    const int level = std::stoi(r.at(cl));
-    series[join(kv)][level] = {parse_number(r.at(cx), a.str("x")), parse_number(r.at(cy), a.str("y"))};
+  // Per key: (level, x, y) sorted by level; where each came from, for a duplicate's message.
+  struct Point {
+    double x, y;
+    std::size_t row;
+  };
+  std::map<std::string, std::map<int, Point>> series;
+  for (std::size_t i = 0; i < data.rows.size(); ++i) {
+    const std::string key = key_of(data, i, dk);
+    const long long level = data.integer(i, cl);
+    const auto [it, fresh] = series[key].emplace(
+        static_cast<int>(level), Point{data.number(i, cx), data.number(i, cy), i});
+    if (!fresh)
+      throw InputError(a.str("data") + ": key '" + key + "' has two rows at level " +
+                       std::to_string(level) + " (data rows " + std::to_string(it->second.row + 1) +
+                       " and " + std::to_string(i + 1) + ")");
   }
 
   TsvTable out;
@@ -124,11 +132,9 @@ int body(int argc, char** argv) {
     out.set("rate_levels", lv);
   }
   std::map<std::string, int> counts;
-  for (auto& r : pub.rows) {
-    std::vector<std::string> kv;
-    for (int c : pk) kv.push_back(r.at(c));
-    const std::string key = join(kv);
-    const double published = parse_number(r.at(cv), a.str("value"));
+  for (std::size_t i = 0; i < pub.rows.size(); ++i) {
+    const std::string key = key_of(pub, i, pk);
+    const double published = pub.number(i, cv);
     std::string rep = "NA", diff = "NA", lsq = "NA", levels = "", status = "not-computed", why = "";
     auto it = series.find(key);
     const bool have = it != series.end() &&
@@ -137,26 +143,32 @@ int body(int argc, char** argv) {
     if (have) {
       auto last = fixed.empty() ? std::prev(it->second.end()) : it->second.find(fixed[1]);
       auto prev = fixed.empty() ? std::prev(last) : it->second.find(fixed[0]);
-      const double rate = two_level_rate(prev->second.first, prev->second.second,
-                                         last->second.first, last->second.second);
+      const double rate = two_level_rate(prev->second.x, prev->second.y, last->second.x,
+                                         last->second.y);
       std::vector<double> xs, ys;
-      for (auto& [lv, xy] : it->second) xs.push_back(xy.first), ys.push_back(xy.second);
+      for (auto& [lv, pt] : it->second) xs.push_back(pt.x), ys.push_back(pt.y);
       rep = fmt(rate);
-      diff = fmt(rate - published);
       lsq = fmt(least_squares_rate(xs, ys));
       levels = std::to_string(prev->first) + "," + std::to_string(last->first);
-      if (std::fabs(rate - published) <= tol) {
-        status = "agrees";
-      } else if (reason.count(key)) {
-        status = "differs-explained";
-        why = reason[key];
+      // NaN fails every comparison: tested first, or it would fall through to a reason.
+      if (!std::isfinite(rate) || !std::isfinite(published)) {
+        status = "undefined";
       } else {
-        status = "differs-unexplained";
+        diff = fmt(rate - published);
+        if (std::fabs(rate - published) <= tol) {
+          status = "agrees";
+        } else if (reason.count(key)) {
+          status = "differs-explained";
+          why = reason[key];
+        } else {
+          status = "differs-unexplained";
+        }
       }
     }
     ++counts[status];
-    auto row = kv;
-    for (auto& s : {fmt(published), ct >= 0 ? r.at(ct) : std::string("NA"), rep, diff, lsq,
+    std::vector<std::string> row;
+    for (int c : pk) row.push_back(pub.text(i, c));
+    for (auto& s : {fmt(published), ct >= 0 ? pub.text(i, ct) : std::string("NA"), rep, diff, lsq,
                     levels, status, why})
       row.push_back(s);
     out.add_row(row);

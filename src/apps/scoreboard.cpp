@@ -14,14 +14,15 @@ using namespace gpm;
 
 namespace {
 
-const char* kStatuses[] = {"agrees", "differs-explained", "differs-unexplained", "not-computed"};
+const char* kStatuses[] = {"agrees", "differs-explained", "differs-unexplained", "undefined",
+                           "not-computed"};
 
 int body(int argc, char** argv) {
-  Args a("scoreboard", "Count agrees / differs-explained / differs-unexplained / not-computed\n"
-                       "over the rate tables of one profile (TSV).");
+  Args a("scoreboard", "Count agrees / differs-explained / differs-unexplained / undefined /\n"
+                       "not-computed over the rate tables of one profile (TSV).");
   a.opt("tables", "", "comma-separated rate-table files (rate_table outputs)");
   a.opt("profile", "quick", "profile the tables come from (recorded only)");
-  a.opt("out", "", "output TSV");
+  a.output("out", "", "output TSV");
   a.parse(argc, argv);
   if (a.str("out").empty()) throw InputError("--out is required");
   const auto files = a.list("tables");
@@ -59,9 +60,9 @@ int body(int argc, char** argv) {
   out.add_row(row);
   out.save(a.str("out"));
   std::printf("scoreboard: %d published rates: %d agree, %d differ (explained), %d differ "
-              "(unexplained), %d not computed\n",
+              "(unexplained), %d undefined, %d not computed\n",
               total_rows, total["agrees"], total["differs-explained"],
-              total["differs-unexplained"], total["not-computed"]);
+              total["differs-unexplained"], total["undefined"], total["not-computed"]);
   return 0;
 }
 
