@@ -122,11 +122,8 @@ int body(int argc, char** argv) {
       lv = *v;
     }
     std::stringstream ss(lv);
-    for (std::string item; std::getline(ss, item, ',');) {
-      const double k = parse_number(item, "--levels");
-      if (k != std::floor(k)) throw InputError("--levels: '" + item + "' is not an integer");
-      fixed.push_back(static_cast<int>(k));
-    }
+    for (std::string item; std::getline(ss, item, ',');)
+      fixed.push_back(static_cast<int>(parse_integer(item, "--levels", 0, 63)));
     if (fixed.size() != 2 || !(fixed[0] < fixed[1]))
       throw InputError("--levels: '" + lv + "' is not two increasing levels");
     out.set("rate_levels", lv);

@@ -50,7 +50,7 @@ int body(int argc, char** argv) {
          "Table 4.4 diagnostics: the Poisson error per reading of h, weight, level and particle\n"
          "set (seeds 1-3, plain grid), where its maximum sits, and the error away from the boundary.");
   a.opt("profile", "quick", "quick (levels 5-7) or paper (levels 7-9)")
-      .opt("out", "", "data file (required)")
+      .output("out", "", "data file (required)")
       .opt("weights", "quartic_polynomial,piecewise_cubic_polynomial,piecewise_quintic_polynomial",
            "comma-separated registry weights")
       .opt("levels", "", "override the profile's levels (comma-separated k, dx = 2^-k)")
@@ -59,8 +59,7 @@ int body(int argc, char** argv) {
   a.parse(argc, argv);
   const Profile prof = parse_profile(a.str("profile"));
   const std::vector<int> levels = levels_option(a, prof, kQuickLevels, kPaperLevels, 3, 13);
-  const double tol = a.positive("tol");
-  if (!(tol < 1)) throw InputError("--tol: " + a.str("tol") + " is not in (0, 1)");
+  const double tol = a.tolerance("tol");
   const auto weights = a.list("weights");
   for (auto& w : weights) weight(w);  // InputError naming an unknown weight, before any work
 

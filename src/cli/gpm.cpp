@@ -53,6 +53,30 @@ TsvTable header_from(const Args& a, const std::string& sub) {
 
 const char* yes(bool b) { return b ? "yes" : "no"; }
 
+constexpr double kPi = 3.14159265358979323846;
+
+// Refuses an influence radius a local operator cannot have: not in (0, side of Omega_H).
+// Beyond the side every particle is a neighbour of every other (O(N^2) pairs); a tiny
+// --m makes h non-finite through h = 2.6·2^(5/m−5)·dx^(1/m).  `opt` is what gave h.
+void require_local_h(double h, const Args& a, const std::string& opt) {
+  if (!(h > 0 && h < max_influence_radius()))
+    throw InputError("--" + opt + " " + a.str(opt) + " gives h = " + fmt(h) + ": h must lie in (0, " +
+                     fmt(max_influence_radius()) + "), the side of Omega_H being the most a " +
+                     "local operator can reach");
+}
+
+// Runs `work`; the kernel's cell list has cells of size h/4, so a tiny h asks for more cells
+// than it holds, and that message is re-thrown naming the option that gave h.
+template <class F>
+auto naming_small_h(const Args& a, const std::string& opt, F&& work) {
+  try {
+    return work();
+  } catch (const InputError& e) {
+    if (std::string(e.what()).rfind("cell list:", 0) != 0) throw;
+    throw InputError("--" + opt + " " + a.str(opt) + " is too small: " + e.what());
+  }
+}
+
 // Memory per particle of the subcommands that print one table row (of strings) per
 // particle, or per polygon vertex: peak RSS / N measured at dx = 2^-10 (particles 286 bytes,
 // voronoi 333) and 2^-9 (voronoi --polygons 1360), with half as much again to spare.
@@ -162,24 +186,11 @@ int cmd_trunc(int argc, char** argv) {
   s.jitter = a.num("jitter");
   if (a.str("h").empty() == a.str("m").empty())
     throw InputError("give exactly one of --h or --m");
-  const std::string h_opt = a.str("h").empty() ? "--m" : "--h";
+  const std::string h_opt = a.str("h").empty() ? "m" : "h";
   s.h = a.str("h").empty() ? imoto_h(a.positive("m"), s.dx) : a.positive("h");
-  // A huge --h (or a tiny --m, through h = 2.6·2^(5/m−5)·dx^(1/m)) would make every
-  // particle a neighbour of every other, or h non-finite.
-  if (!(s.h > 0 && s.h < max_influence_radius()))
-    throw InputError(h_opt + " " + a.str(h_opt.substr(2)) + " gives h = " + fmt(s.h) +
-                     ": h must lie in (0, " + fmt(max_influence_radius()) +
-                     "), the side of Omega_H being the most a local operator can reach");
+  require_local_h(s.h, a, h_opt);
   require_grid_fits_memory(s.dx, truncation_bytes_per_particle(s.volumes), "--dx");
-  TruncationResult r;
-  try {
-    r = truncation_error(s);
-  } catch (const InputError& e) {
-    // The kernel's cell list has cells of size h/4: a tiny h asks for more cells than it
-    // holds, and its message should say which option made it so.
-    if (std::string(e.what()).rfind("cell list:", 0) != 0) throw;
-    throw InputError(h_opt + " " + a.str(h_opt.substr(2)) + " is too small: " + e.what());
-  }
+  const TruncationResult r = naming_small_h(a, h_opt, [&] { return truncation_error(s); });
   TsvTable t = header_from(a, "trunc");
   t.set("h_used", s.h);
   t.set("largest_spacing", r.largest_spacing);
@@ -218,16 +229,29 @@ int cmd_poisson(int argc, char** argv) {
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free");
   a.parse(argc, argv, 2);
   const double dx = a.positive("dx");
+  const std::string h_opt = a.str("h").empty() ? "h-rule" : "h";
   const double h = a.str("h").empty() ? pde_h(a.str("h-rule"), dx) : a.positive("h");
-  const double tol = a.positive("tol");
+  require_local_h(h, a, h_opt);
+  const double tol = a.tolerance("tol");
   const double jitter = a.num("jitter");
   if (jitter < 0 || jitter >= 0.5) throw InputError("--jitter: " + a.str("jitter") + " is not in [0, 0.5)");
-  const long long seed = a.integer("seed");
-  if (seed < 0) throw InputError("--seed: " + a.str("seed") + " is negative");
-  const Particles p = jittered_grid(dx, static_cast<uint64_t>(seed), jitter);
+  const uint64_t seed = a.seed();
+  const WeightFunction& w = weight(a.str("weight"));
+  const LaplacianStorage storage = parse_laplacian_storage(a.str("storage"));
+  // Matrix-free: peak RSS / N was 264 bytes at dx = 2^-8; an assembled matrix adds 12 bytes
+  // per non-zero (11.8 measured), about pi (h/dx)^2 per unknown, |Omega|/|Omega_H| of the
+  // particles; `auto` assembles only within the 8 GB budget of DiscreteLaplacian.
+  const double nnz_bytes = 12 * kPi * (h / dx) * (h / dx) / Domain{}.area_H();
+  const double matrix_bytes = storage == LaplacianStorage::matrix_free ? 0
+                              : storage == LaplacianStorage::assembled
+                                  ? nnz_bytes
+                                  : std::min(nnz_bytes, 8e9 / grid_particle_count(dx));
+  require_grid_fits_memory(dx, 400 + matrix_bytes, "--dx");
+  const Particles p = jittered_grid(dx, seed, jitter);
   const auto V = uniform_volumes(p);
   const auto d = poisson_data(p, test_function("sin2pi"));
-  const DiscreteLaplacian L(p, V, weight(a.str("weight")), h, parse_laplacian_storage(a.str("storage")));
+  const DiscreteLaplacian L =
+      naming_small_h(a, h_opt, [&] { return DiscreteLaplacian(p, V, w, h, storage); });
   const PoissonResult r = solve_poisson(p, L, d.f, d.g, tol);
   const ErrorLocation e = locate_error(p, d.g, r.U, h);
   TsvTable t = header_from(a, "poisson");

@@ -66,15 +66,17 @@ std::string gib(double bytes) {
 }
 }  // namespace
 
+double grid_particle_count(double dx) {
+  const double per_axis = std::floor(Domain{}.side() / dx) + 1;
+  return per_axis * per_axis;
+}
+
 void require_grid_fits_memory(double dx, double bytes_per_particle, const std::string& option) {
   require_positive(dx, option);
-  const Domain dom;
   if (dx >= 0.5)
     throw InputError(option + " " + fmt(dx) + " is too coarse: no grid node would lie inside "
                               "Omega = (0,1)^2 (dx must be < 0.5)");
-  // In doubles: at dx = 1e-300 the count overflows any integer type.
-  const double per_axis = std::floor(dom.side() / dx) + 1;
-  const double n = per_axis * per_axis, need = n * bytes_per_particle;
+  const double n = grid_particle_count(dx), need = n * bytes_per_particle;
   const double have = machine_memory_bytes();
   if (have > 0 && !(need <= have)) {
     char count[32];

@@ -31,6 +31,10 @@ double peak_rss_mib();
 // The machine's memory in bytes (MemTotal of /proc/meminfo; 0 where unknown).
 double machine_memory_bytes();
 
+// Particles of a jittered grid of spacing dx on Ω_H, (⌊side/dx⌋ + 1)², as a double (at
+// dx = 1e-300 it overflows every integer type).
+double grid_particle_count(double dx);
+
 // Refuses, before anything is allocated, a grid spacing whose jittered grid on Ω_H would
 // need more memory than the machine has: N ≈ (side/dx + 1)² particles times
 // `bytes_per_particle` (what the caller's data structures hold per particle).  The
