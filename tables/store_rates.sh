@@ -68,9 +68,15 @@ for t in 4_5 4_6 4_7; do
     rate "thesis_table$t" "$r" "$tmp/finite.tsv" "$pub/thesis_table${t}_long.tsv" weight,theta
   done
 done
-if [ -f "$store/imoto_fig5_table1.tsv" ]; then
-  rate imoto_table1 all "$store/imoto_fig5_table1.tsv" "$pub/imoto_table1.tsv" operator,weight,m
-fi
+# imoto: seed 1 is the reproduction; seeds 2, 3 and the plain grid (no jitter) show how much
+# of a rate is one realization's particle noise.
+for v in all seed2 seed3 plain; do
+  f=$store/imoto_fig5_table1.tsv
+  [ $v = all ] || f=$store/imoto_fig5_table1_$v.tsv
+  if [ -f "$f" ]; then
+    rate imoto_table1 $v "$f" "$pub/imoto_table1.tsv" operator,weight,m
+  fi
+done
 
 # Merge: the key columns of each table joined into one "key" cell; columns found by name.
 {
@@ -87,7 +93,8 @@ fi
       /^#/ { next }
       !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
       { k = $c[keys[1]]; for (j=2;j<=nk;j++) k = k " " $c[keys[j]];
-        setup = s ~ /uniform/ ? "beyond the document (uniform volumes)" : "document"
+        setup = s ~ /uniform/ ? "beyond the document (uniform volumes)" \
+              : s ~ /^seed/ ? "another jitter realization" : s == "plain" ? "plain grid (no jitter)" : "document"
         sl = s ~ /dtexact/ ? s " (dt = dt0 exactly)" : s
         status = setup == "document" ? $c["status"] : "no published value for this set-up"
         printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", t, sl, setup, k, $c["published"], $c["reproduced"], $c["levels"], status }' "$r"

@@ -113,6 +113,8 @@ int body(int argc, char** argv) {
       .opt("profile", "quick", "quick (levels 5-10) or paper (levels 5-12)")
       .opt("levels", "", "comma-separated levels k (dx = 2^-k), 3..13; default: by profile")
       .opt("seed", "1", "jitter seed (non-negative integer)")
+      .opt("jitter", "0.25", "jitter amplitude in units of dx, in [0, 0.5); 0 = the plain grid,\n"
+                             "  whose error is the smoothing part without particle noise")
       .output("printed-out", "", "optional TSV: (Pi3) with the printed constant 5/pi")
       .opt("printed-max-level", "8", "finest level of the --printed-out check")
       .output("cost-out", "", "optional TSV: pairs and time per (level, m) of the paper profile,\n"
@@ -125,6 +127,14 @@ int body(int argc, char** argv) {
   const Profile profile = parse_profile(args.str("profile"));
   const std::vector<int> levels = levels_option(args, profile, kQuickLevels, kPaperLevels, 3, 13);
   const uint64_t seed = args.seed();
+  const double jitter = args.num("jitter");
+  if (!(jitter >= 0 && jitter < 0.5))
+    throw InputError("--jitter: " + args.str("jitter") + " is not in [0, 0.5)");
+  // The default's header text is kept as it was, so stored rows stay comparable.
+  const std::string jitter_text =
+      jitter == 0.25 ? "|eta| < 1/4, counter-based hash of (seed,i,j), mirrored at the edge"
+      : jitter == 0  ? "none: the plain grid (iΔx, jΔx)"
+                     : "|eta| < " + fmt(jitter) + ", counter-based hash of (seed,i,j), mirrored at the edge";
   const long long printed_max = args.integer("printed-max-level", 3, 13);
 
   // The data file's parameters: a cached row is reused only if all of these agree.
@@ -137,7 +147,7 @@ int body(int argc, char** argv) {
       {"volumes", "V_i = |Omega_H|/N"},
       {"h", "h_N = 2.6 * 2^(5/m-5) * dx^(1/m)"},
       {"H", fmt(dom.H)},
-      {"jitter", "|eta| < 1/4, counter-based hash of (seed,i,j), mirrored at the edge"},
+      {"jitter", jitter_text},
       {"norm", "relative l-inf over particles in Omega; denominators: discrete maxima; "
                "gradient: |.| the Euclidean length of the vector"},
       {"Pi3_constant", "6/pi (printed 5/pi does not normalize)"},
@@ -170,7 +180,7 @@ int body(int argc, char** argv) {
     for (double m : kOrders) any |= !cache.has({fmt(level), fmt(m)}, kCases.size());
     if (!any) continue;
     const double dx = std::ldexp(1.0, -level);
-    const Particles p = jittered_grid(dx, seed, 0.25, dom);
+    const Particles p = jittered_grid(dx, seed, jitter, dom);
     const std::vector<double> V = uniform_volumes(p, dom);
     for (double m : kOrders) {
       if (cache.has({fmt(level), fmt(m)}, kCases.size())) continue;
@@ -268,7 +278,7 @@ int body(int argc, char** argv) {
     for (int level : levels) {
       if (level > printed_max) continue;
       const double dx = std::ldexp(1.0, -level);
-      const Particles p = jittered_grid(dx, seed, 0.25, dom);
+      const Particles p = jittered_grid(dx, seed, jitter, dom);
       const std::vector<double> V = uniform_volumes(p, dom);
       for (double m : kOrders) {
         const double h = imoto_h(m, dx);

@@ -20,6 +20,9 @@ verify() {  # verify FILE PROGRAM ARGS...
 }
 # The cheap units of each study: the coarse levels, which take seconds.
 verify imoto_fig5_table1.tsv   imoto_fig5_table1 --levels 5,6,7
+verify imoto_fig5_table1_seed2.tsv imoto_fig5_table1 --seed 2 --levels 5,6,7
+verify imoto_fig5_table1_seed3.tsv imoto_fig5_table1 --seed 3 --levels 5,6,7
+verify imoto_fig5_table1_plain.tsv imoto_fig5_table1 --jitter 0 --levels 5,6,7
 verify thesis_table4_1.tsv     thesis_table4_1 --levels 5,6,7
 verify thesis_table4_2.tsv     thesis_table4_2 --levels 5,6,7
 verify thesis_table4_3.tsv     thesis_table4_3 --levels 5,6,7
