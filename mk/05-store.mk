@@ -5,7 +5,7 @@ STORE := results/paper
 STORE_FILES := $(wildcard $(STORE)/*.tsv)
 DATAFILES += $(DATA)/store_rates.tsv $(DATA)/store_summary.tsv $(DATA)/store_score.tsv
 
-$(DATA)/store_rates.tsv: tables/store_rates.sh $(STORE_FILES) $(BUILD)/rate_table $(BUILD)/gpm \
+$(DATA)/store_rates.tsv: tables/store_rates.sh tables/store_lib.sh $(STORE_FILES) $(BUILD)/rate_table $(BUILD)/gpm \
     $(wildcard tables/published/*.tsv)
 	@mkdir -p $(DATA)
 	bash $< $(BUILD) $(STORE) $@ $(DATA)/store_summary.tsv $(DATA)/store_score.tsv
@@ -14,7 +14,7 @@ $(DATA)/store_summary.tsv $(DATA)/store_score.tsv: $(DATA)/store_rates.tsv ;
 # The documents' open set-up questions, with the evidence the stored runs give (every number
 # read from the store by tables/decisions.sh).
 DATAFILES += $(DATA)/decisions.tsv
-$(DATA)/decisions.tsv: tables/decisions.sh $(STORE_FILES) $(BUILD)/rate_table \
+$(DATA)/decisions.tsv: tables/decisions.sh tables/store_lib.sh $(STORE_FILES) $(BUILD)/rate_table \
     tables/published/thesis_table4_7_long.tsv
 	@mkdir -p $(DATA)
 	bash $< $(BUILD) $(STORE) $@

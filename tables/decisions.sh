@@ -9,15 +9,11 @@ build=$1 store=$2 out=$3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 pub=tables/published
+source "$(dirname "$0")/store_lib.sh"  # finite
 
 # rates FILE LEVELS KEY: two-level rates of FILE's finite heat rows at LEVELS (rate_table)
 rates() {
-  awk -F'\t' '
-    FNR==1 && NR!=FNR { pass=2 }
-    /^#/ { if (pass==2) print; next }
-    !seen[pass]++ { for (i=1;i<=NF;i++) c[$i]=i; if (pass==2) print; next }
-    pass!=2 { if ($c["blew_up"]=="yes") bad[$1 "|" $2]=1; next }
-    !(($1 "|" $2) in bad)' "$1" "$1" > "$tmp/finite.tsv"
+  finite "$1" > "$tmp/finite.tsv"
   "$build/rate_table" --data "$tmp/finite.tsv" --published "$pub/thesis_table4_7_long.tsv" \
     --key weight,theta --levels "$2" --out "$tmp/r.tsv" >/dev/null
 }

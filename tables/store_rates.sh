@@ -34,15 +34,7 @@ rate() {
 slice() {
   awk -F'\t' -v r="$2" -v v="$3" '/^#/ || $1=="h_reading" || ($1==r && $2==v)' "$1"
 }
-# finite FILE: the rows of the heat series (weight, theta) that never blew up
-finite() {
-  awk -F'\t' '
-    FNR==1 && NR!=FNR { pass=2 }
-    /^#/ { if (pass==2) print; next }
-    !seen[pass]++ { for (i=1;i<=NF;i++) c[$i]=i; if (pass==2) print; next }
-    pass!=2 { if ($c["blew_up"]=="yes") bad[$1 "|" $2]=1; next }
-    !(($1 "|" $2) in bad)' "$1" "$1"
-}
+source "$(dirname "$0")/store_lib.sh"  # finite
 
 for t in 4_1 4_2 4_3; do
   f=$store/thesis_table$t.tsv
