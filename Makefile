@@ -47,7 +47,7 @@ help:
 # the run that follows recomputes them.  Usage in a recipe, before the study's own command:
 #   $(call store_recheck,PROGRAM [ARGS],LEVELS)
 store_recheck = $(if $(filter paper,$(PROFILE)),@if [ -f $@ ]; then $(1) --profile paper --out $@ \
-  --recheck --levels $(2) || echo "recheck: numbers changed, the run recomputes the older rows"; fi)
+  --recheck --levels $(2) || echo "recheck: numbers changed; the run recomputes the older rows"; fi)
 
 # --- set-up -----------------------------------------------------------------------------
 # Installs only what is missing; a second run costs one dpkg query per package.
