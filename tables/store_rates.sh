@@ -107,12 +107,13 @@ mv "$out.tmp" "$out"
     code=$("$build/gpm" fingerprint "$prog" | awk -F'\t' 'NR>2 { print $2 }')
     awk -F'\t' -v file="$(basename "$f")" -v prog="$prog" -v code="$code" '
       /^#/ { next }
-      !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
+      !h++ { for (i=1;i<=NF;i++) c[$i]=i; if (!("code" in c)) exit; next }
       { n++; lv[$c["level"]]=1; m[$c["made_on"]]=1
         if ($c["code"] != code) other++
         else if ($c["checked"] ~ /recheck/) carried++
         else fresh++ }
-      END { l=""; for (k=1; k<=20; k++) if (k in lv) l = l (l=="" ? "" : ",") k
+      END { if (!("code" in c)) exit  # a derived file (cost, rates input), not a study file
+            l=""; for (k=1; k<=20; k++) if (k in lv) l = l (l=="" ? "" : ",") k
             mo=""; for (k in m) mo = mo (mo=="" ? "" : "; ") k
             printf "%s\t%s\t%d\t%s\t%d\t%d\t%d\t%s\n", file, prog, n, l, fresh, carried, other, mo }' "$f"
   done
