@@ -64,25 +64,29 @@ span() {
   # --- Table 4.4: where the error sits, seeds, plain grid. --------------------------------------
   d=$store/thesis_poisson_diagnostic.tsv
   if [ -f "$d" ]; then
-    awk -F'\t' '
+    # The operator's smoothing error eps(kh) at each radius (gpm smoothing: no particles).
+    hs=$(awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next } { print $c["h"] }' "$d" | sort -u | paste -sd,)
+    "$build/gpm" smoothing --weight quartic_polynomial --h "$hs" | awk -F'\t' '!/^#/ && $1 != "h"' > "$tmp/eps.tsv"
+    awk -F'\t' 'NR==FNR { eps[$1]=$3; next }
+
       /^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
       $c["weight"] != "quartic_polynomial" { next }
       { r=$c["h_rule"]; l=$c["level"]; v=$c["variant"]; e=$c["rel_error"]+0; dd=$c["max_distance_over_h"]+0
         if (v=="plain") { plain[r,l]=e; hasplain[r,l]=1 } else { k=r SUBSEP l; if (!(k in lo) || e<lo[k]) lo[k]=e; if (!(k in hi) || e>hi[k]) hi[k]=e }
         k2=r SUBSEP l; if (!(k2 in dmin) || dd<dmin[k2]) dmin[k2]=dd; seen[r,l]=1; hov[r,l]=$c["h_over_H"]
-        err[r,l,v]=e; hh[r,l]=$c["h"]; vars[v]=1 }
+        err[r,l,v]=e; hh[r,l]=$c["h"]; ep[r,l]=eps[$c["h"]]; vars[v]=1 }
       END {
         for (ri=1; ri<=2; ri++) { r = ri==1 ? "h10" : "h15"; ev=""
           for (l=7; l<=9; l++) if ((r,l) in seen)
-            ev = ev sprintf(" 2^-%d (h/H %.2f): seeds error %.3g to %.3g, plain grid %s, maximum at least %.2f h from the boundary;",
-                            l, hov[r,l], lo[r,l], hi[r,l], ((r,l) in hasplain) ? sprintf("%.3g", plain[r,l]) : "not yet computed", dmin[r,l])
+            ev = ev sprintf(" 2^-%d (h/H %.2f): seeds error %.3g to %.3g, plain grid %s, operator smoothing error eps %.3g, maximum at least %.2f h from the boundary;",
+                            l, hov[r,l], lo[r,l], hi[r,l], ((r,l) in hasplain) ? sprintf("%.3g", plain[r,l]) : "not yet computed", ep[r,l], dmin[r,l])
           # Two-level rates 2^-8 -> 2^-9 of each particle set that has both levels.
           rt=""
           for (v in vars) if (((r,8,v) in err) && ((r,9,v) in err))
             rt = rt sprintf(" %s %.2f", v, log(err[r,8,v]/err[r,9,v]) / log(hh[r,8]/hh[r,9]))
-          if (rt != "") ev = ev " rates 2^-8/2^-9:" rt ";"
+          if (rt != "") ev = ev " rates 2^-8/2^-9:" rt sprintf(", of eps alone %.2f;", log(ep[r,8]/ep[r,9]) / log(hh[r,8]/hh[r,9]))
           printf "Table 4.4, quartic weight, %s: where the error sits\t%s\t%s\n", r, ev,
-            "the smallest distance of the maximum from the boundary is in the evidence column: a value above 1 puts it outside the boundary layer of width h" } }' "$d"
+            "the smallest distance of the maximum from the boundary is in the evidence column: a value above 1 puts it outside the boundary layer of width h; eps is the part of the error the operator makes without particles" } }' "$tmp/eps.tsv" "$d"
   else
     printf 'Table 4.4: where the error sits\tnot yet in the store\topen\n'
   fi

@@ -22,6 +22,7 @@
 #include "gpm/laplacian_matrix.hpp"
 #include "gpm/poisson.hpp"
 #include "gpm/poisson_probes.hpp"
+#include "gpm/smoothing.hpp"
 #include "gpm/profile.hpp"
 #include "gpm/study.hpp"
 #include "gpm/testfunctions.hpp"
@@ -267,6 +268,30 @@ int cmd_poisson(int argc, char** argv) {
   return 0;
 }
 
+// The smoothing part of the discrete Laplacian for one Fourier mode (smoothing.hpp): no
+// particles, so it separates the operator's own error from the particles' in a measurement.
+int cmd_smoothing(int argc, char** argv) {
+  Args a("gpm smoothing", "The Laplacian's smoothing error eps(kh) = 1 - (8 pi/(kh)^2) int_0^1\n"
+                          "(1 - J0(kh s)) w(s)/s ds for a weight and radii (no particles).");
+  a.opt("weight", "quartic_polynomial", "registry weight (gpm weights lists them)")
+      .opt("h", "", "comma-separated influence radii (required)")
+      .opt("k", "8.885765876316732", "wave number |k| (default 2 pi sqrt 2, for sin 2pi(x+y))");
+  a.parse(argc, argv, 2);
+  if (a.str("h").empty()) throw InputError("--h is required (see --help)");
+  const double k = a.positive("k");
+  const WeightFunction& w = weight(a.str("weight"));
+  TsvTable t = header_from(a, "smoothing");
+  t.set("eps", "1 - (8 pi/(kh)^2) int_0^1 (1 - J0(kh s)) w(s)/s ds: relative error of the "
+               "continuous operator on the mode");
+  t.columns = {"h", "kh", "eps"};
+  for (double h : a.nums("h")) {
+    require_positive(h, "--h");
+    t.add_row({fmt(h), fmt(k * h), fmt(laplacian_smoothing_error(w, k * h))});
+  }
+  print(t);
+  return 0;
+}
+
 // The fingerprint of the code that decides each named program's numbers, as the result
 // store's rows carry it (provenance.hpp): a stored row is current when they agree.
 int cmd_fingerprint(int argc, char** argv) {
@@ -293,6 +318,7 @@ int dispatch(int argc, char** argv) {
       "  voronoi     Voronoi cell areas, covering distances and r_c\n"
       "  trunc       relative l-infinity error of an operator\n"
       "  poisson     one discrete Poisson problem: error, where it sits, CG counts\n"
+      "  smoothing   the Laplacian's smoothing error for a Fourier mode (no particles)\n"
       "  fingerprint the code fingerprint of programs (result-store rows)\n";
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::cout << usage;
@@ -304,9 +330,10 @@ int dispatch(int argc, char** argv) {
   if (sub == "voronoi") return cmd_voronoi(argc, argv);
   if (sub == "trunc") return cmd_trunc(argc, argv);
   if (sub == "poisson") return cmd_poisson(argc, argv);
+  if (sub == "smoothing") return cmd_smoothing(argc, argv);
   if (sub == "fingerprint") return cmd_fingerprint(argc, argv);
   throw InputError("unknown subcommand '" + sub +
-                   "'; valid: weights, particles, voronoi, trunc, poisson, fingerprint");
+                   "'; valid: weights, particles, voronoi, trunc, poisson, smoothing, fingerprint");
 }
 
 }  // namespace

@@ -29,3 +29,27 @@ TEST_CASE("influence radius rules", "[unit][radius]") {
   REQUIRE_THROWS_AS(pde_h("h12", 1e-3), InputError);
   REQUIRE_THROWS_AS(pde_h("h10", -1), InputError);
 }
+
+#include "gpm/smoothing.hpp"
+#include "gpm/weights.hpp"
+#include <numbers>
+
+TEST_CASE("Laplacian smoothing error: small-kh limit and the quartic at the thesis' radii",
+          "[unit][smoothing]") {
+  // 1 − J₀(x) = x²/4 − x⁴/64 + …, so ε(kh) → (π/8)(kh)² ∫₀¹ s³ w(s) ds as kh → 0.
+  const WeightFunction& w = weight("quartic_polynomial");
+  double m3 = 0;
+  const int n = 200000;
+  for (int i = 0; i < n; ++i) {
+    const double s = (i + 0.5) / n;
+    m3 += s * s * s * w.value(s) / n;
+  }
+  const double c = std::numbers::pi / 8 * m3;
+  CHECK(laplacian_smoothing_error(w, 1e-2) / 1e-4 == Approx(c).epsilon(1e-3));
+  // Rate 2 asymptotically; still ≈ 2 between the h10 radii of 2^-8 and 2^-9.
+  const double h8 = pde_h("h10", std::ldexp(1.0, -8)), h9 = pde_h("h10", std::ldexp(1.0, -9));
+  const double k = 2 * std::numbers::pi * std::sqrt(2.0);
+  const double rate = std::log(laplacian_smoothing_error(w, k * h8) / laplacian_smoothing_error(w, k * h9)) /
+                      std::log(h8 / h9);
+  CHECK(rate == Approx(2.0).margin(0.05));
+}
