@@ -71,10 +71,10 @@ build: deps $(BUILD)/CMakeCache.txt
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j 1
 
-# Second tier: the cached paper-profile rates against the published ones (see
-# tests/rates/test_paper_tier.cpp); run after `make report PROFILE=paper`.
+# The [paper] tier alone (also part of make test): the committed store's rates against the
+# published ones (tests/paper/check_verdicts.sh).
 test-paper: build
-	$(BUILD)/gpm_tests "[paper]"
+	bash tests/paper/check_verdicts.sh $(BUILD) .
 
 # --- studies, figures, report sections -------------------------------------------------
 # Each study registers itself in mk/<study>.mk: its data rule(s), appending to STUDIES

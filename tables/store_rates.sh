@@ -11,9 +11,20 @@
 #
 # SCORE counts the verdicts per (table, slice).
 #
-# usage: store_rates.sh BUILD_DIR STORE_DIR OUT SUMMARY SCORE
+# Verdicts of a document row (`verdict` column), in this order:
+#   agrees                      within rate_table's tolerance of the published rate, where the
+#                               documents claim convergence;
+#   non-convergence reproduced  within tolerance where the published theoretical rate is NA
+#                               (imoto's m = 1 rows: the rate is about 0 or -1, a different claim);
+#   inside seed band            differs for seed 1, but the published rate lies between the
+#                               smallest and largest rate of the stored seeds 1-3 (imoto);
+#   differs, checked reason     a reason in CHECKED (checked_reasons.sh) whose diagnostic passed;
+#   differs, unexplained        none of the above;
+#   not computed / undefined    a level missing, or no finite rate.
+#
+# usage: store_rates.sh BUILD_DIR STORE_DIR OUT SUMMARY SCORE [CHECKED]
 set -euo pipefail
-build=$1 store=$2 out=$3 summary=$4 score=$5
+build=$1 store=$2 out=$3 summary=$4 score=$5 checked=${6:-/dev/null}
 tmp=$(mktemp -d)
 # Header lines every output carries (the report prints them under each table).
 rev=$(git describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)
@@ -51,10 +62,11 @@ if [ -f "$store/thesis_table4_4.tsv" ]; then
   rate thesis_table4_4 all "$store/thesis_table4_4.tsv" "$pub/thesis_table4_4_long.tsv" h_rule,weight
 fi
 for t in 4_5 4_6 4_7; do
-  for r in h10 h15 h10_dtexact; do
+  for r in h10 h15 h10_dtexact h10_cellvol; do
     f=$store/thesis_table$t.tsv
     if [ $r = h15 ]; then f=$store/thesis_table${t}_h15.tsv; fi
     if [ $r = h10_dtexact ]; then f=$store/thesis_table${t}_dtexact.tsv; fi
+    if [ $r = h10_cellvol ]; then f=$store/thesis_table${t}_cellvol.tsv; fi
     [ -f "$f" ] || continue
     finite "$f" > "$tmp/finite.tsv"
     rate "thesis_table$t" "$r" "$tmp/finite.tsv" "$pub/thesis_table${t}_long.tsv" weight,theta
@@ -71,26 +83,58 @@ for v in all seed2 seed3 plain; do
 done
 
 # Merge: the key columns of each table joined into one "key" cell; columns found by name.
+# The seed band of a key is the range of the rates of its seed-1, seed-2 and seed-3 slices.
 {
   echo "# program = tables/store_rates.sh"
   provenance
   echo "# store = $store"
-  echo "# note = rates at the documents' levels from the committed paper-profile rows; status from rate_table (tolerance in its header)"
-  printf 'table\tslice\tsetup\tkey\tpublished\treproduced\tlevels\tstatus\n'
+  echo "# checked_reasons = $checked"
+  echo "# note = rates at the documents' levels from the committed paper-profile rows; status from rate_table (tolerance in its header); verdict as listed in tables/store_rates.sh"
+  printf 'table\tslice\tsetup\tkey\tpublished\treproduced\tlevels\tstatus\tseed_band\tverdict\treason\n'
   for r in "$tmp"/rates/*.tsv; do
     [ -e "$r" ] || continue
     name=$(basename "$r" .tsv)
     awk -F'\t' -v t="${name%%.*}" -v s="${name#*.}" '
       /^# key = / { nk = split(substr($0, 9), keys, ",") }
+      # Whether the published file itself has a theoretical column (rate_table writes NA
+      # when it has none; only a printed NA means "no convergence claimed").
+      /^# published = / { f = substr($0, 15); claims = 0
+        while ((getline line < f) > 0) if (line !~ /^#/) { claims = line ~ /(^|\t)theoretical(\t|$)/; break }
+        close(f) }
       /^#/ { next }
       !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
       { k = $c[keys[1]]; for (j=2;j<=nk;j++) k = k " " $c[keys[j]];
         setup = s ~ /uniform/ ? "beyond the document (uniform volumes)" \
+              : s ~ /cellvol/ ? "beyond the document (V_i = dx^2)" \
               : s ~ /^seed/ ? "another jitter realization" : s == "plain" ? "plain grid (no jitter)" : "document"
         sl = s ~ /dtexact/ ? s " (dt = dt0 exactly)" : s
         status = setup == "document" ? $c["status"] : "no published value for this set-up"
-        printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", t, sl, setup, k, $c["published"], $c["reproduced"], $c["levels"], status }' "$r"
-  done
+        printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", t, sl, setup, k, $c["published"], $c["reproduced"], $c["levels"], status, claims ? $c["theoretical"] : "" }' "$r"
+  done > "$tmp/merged.tsv"
+  cp "$tmp/merged.tsv" "$tmp/merged_again.tsv"  # second pass (awk tells files by name)
+  awk -F'\t' '
+    function num(x) { return x ~ /^-?[0-9.]+([eE][-+]?[0-9]+)?$/ }
+    FILENAME == ARGV[1] { if (/^#/) next; if (!hc++) { for (i=1;i<=NF;i++) cc[$i]=i; next }
+                if ($cc["check"] == "pass") { ok[$cc["table"], $cc["slice"], $cc["key"]] = 1
+                  why[$cc["table"], $cc["slice"], $cc["key"]] = $cc["reason"] ": " $cc["evidence"] }
+                next }
+    FILENAME == ARGV[2] { seedslice = ($2 == "all" || $2 ~ /^seed[0-9]+$/) && $1 == "imoto_table1"
+                if (seedslice && num($6)) { k = $1 SUBSEP $4; n[k]++
+                  if (!(k in lo) || $6 + 0 < lo[k]) lo[k] = $6 + 0
+                  if (!(k in hi) || $6 + 0 > hi[k]) hi[k] = $6 + 0 }
+                next }
+    { k = $1 SUBSEP $4; band = (n[k] >= 2) ? sprintf("%.2f to %.2f (%d seeds)", lo[k], hi[k], n[k]) : ""
+      v = $8; reason = ""
+      if ($3 == "document") {
+        if ($8 == "agrees") v = $9 == "NA" ? "non-convergence reproduced" : "agrees"
+        else if ($8 ~ /^differs/) {
+          if (band != "" && num($5) && $5 + 0 >= lo[k] && $5 + 0 <= hi[k]) v = "inside seed band"
+          else if (($1, $2, $4) in ok) { v = "differs, checked reason"; reason = why[$1, $2, $4] }
+          else v = "differs, unexplained" }
+        else if ($8 == "not-computed") v = "not computed" }
+      else v = "not counted"
+      printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", $1, $2, $3, $4, $5, $6, $7, $8, band, v, reason }' \
+    "$checked" "$tmp/merged.tsv" "$tmp/merged_again.tsv"
 } > "$out.tmp"
 mv "$out.tmp" "$out"
 
@@ -127,18 +171,19 @@ awk -F'\t' '
   !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
   { seen[$c["table"]] = 1; k = $c["table"] OFS $c["slice"] OFS $c["setup"]
     if (!(k in n)) order[++m] = k
-    n[k]++; st[k, $c["status"]]++ }
+    n[k]++; st[k, $c["verdict"]]++ }
   END {
     print "# program = tables/store_rates.sh (score)"
     while ((getline line < "/dev/stdin") > 0) print line
-    print "table", "slice", "setup", "rates", "agrees", "differs", "not_computed", "undefined"
+    print "table", "slice", "setup", "rates", "agrees", "non_convergence", "in_seed_band", "checked_reason", "unexplained", "not_computed", "undefined"
     for (i=1;i<=m;i++) { k = order[i]
-      a = st[k, "agrees"] + 0; d = st[k, "differs-unexplained"] + st[k, "differs-explained"]
-      print k, n[k], a, d, st[k, "not-computed"] + 0, n[k] - a - d - st[k, "not-computed"] }
+      a = st[k, "agrees"] + 0; nc = st[k, "non-convergence reproduced"] + 0; b = st[k, "inside seed band"] + 0
+      cr = st[k, "differs, checked reason"] + 0; u = st[k, "differs, unexplained"] + 0; x = st[k, "not computed"] + 0
+      print k, n[k], a, nc, b, cr, u, x, n[k] - a - nc - b - cr - u - x }
     # Published tables with no stored file at all: every rate still to compute.
     split("imoto_table1 thesis_table4_1 thesis_table4_2 thesis_table4_3 thesis_table4_4 thesis_table4_5 thesis_table4_6 thesis_table4_7", all, " ")
     for (i=1; i in all; i++) if (!(all[i] in seen)) {
       f = all[i] == "imoto_table1" ? pub "/imoto_table1.tsv" : pub "/" all[i] "_long.tsv"
       np = 0; while ((getline line < f) > 0) if (line !~ /^#/ && np++ == 0) continue
-      print all[i], "not in the store", "document", np - 1, 0, 0, np - 1, 0 } }' pub="$pub" "$out" > "$score.tmp" < <(provenance)
+      print all[i], "not in the store", "document", np - 1, 0, 0, 0, 0, 0, np - 1, 0 } }' pub="$pub" "$out" > "$score.tmp" < <(provenance)
 mv "$score.tmp" "$score"

@@ -1,15 +1,21 @@
 // thesis_poisson_diagnostic: why Table 4.4 (thesis §4.2) is not reproduced at the thesis'
 // levels 2^-8, 2^-9 (rates 1.02, 0.89, 0.38 with the printed h10, negative with h15, against
 // the published 1.95, 1.99, 2.00).  For each reading of h, weight and level, the discrete
-// Poisson problem of Table 4.4 is solved on four particle sets — the jittered grid with
-// seeds 1, 2, 3 and the plain grid (jitter 0) — and every row records
+// Poisson problem of Table 4.4 is solved on six particle sets — the jittered grid with
+// seeds 1, 2, 3 and the plain grid (jitter 0), all with the thesis' volumes (A.10)
+// V_i = |Omega_H|/N, and seed 1 and the plain grid again with V_i = Δx² — and every row records
 //   * the relative ℓ∞(Ω) error and the particle where it sits (its distance from ∂Ω in units
-//     of h): a maximum in the boundary layer points at the stencils cut by ∂Ω_H when h > H;
-//   * the same error over the particles at least h from ∂Ω (rel_error_inner);
-//   * h/H: where h > H the stencils of particles near ∂Ω reach beyond Ω_H (the thesis
-//     defines w_h for 0 < h < H only).
-// The seed spread says how much of a two-level rate is one realization's particle noise; the
-// plain grid gives the error without it.
+//     of h), and the same error over the particles at least h from ∂Ω (rel_error_inner);
+//   * h/H: where h > H the stencils of particles near ∂Ω reach beyond Ω_H;
+//   * the operator's consistency on u itself, measured and predicted.  For the Fourier mode
+//     u = sin 2π(x+y) the discrete Laplacian is, before any particle effect,
+//         Δ_h u ≈ (V_i/Δx²)(1 − ε(kh)) Δu,
+//     ε the smoothing error (smoothing.hpp) and V_i/Δx² − 1 the volume mismatch (study.hpp):
+//     tau_predicted = (V/Δx²)(1 − ε) − 1.  Measured: tau_fit = Σ τ_i Δu_i / Σ Δu_i² (signed,
+//     τ_i = Δ_h u(x_i) − Δu(x_i) over Ω) and tau_max = max|τ_i| / max|Δu_i|.
+// If the error follows |tau_predicted| at a constant ratio, the rates follow the volume
+// mismatch and the smoothing error together, not h²; with V_i = Δx² the mismatch is gone.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -24,6 +30,7 @@
 #include "gpm/poisson.hpp"
 #include "gpm/poisson_probes.hpp"
 #include "gpm/profile.hpp"
+#include "gpm/smoothing.hpp"
 #include "gpm/study.hpp"
 #include "gpm/testfunctions.hpp"
 #include "gpm/weights.hpp"
@@ -36,14 +43,37 @@ const std::vector<int> kQuickLevels = {5, 6, 7};
 const std::vector<int> kPaperLevels = {7, 8, 9};  // the thesis' rate levels are 8, 9
 const std::vector<std::string> kWeights = {"quartic_polynomial", "piecewise_cubic_polynomial",
                                            "piecewise_quintic_polynomial"};
-// The particle sets: three realizations of the jitter and the plain grid.
+// The particle sets: three realizations of the jitter and the plain grid, with the volumes
+// of (A.10); then seed 1 and the plain grid with V_i = Δx² (pde_volumes, study.hpp).
 struct Variant {
   std::string name;
   uint64_t seed;
   double jitter;
+  std::string volumes;
 };
 const std::vector<Variant> kVariants = {
-    {"seed1", 1, 0.25}, {"seed2", 2, 0.25}, {"seed3", 3, 0.25}, {"plain", 1, 0.0}};
+    {"seed1", 1, 0.25, "lattice"},     {"seed2", 2, 0.25, "lattice"},
+    {"seed3", 3, 0.25, "lattice"},     {"plain", 1, 0.0, "lattice"},
+    {"seed1_cell", 1, 0.25, "cell"},   {"plain_cell", 1, 0.0, "cell"}};
+
+// The measured consistency of Δ_h on u over Ω: the signed projection of τ = Δ_h u − Δu on Δu,
+// and the max-norm ratio.
+struct Consistency {
+  double fit = 0, max = 0;
+};
+Consistency measured_consistency(const DiscreteLaplacian& L, const PoissonData& d) {
+  const Eigen::VectorXd u = Eigen::Map<const Eigen::VectorXd>(d.g.data(), d.g.size());
+  Eigen::VectorXd lap_h;
+  L.apply_full(u, lap_h);
+  double num = 0, den = 0, tmax = 0, lmax = 0;
+  for (std::size_t q = 0; q < L.n_unknowns(); ++q) {
+    const double lap = -d.f[L.omega()[q]];
+    const double tau = lap_h[q] - lap;
+    num += tau * lap, den += lap * lap;
+    tmax = std::max(tmax, std::fabs(tau)), lmax = std::max(lmax, std::fabs(lap));
+  }
+  return {num / den, tmax / lmax};
+}
 
 int body(int argc, char** argv) {
   Args a("thesis_poisson_diagnostic",
@@ -54,6 +84,8 @@ int body(int argc, char** argv) {
       .opt("weights", "quartic_polynomial,piecewise_cubic_polynomial,piecewise_quintic_polynomial",
            "comma-separated registry weights")
       .opt("levels", "", "override the profile's levels (comma-separated k, dx = 2^-k)")
+      .opt("variants", "seed1,seed2,seed3,plain,seed1_cell,plain_cell",
+           "comma-separated particle sets (seedN: jitter 1/4 dx; plain: none; _cell: V_i = dx^2)")
       .opt("tol", "1e-10", "CG relative residual on the symmetric form");
   add_cache_options(a);
   a.parse(argc, argv);
@@ -62,16 +94,32 @@ int body(int argc, char** argv) {
   const double tol = a.tolerance("tol");
   const auto weights = a.list("weights");
   for (auto& w : weights) weight(w);  // InputError naming an unknown weight, before any work
+  std::vector<Variant> variants;
+  for (auto& name : a.list("variants")) {
+    auto it = std::find_if(kVariants.begin(), kVariants.end(),
+                           [&](const Variant& v) { return v.name == name; });
+    if (it == kVariants.end())
+      throw InputError("--variants: unknown particle set '" + name +
+                       "' (seed1, seed2, seed3, plain, seed1_cell, plain_cell)");
+    variants.push_back(*it);
+  }
 
   // --- The data file: one row per (reading of h, weight, level, particle set). -------------
   LevelCache cache(a.str("out"),
                    {{"program", "thesis_poisson_diagnostic"}, {"profile", profile_name(prof)},
                     {"tol", fmt(tol)}, {"function", "sin2pi"}, {"volumes", "uniform |Omega_H|/N"},
                     {"h10", pde_h_formula("h10")}, {"h15", pde_h_formula("h15")},
-                    {"variants", "seed1, seed2, seed3: jitter 1/4 dx; plain: jitter 0"},
-                    {"rel_error_inner", "max over particles at least h from the boundary of Omega"}},
+                    {"variants", "seed1, seed2, seed3: jitter 1/4 dx; plain: jitter 0; "
+                                 "_cell: V_i = dx^2 instead of |Omega_H|/N"},
+                    {"rel_error_inner", "max over particles at least h from the boundary of Omega"},
+                    {"volume_mismatch", "V_i/dx^2 - 1"},
+                    {"eps_smoothing", "smoothing error eps(kh), k = 2 pi sqrt 2 (gpm smoothing)"},
+                    {"tau_predicted", "(V_i/dx^2)(1 - eps) - 1"},
+                    {"tau_fit", "sum tau_i lap_i / sum lap_i^2 over Omega, tau = lap_h u - lap u"},
+                    {"tau_max", "max |tau_i| / max |lap u| over Omega"}},
                    {"h_rule", "weight", "level", "variant", "dx", "h", "h_over_H", "N_omega",
                     "rel_error", "max_x", "max_y", "max_distance_over_h", "rel_error_inner",
+                    "volume_mismatch", "eps_smoothing", "tau_predicted", "tau_fit", "tau_max",
                     "cg_iterations", "seconds"},
                    4, cache_mode(a));
   const TestFunction& u = test_function("sin2pi");
@@ -79,10 +127,11 @@ int body(int argc, char** argv) {
   double total = 0;
   for (int k : levels) {
     const double dx = std::ldexp(1.0, -k);
-    for (const auto& var : kVariants) {
+    for (const auto& var : variants) {
       // One particle set per (level, variant), shared by every reading and weight.
       const Particles p = jittered_grid(dx, var.seed, var.jitter, dom);
-      const auto V = uniform_volumes(p, dom);
+      const auto V = pde_volumes(var.volumes, p, dx, dom);
+      const double mismatch = V.front() / (dx * dx) - 1;
       const PoissonData d = poisson_data(p, u);
       for (const auto& rule : pde_h_rules()) {
         const double h = pde_h(rule, dx);
@@ -90,6 +139,8 @@ int body(int argc, char** argv) {
           if (cache.has({rule, w, fmt(k), var.name})) continue;
           const auto t0 = std::chrono::steady_clock::now();
           const DiscreteLaplacian L(p, V, weight(w), h, LaplacianStorage::automatic);
+          const Consistency tau = measured_consistency(L, d);
+          const double eps = laplacian_smoothing_error(weight(w), kSin2piWaveNumber * h);
           const PoissonResult r = solve_poisson(p, L, d.f, d.g, tol);
           const ErrorLocation e = locate_error(p, d.g, r.U, h);
           const double secs =
@@ -97,15 +148,17 @@ int body(int argc, char** argv) {
           total += secs;
           cache.add({rule, w, fmt(k), var.name, fmt(dx), fmt(h), fmt(h / dom.H),
                      fmt(L.n_unknowns()), fmt(e.rel_error), fmt(e.x), fmt(e.y),
-                     fmt(e.distance_to_boundary / h), fmt(e.rel_error_inner),
+                     fmt(e.distance_to_boundary / h), fmt(e.rel_error_inner), fmt(mismatch),
+                     fmt(eps), fmt((1 + mismatch) * (1 - eps) - 1), fmt(tau.fit), fmt(tau.max),
                      fmt(r.cg.iterations), fmt(secs)});
           cache.table().set("wall_time_s", total);
           cache.save();
           std::fprintf(stderr,
                        "thesis_poisson_diagnostic: %s %-28s 2^-%d %-5s err=%.4e at (%.3f, %.3f) "
-                       "%.2f h from the boundary; inner %.4e  %.1f s\n",
+                       "%.2f h from the boundary; inner %.4e; tau fit %+.4e predicted %+.4e  %.1f s\n",
                        rule.c_str(), w.c_str(), k, var.name.c_str(), e.rel_error, e.x, e.y,
-                       e.distance_to_boundary / h, e.rel_error_inner, secs);
+                       e.distance_to_boundary / h, e.rel_error_inner, tau.fit,
+                       (1 + mismatch) * (1 - eps) - 1, secs);
         }
       }
     }

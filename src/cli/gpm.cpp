@@ -18,6 +18,7 @@
 #include "gpm/provenance.hpp"
 #include "gpm/domain.hpp"
 #include "gpm/error.hpp"
+#include "gpm/heat.hpp"
 #include "gpm/influence_radius.hpp"
 #include "gpm/laplacian_matrix.hpp"
 #include "gpm/poisson.hpp"
@@ -227,8 +228,10 @@ int cmd_poisson(int argc, char** argv) {
       .opt("seed", "1", "jitter seed")
       .opt("jitter", "0.25", "jitter amplitude in units of dx (0: the plain grid)")
       .opt("tol", "1e-10", "CG relative residual")
+      .opt("volumes", "lattice", "lattice: |Omega_H|/N (thesis (A.10)); cell: dx^2 (a diagnostic)")
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free");
   a.parse(argc, argv, 2);
+  pde_volumes_description(a.str("volumes"));  // InputError naming an unknown choice
   const double dx = a.positive("dx");
   const std::string h_opt = a.str("h").empty() ? "h-rule" : "h";
   const double h = a.str("h").empty() ? pde_h(a.str("h-rule"), dx) : a.positive("h");
@@ -249,7 +252,7 @@ int cmd_poisson(int argc, char** argv) {
                                   : std::min(nnz_bytes, 8e9 / grid_particle_count(dx));
   require_grid_fits_memory(dx, 400 + matrix_bytes, "--dx");
   const Particles p = jittered_grid(dx, seed, jitter);
-  const auto V = uniform_volumes(p);
+  const auto V = pde_volumes(a.str("volumes"), p, dx);
   const auto d = poisson_data(p, test_function("sin2pi"));
   const DiscreteLaplacian L =
       naming_small_h(a, h_opt, [&] { return DiscreteLaplacian(p, V, w, h, storage); });
@@ -258,12 +261,81 @@ int cmd_poisson(int argc, char** argv) {
   TsvTable t = header_from(a, "poisson");
   t.set("h_used", h);
   t.set("rel_error_inner", "over the particles at least h from the boundary of Omega");
-  t.columns = {"dx", "h", "h_over_H", "N", "N_omega", "nnz", "rel_error", "max_x", "max_y",
+  t.set("volumes", pde_volumes_description(a.str("volumes")));
+  t.set("volume_mismatch", "V_i/dx^2 - 1");
+  t.columns = {"dx", "h", "h_over_H", "N", "N_omega", "volume_mismatch", "nnz", "rel_error", "max_x", "max_y",
                "max_distance_over_h", "rel_error_inner", "cg_iterations", "rel_residual", "solve_s"};
   t.add_row({fmt(dx), fmt(h), fmt(h / Domain{}.H), fmt(p.size()), fmt(L.n_unknowns()),
-             fmt(static_cast<long long>(L.nnz())), fmt(e.rel_error), fmt(e.x), fmt(e.y),
+             fmt(V.front() / (dx * dx) - 1), fmt(static_cast<long long>(L.nnz())), fmt(e.rel_error), fmt(e.x), fmt(e.y),
              fmt(e.distance_to_boundary / h), fmt(e.rel_error_inner), fmt(r.cg.iterations),
              fmt(r.cg.rel_residual), fmt(r.solve_seconds)});
+  print(t);
+  return 0;
+}
+
+// One heat problem (thesis (3.2), §4.3's example) with a chosen weight, dx, h, θ and time
+// step: the ad hoc run behind one row of Tables 4.5–4.7, without writing C++.
+int cmd_heat(int argc, char** argv) {
+  Args a("gpm heat", "One discrete heat problem (thesis (3.2), u = exp(-2 kappa pi^2 t) sin(pi x) sin(pi y),\n"
+                     "kappa = 0.5, T = 0.1) with the theta-method: the relative error (4.2), steps, CG counts.");
+  a.opt("dx", "2^-6", "grid spacing")
+      .opt("weight", "quartic_polynomial", "registry weight (gpm weights lists them)")
+      .opt("h", "", "influence radius (or --h-rule)")
+      .opt("h-rule", "h10", "h10 = (2.6^4 2^-10 dx)^(1/4) as printed, h15 = (2.6^4 2^-15 dx)^(1/4)")
+      .opt("theta", "1", "theta in [0, 1] (0 explicit, 1/2 Crank-Nicolson, 1 implicit)")
+      .opt("dt", "", "time step dt0 (or --dt-c/--dt-p)")
+      .opt("dt-c", "0.5", "dt0 = dt-c * h^dt-p when --dt is not given (Table 4.5: 0.0025, 2; 4.6: 0.5, 2; 4.7: 0.5, 1)")
+      .opt("dt-p", "1", "power of h in dt0")
+      .opt("steps", "fit", "fit: K = ceil(T/dt0), dt = T/K; exact: dt = dt0, K = ceil(T/dt0)")
+      .opt("seed", "1", "jitter seed")
+      .opt("jitter", "0.25", "jitter amplitude in units of dx (0: the plain grid)")
+      .opt("volumes", "lattice", "lattice: |Omega_H|/N (thesis (A.10)); cell: dx^2 (a diagnostic)")
+      .opt("tol", "1e-10", "CG relative residual per implicit step")
+      .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free");
+  a.parse(argc, argv, 2);
+  pde_volumes_description(a.str("volumes"));  // InputError naming an unknown choice
+  const double dx = a.positive("dx");
+  const std::string h_opt = a.str("h").empty() ? "h-rule" : "h";
+  const double h = a.str("h").empty() ? pde_h(a.str("h-rule"), dx) : a.positive("h");
+  require_local_h(h, a, h_opt);
+  HeatSetting hs;
+  hs.theta = a.num("theta");
+  if (!(hs.theta >= 0 && hs.theta <= 1)) throw InputError("--theta: " + a.str("theta") + " is not in [0, 1]");
+  hs.dt_nominal = a.str("dt").empty() ? a.positive("dt-c") * std::pow(h, a.num("dt-p")) : a.positive("dt");
+  if (!(hs.dt_nominal > 0 && std::isfinite(hs.dt_nominal)))
+    throw InputError("--dt-c/--dt-p give dt0 = " + fmt(hs.dt_nominal) + ": not a positive number");
+  if (a.str("steps") != "fit" && a.str("steps") != "exact")
+    throw InputError("--steps: '" + a.str("steps") + "' is not fit or exact");
+  hs.fit_T = a.str("steps") == "fit";
+  hs.tol = a.tolerance("tol");
+  const double jitter = a.num("jitter");
+  if (jitter < 0 || jitter >= 0.5) throw InputError("--jitter: " + a.str("jitter") + " is not in [0, 0.5)");
+  if (hs.T / hs.dt_nominal > 1e7)
+    throw InputError("dt0 = " + fmt(hs.dt_nominal) + " needs more than 1e7 steps to reach T = " + fmt(hs.T));
+  const WeightFunction& w = weight(a.str("weight"));
+  const LaplacianStorage storage = parse_laplacian_storage(a.str("storage"));
+  require_grid_fits_memory(dx, 400 + (storage == LaplacianStorage::matrix_free ? 0
+                                      : std::min(12 * kPi * (h / dx) * (h / dx) / Domain{}.area_H(),
+                                                 8e9 / grid_particle_count(dx))), "--dx");
+  const Particles p = jittered_grid(dx, a.seed(), jitter);
+  const auto V = pde_volumes(a.str("volumes"), p, dx);
+  require_h_connectivity(p, h);
+  const DiscreteLaplacian L =
+      naming_small_h(a, h_opt, [&] { return DiscreteLaplacian(p, V, w, h, storage); });
+  const HeatResult r = solve_heat(p, L, hs);
+  TsvTable t = header_from(a, "heat");
+  t.set("h_used", h);
+  t.set("kappa", hs.kappa);
+  t.set("T", hs.T);
+  t.set("volumes", pde_volumes_description(a.str("volumes")));
+  t.set("error", "(4.2): max_k ||u-U||_l2(Omega_H) / max_k ||u||_l2(Omega_H)");
+  t.columns = {"dx", "h", "N", "N_omega", "volume_mismatch", "theta", "dt", "K", "steps_done",
+               "blew_up", "rel_error", "rel_error_max", "growth_max", "cg_mean_iterations", "seconds"};
+  t.add_row({fmt(dx), fmt(h), fmt(p.size()), fmt(L.n_unknowns()), fmt(V.front() / (dx * dx) - 1),
+             fmt(hs.theta), fmt(r.dt), fmt(static_cast<long long>(r.K)),
+             fmt(static_cast<long long>(r.steps_done)), r.blew_up ? "yes" : "no",
+             r.blew_up ? "NA" : fmt(r.rel_error), r.blew_up ? "NA" : fmt(r.rel_error_max),
+             fmt(r.growth_max), fmt(r.mean_cg_iterations), fmt(r.seconds)});
   print(t);
   return 0;
 }
@@ -275,7 +347,7 @@ int cmd_smoothing(int argc, char** argv) {
                           "(1 - J0(kh s)) w(s)/s ds for a weight and radii (no particles).");
   a.opt("weight", "quartic_polynomial", "registry weight (gpm weights lists them)")
       .opt("h", "", "comma-separated influence radii (required)")
-      .opt("k", "8.885765876316732", "wave number |k| (default 2 pi sqrt 2, for sin 2pi(x+y))");
+      .opt("k", fmt(kSin2piWaveNumber), "wave number |k| (default 2 pi sqrt 2, for sin 2pi(x+y))");
   a.parse(argc, argv, 2);
   if (a.str("h").empty()) throw InputError("--h is required (see --help)");
   const double k = a.positive("k");
@@ -318,6 +390,7 @@ int dispatch(int argc, char** argv) {
       "  voronoi     Voronoi cell areas, covering distances and r_c\n"
       "  trunc       relative l-infinity error of an operator\n"
       "  poisson     one discrete Poisson problem: error, where it sits, CG counts\n"
+      "  heat        one discrete heat problem (theta-method): error (4.2), steps, CG counts\n"
       "  smoothing   the Laplacian's smoothing error for a Fourier mode (no particles)\n"
       "  fingerprint the code fingerprint of programs (result-store rows)\n";
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
@@ -330,10 +403,11 @@ int dispatch(int argc, char** argv) {
   if (sub == "voronoi") return cmd_voronoi(argc, argv);
   if (sub == "trunc") return cmd_trunc(argc, argv);
   if (sub == "poisson") return cmd_poisson(argc, argv);
+  if (sub == "heat") return cmd_heat(argc, argv);
   if (sub == "smoothing") return cmd_smoothing(argc, argv);
   if (sub == "fingerprint") return cmd_fingerprint(argc, argv);
   throw InputError("unknown subcommand '" + sub +
-                   "'; valid: weights, particles, voronoi, trunc, poisson, smoothing, fingerprint");
+                   "'; valid: weights, particles, voronoi, trunc, poisson, heat, smoothing, fingerprint");
 }
 
 }  // namespace

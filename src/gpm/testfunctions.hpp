@@ -20,6 +20,9 @@ struct TestFunction {
 };
 
 const TestFunction& test_function(const std::string& name);  // InputError if unknown
+
+// sin2pi is the Fourier mode e^{ik·x} with k = 2π(1, 1): |k| = 2π√2 (for smoothing.hpp).
+inline constexpr double kSin2piWaveNumber = 8.885765876316732;
 std::vector<std::string> test_function_names();
 
 }  // namespace gpm

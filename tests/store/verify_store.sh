@@ -32,8 +32,10 @@ for t in 5 6 7; do
   verify thesis_table4_${t}_h15.tsv thesis_heat --table 4.$t --h-rule h15 --levels 5
 done
 verify thesis_table4_7_dtexact.tsv thesis_heat --table 4.7 --dt-rule exact --levels 5
+verify thesis_table4_7_cellvol.tsv thesis_heat --table 4.7 --volumes cell --levels 5
 verify thesis_stability.tsv    thesis_stability --levels 5
-verify thesis_poisson_diagnostic.tsv thesis_poisson_diagnostic --levels 7 --weights quartic_polynomial
+verify thesis_poisson_diagnostic.tsv thesis_poisson_diagnostic --levels 7 --weights quartic_polynomial \
+  --variants seed1,plain,seed1_cell
 [ ${#absent[@]} -gt 0 ] && echo "not in the store yet (nothing to check): ${absent[*]}"
 stale=$(cat "$store"/*.tsv 2>/dev/null | grep -v '^#' | grep -c 'of code ' || true)
 echo "store: $checked files agree with the current code, $failed differ; $stale rows carried over by a recorded re-check"

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Reasons for paper-scale rates that differ from the published ones, each CHECKED against the
+# stored data: one row per published rate (table, slice, key), with the diagnostic's numbers
+# (read from the store, none typed) and `check` = pass or fail.  store_rates.sh accepts a
+# reason for a differing rate only when its row here passes; otherwise the rate stays
+# "differs, unexplained".
+#
+# Table 4.4 (thesis §4.2): the volume mismatch of (A.10).  thesis_poisson_diagnostic records,
+# per reading of h, weight, level and particle set, the error and the operator's consistency
+# on u predicted from the smoothing error and the volume mismatch alone,
+#   tau_predicted = (V_i/dx^2)(1 - eps(kh)) - 1,
+# and the same problem with V_i = dx^2 (variant seed1_cell).  The reason holds for a row when
+#   (a) the rate predicted by |tau_predicted| (2^-8 -> 2^-9) is within TOL of the reproduced
+#       rate (the mechanism accounts for the number), and
+#   (b) the rate with V_i = dx^2 on the same particles is within TOL of the published rate
+#       (removing the cause restores the documents' number).
+#
+# usage: checked_reasons.sh STORE_DIR OUT
+set -euo pipefail
+store=$1 out=$2
+pub=tables/published
+tol=0.15  # the agreement tolerance of rate_table
+{
+  echo "# program = tables/checked_reasons.sh"
+  echo "# store = $store"
+  echo "# tolerance = $tol (rates)"
+  echo "# git_revision = $(git describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)"
+  echo "# written_utc = $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+  printf 'table\tslice\tkey\treason\tevidence\tcheck\n'
+  d=$store/thesis_poisson_diagnostic.tsv
+  if [ -f "$d" ] && grep -q tau_predicted "$d"; then
+    awk -F'\t' -v tol="$tol" '
+      function rate(a, b, ha, hb) { return log(a / b) / log(ha / hb) }
+      function abs(x) { return x < 0 ? -x : x }
+      FNR == 1 { file++ }
+      /^#/ { next }
+      !seen[file]++ { for (i = 1; i <= NF; i++) c[file, $i] = i; next }
+      file == 1 { pub[$c[1, "h_rule"], $c[1, "weight"]] = $c[1, "numerical"]; keys[++nk] = $c[1, "h_rule"] SUBSEP $c[1, "weight"]; next }
+      { k = $c[2, "h_rule"] SUBSEP $c[2, "weight"] SUBSEP $c[2, "level"] SUBSEP $c[2, "variant"]
+        err[k] = $c[2, "rel_error"]; tp[k] = $c[2, "tau_predicted"]; hh[k] = $c[2, "h"]
+        mm[k] = $c[2, "volume_mismatch"]; ep[k] = $c[2, "eps_smoothing"] }
+      END {
+        for (i = 1; i <= nk; i++) {
+          split(keys[i], kw, SUBSEP); r = kw[1]; w = kw[2]
+          a8 = r SUBSEP w SUBSEP 8 SUBSEP "seed1"; a9 = r SUBSEP w SUBSEP 9 SUBSEP "seed1"
+          c8 = r SUBSEP w SUBSEP 8 SUBSEP "seed1_cell"; c9 = r SUBSEP w SUBSEP 9 SUBSEP "seed1_cell"
+          if (!((a8 in err) && (a9 in err) && (c8 in err) && (c9 in err))) {
+            printf "thesis_table4_4\tall\t%s %s\tvolume mismatch of (A.10)\tdiagnostic not yet at 2^-8 and 2^-9\tfail\n", r, w
+            continue }
+          rl = rate(err[a8], err[a9], hh[a8], hh[a9])
+          rp = rate(abs(tp[a8]), abs(tp[a9]), hh[a8], hh[a9])
+          rc = rate(err[c8], err[c9], hh[c8], hh[c9])
+          p = pub[r, w]
+          ok = abs(rp - rl) <= tol && abs(rc - p) <= tol
+          printf "thesis_table4_4\tall\t%s %s\tvolume mismatch of (A.10): V_i = |Omega_H|/N differs from dx^2 by %+.2f%% at 2^-8 and %+.2f%% at 2^-9 (the grid does not tile Omega_H), which scales the discrete Laplacian and adds to the smoothing error\t", r, w, 100 * mm[a8], 100 * mm[a9]
+          printf "consistency predicted from eps and the mismatch: %+.4f at 2^-8, %+.4f at 2^-9 (eps alone %.4f, %.4f); error/|predicted| %.2f, %.2f; rate predicted %.2f, reproduced %.2f; with V_i = dx^2: rate %.2f (published %s)\t%s\n",
+            tp[a8], tp[a9], ep[a8], ep[a9], err[a8] / abs(tp[a8]), err[a9] / abs(tp[a9]), rp, rl, rc, p, ok ? "pass" : "fail" } }' \
+      "$pub/thesis_table4_4_long.tsv" "$d"
+  fi
+} > "$out.tmp"
+mv "$out.tmp" "$out"

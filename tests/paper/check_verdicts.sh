@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# The [paper] tier, part of make test: every paper-scale rate in the committed result store
+# (results/paper) against its published value.  The verdicts are computed from the stored rows
+# exactly as the report computes them (tables/checked_reasons.sh, tables/store_rates.sh):
+# agrees, non-convergence reproduced, inside the seed band, or differs with a checked reason.
+# A rate that differs without a checked reason must be listed, with what is open about it, in
+# tests/paper/known_unexplained.tsv — the package's open items, in one file.  The test fails
+#   * on an unexplained rate that is not listed (a regression, or a new rate nobody looked at),
+#   * on a listed rate that is no longer unexplained (the list must shrink when one is solved),
+#   * if the store yields no document rate at all.
+#
+# usage: check_verdicts.sh BUILD_DIR SOURCE_DIR
+set -euo pipefail
+build=$(cd "$1" && pwd)
+cd "$2"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+bash tables/checked_reasons.sh results/paper "$tmp/checked.tsv"
+bash tables/store_rates.sh "$build" results/paper "$tmp/rates.tsv" "$tmp/summary.tsv" "$tmp/score.tsv" "$tmp/checked.tsv"
+known=tests/paper/known_unexplained.tsv
+awk -F'\t' '
+  FILENAME == ARGV[1] { if (/^#/ || !hk++) next; listed[$1 "|" $2 "|" $3] = $4; next }
+  /^#/ { next }
+  !h++ { for (i = 1; i <= NF; i++) c[$i] = i; next }
+  $c["setup"] != "document" { next }
+  { k = $c["table"] "|" $c["slice"] "|" $c["key"]; v = $c["verdict"]; n++; count[v]++; present[k] = 1
+    if (v == "differs, unexplained") {
+      if (k in listed) { seen[k] = 1 }
+      else { bad++; printf "UNLISTED unexplained rate: %s (published %s, reproduced %s)\n", k, $c["published"], $c["reproduced"] } }
+    else if (k in listed) { bad++; printf "STALE entry in known_unexplained.tsv: %s is now \"%s\"; remove it\n", k, v } }
+  END {
+    for (k in listed) if (!(k in present)) { bad++; printf "STALE entry in known_unexplained.tsv: %s is not a stored document rate\n", k }
+    printf "paper-scale document rates: %d;", n
+    for (v in count) printf " %s %d;", v, count[v]
+    printf "\n"
+    if (n == 0) { print "no paper-scale rate in the store"; exit 1 }
+    exit bad > 0 }' "$known" "$tmp/rates.tsv"
