@@ -32,7 +32,7 @@ $(DATA)/thesis_connectivity_particles.tsv: $(BUILD)/thesis_fig_connectivity
 	$< --particles $@ --edges $(DATA)/thesis_connectivity_edges.tsv
 
 # One rate table per (table, h reading, volumes): slice, then rate_table against the
-# published long-format table; explained deviations from tables/explained/ where present.
+# published long-format table (rates judged only at the document's levels).
 thesis_key = $(if $(filter 4_3,$(1)),weight$(,)operator$(,)function,weight$(,)function)
 , := ,
 $(DATA)/thesis_table%_rates_printed_voronoi.tsv $(DATA)/thesis_table%_rates_scaled_voronoi.tsv \
@@ -42,9 +42,8 @@ $(DATA)/thesis_table%_rates_printed_uniform.tsv $(DATA)/thesis_table%_rates_scal
 	  r=$${s%_*}; v=$${s#*_}; out=$(DATA)/thesis_table$*_rates_$$s.tsv; \
 	  awk -F'\t' -v r=$$r -v v=$$v '/^#/ || $$1=="h_reading" || ($$1==r && $$2==v)' $< > $$out.slice; \
 	  if [ $$(grep -vc '^#' $$out.slice) -le 1 ]; then rm -f $$out.slice; continue; fi; \
-	  ex=tables/explained/thesis_table$*_$$s.tsv; \
 	  $(BUILD)/rate_table --data $$out.slice --published tables/published/thesis_table$*_long.tsv \
-	    --key $(call thesis_key,$*) $$( [ -f $$ex ] && [ "$(PROFILE)" = quick ] && echo --explained $$ex ) --out $$out || exit 1; \
+	    --key $(call thesis_key,$*) --out $$out || exit 1; \
 	  rm -f $$out.slice; \
 	done
 

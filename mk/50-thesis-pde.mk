@@ -1,8 +1,6 @@
 # Thesis §4.2–4.3 (issue 5): the discrete Poisson and heat problems, Figures 4.8–4.11,
 # Tables 4.4–4.7, each reproduced rate beside the published one (rate_table).
 PDE_HEAT := 4_5 4_6 4_7
-# Reasons for deviations are profile-specific (quick rates come from coarser levels).
-pde_explained = $(if $(wildcard tables/explained/thesis_table$(1)_$(PROFILE).tsv),--explained tables/explained/thesis_table$(1)_$(PROFILE).tsv)
 DATAFILES += $(DATA)/thesis_table4_4.tsv $(DATA)/thesis_table4_4_rates.tsv \
              $(foreach t,$(PDE_HEAT),$(DATA)/thesis_table$(t).tsv $(DATA)/thesis_table$(t)_rates.tsv) \
              $(foreach t,$(PDE_HEAT),$(DATA)/thesis_table$(t)_h15.tsv $(DATA)/thesis_table$(t)_h15_rates.tsv)
@@ -17,7 +15,7 @@ $(DATA)/thesis_table4_4.tsv: $(BUILD)/thesis_table4_4
 
 $(DATA)/thesis_table4_4_rates.tsv: $(BUILD)/rate_table $(DATA)/thesis_table4_4.tsv tables/published/thesis_table4_4_long.tsv
 	$< --data $(DATA)/thesis_table4_4.tsv --published tables/published/thesis_table4_4_long.tsv \
-	  $(call pde_explained,4_4) --key h_rule,weight --out $@
+	  --key h_rule,weight --out $@
 
 # One run of thesis_heat per table; it also writes the rows of the series that never
 # blew up (…_finite.tsv), which is what rate_table reads.
@@ -28,7 +26,7 @@ $(DATA)/thesis_table%.tsv: $(BUILD)/thesis_heat
 
 $(DATA)/thesis_table%_rates.tsv: $(BUILD)/rate_table $(DATA)/thesis_table%.tsv tables/published/thesis_table%_long.tsv
 	$< --data $(DATA)/thesis_table$*_finite.tsv --published tables/published/thesis_table$*_long.tsv \
-	  $(call pde_explained,$*) --key weight,theta --out $@
+	  --key weight,theta --out $@
 
 # The second reading of h, (2.6^4 2^-15 dx)^(1/4), as for the Poisson problem: separate
 # data files (…_h15.tsv), rates against the same published values.  The shorter stem makes
@@ -41,7 +39,7 @@ $(DATA)/thesis_table%_h15.tsv: $(BUILD)/thesis_heat
 
 $(DATA)/thesis_table%_h15_rates.tsv: $(BUILD)/rate_table $(DATA)/thesis_table%_h15.tsv tables/published/thesis_table%_long.tsv
 	$< --data $(DATA)/thesis_table$*_h15_finite.tsv --published tables/published/thesis_table$*_long.tsv \
-	  $(call pde_explained,$*_h15) --key weight,theta --out $@
+	  --key weight,theta --out $@
 
 $(FIGOUT)/thesis_fig4_8.svg: figures/thesis_fig4_8.gp figures/style.gp $(DATA)/thesis_table4_4.tsv
 $(FIGOUT)/thesis_fig4_9.svg: figures/thesis_fig4_9.gp figures/thesis_heat.gp figures/style.gp $(DATA)/thesis_table4_5.tsv

@@ -4,11 +4,14 @@
 // documents' two-finest-level rate log(e₁/e₂)/log(h₁/h₂) and a least-squares slope over
 // all levels, joins them with the published values (tables/published/*.tsv, long format,
 // matched on the key columns), and marks each row
+//   other-levels         the rate comes from other levels than the document's (the published
+//                        file's rate_levels): it is shown, not judged — a pre-asymptotic
+//                        rate from coarser levels neither agrees nor differs with the document
 //   agrees               |reproduced − published| ≤ tolerance
-//   differs-explained    otherwise, and tables/explained/<table>.tsv gives the reason
-//   differs-unexplained  otherwise
+//   differs              otherwise (a reason counts only where a diagnostic computed from the
+//                        data checks it: tables/checked_reasons.sh, for the paper-scale store)
 //   undefined            the rate is not a number (an error ≤ 0 or not finite at one of the
-//                        two levels): no agreement and no explained deviation can be claimed
+//                        two levels): no agreement can be claimed
 //   not-computed         the data file has fewer than two levels for this setting.
 // Two data rows with the same key and level are refused (one would silently replace the other).
 // The output is a data file like any other: the report shows it, `make test-paper` checks it.
@@ -48,7 +51,6 @@ int body(int argc, char** argv) {
          "least-squares slope, difference, status and reason (TSV).");
   a.opt("data", "", "the study's data file (rows: key columns, level, h, error)");
   a.opt("published", "", "published values, long format, with the key columns");
-  a.opt("explained", "", "optional file of explained deviations: key columns + reason");
   a.opt("key", "", "comma-separated key columns shared by data and published files");
   a.opt("level", "level", "level column of the data file (Δx = 2^-level)");
   a.opt("x", "h", "abscissa of the rate (log e against log x)");
@@ -75,15 +77,8 @@ int body(int argc, char** argv) {
   const int cv = col(pub, a.str("value"), a.str("published"));
   const int ct = pub.column("theoretical");
 
-  // Explained deviations: key columns + reason.
-  std::map<std::string, std::string> reason;
-  if (!a.str("explained").empty()) {
-    const TsvTable ex = TsvTable::load(a.str("explained"));
-    std::vector<int> ek;
-    for (auto& k : keys) ek.push_back(col(ex, k, a.str("explained")));
-    const int cr = col(ex, "reason", a.str("explained"));
-    for (std::size_t i = 0; i < ex.rows.size(); ++i) reason[key_of(ex, i, ek)] = ex.text(i, cr);
-  }
+  // The document's two levels, where the published file names them.
+  const std::string doc_levels = pub.get("rate_levels").value_or("");
 
   // Per key: (level, x, y) sorted by level; where each came from, for a duplicate's message.
   struct Point {
@@ -152,13 +147,11 @@ int body(int argc, char** argv) {
         status = "undefined";
       } else {
         diff = fmt(rate - published);
-        if (std::fabs(rate - published) <= tol) {
-          status = "agrees";
-        } else if (reason.count(key)) {
-          status = "differs-explained";
-          why = reason[key];
+        if (!doc_levels.empty() && levels != doc_levels) {
+          status = "other-levels";
+          why = "rate from levels " + levels + "; the document's are " + doc_levels;
         } else {
-          status = "differs-unexplained";
+          status = std::fabs(rate - published) <= tol ? "agrees" : "differs";
         }
       }
     }

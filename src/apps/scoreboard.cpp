@@ -14,12 +14,11 @@ using namespace gpm;
 
 namespace {
 
-const char* kStatuses[] = {"agrees", "differs-explained", "differs-unexplained", "undefined",
-                           "not-computed"};
+const char* kStatuses[] = {"agrees", "differs", "other-levels", "undefined", "not-computed"};
 
 int body(int argc, char** argv) {
-  Args a("scoreboard", "Count agrees / differs-explained / differs-unexplained / undefined /\n"
-                       "not-computed over the rate tables of one profile (TSV).");
+  Args a("scoreboard", "Count agrees / differs / other-levels / undefined / not-computed over\n"
+                       "the rate tables of one profile (TSV).");
   a.opt("tables", "", "comma-separated rate-table files (rate_table outputs)");
   a.opt("profile", "quick", "profile the tables come from (recorded only)");
   a.output("out", "", "output TSV");
@@ -59,10 +58,10 @@ int body(int argc, char** argv) {
   row.push_back("");
   out.add_row(row);
   out.save(a.str("out"));
-  std::printf("scoreboard: %d published rates: %d agree, %d differ (explained), %d differ "
-              "(unexplained), %d undefined, %d not computed\n",
-              total_rows, total["agrees"], total["differs-explained"],
-              total["differs-unexplained"], total["undefined"], total["not-computed"]);
+  std::printf("scoreboard: %d published rates: %d agree, %d differ, %d from other levels than "
+              "the document's (not judged), %d undefined, %d not computed\n",
+              total_rows, total["agrees"], total["differs"], total["other-levels"],
+              total["undefined"], total["not-computed"]);
   return 0;
 }
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The [paper] tier, part of make test: every paper-scale rate in the committed result store
-# (results/paper) against its published value.  The verdicts are computed from the stored rows
+# (results/paper) against its published value, in the reading of each table that the
+# scoreboard counts (store_rates.sh: each of the 80 published rates once).  The verdicts are computed from the stored rows
 # exactly as the report computes them (tables/checked_reasons.sh, tables/store_rates.sh):
 # agrees, non-convergence reproduced, inside the seed band, or differs with a checked reason.
 # A rate that differs without a checked reason must be listed, with what is open about it, in
@@ -22,7 +23,7 @@ awk -F'\t' '
   FILENAME == ARGV[1] { if (/^#/ || !hk++) next; listed[$1 "|" $2 "|" $3] = $4; next }
   /^#/ { next }
   !h++ { for (i = 1; i <= NF; i++) c[$i] = i; next }
-  $c["setup"] != "document" { next }
+  $c["setup"] != "document" || $c["counted"] != "yes" { next }
   { k = $c["table"] "|" $c["slice"] "|" $c["key"]; v = $c["verdict"]; n++; count[v]++; present[k] = 1
     if (v == "differs, unexplained") {
       if (k in listed) { seen[k] = 1 }
