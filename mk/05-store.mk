@@ -21,6 +21,7 @@ $(DATA)/store_summary.tsv $(DATA)/store_score.tsv: $(DATA)/store_rates.tsv ;
 # read from the store by tables/decisions.sh).
 DATAFILES += $(DATA)/decisions.tsv
 $(DATA)/decisions.tsv: tables/decisions.sh tables/store_lib.sh $(STORE_FILES) $(BUILD)/rate_table \
-    tables/published/thesis_table4_7_long.tsv
+    $(BUILD)/gpm tables/published/thesis_table4_7_long.tsv tables/published/thesis_table4_4_long.tsv \
+    $(DATA)/store_score.tsv
 	@mkdir -p $(DATA)
-	bash $< $(BUILD) $(STORE) $@
+	bash $< $(BUILD) $(STORE) $@ $(DATA)/store_score.tsv

@@ -3,9 +3,9 @@
 # each: one row per question, every number read from a data file of the result store, none
 # typed.  A question whose runs are not yet in the store says so.
 #
-# usage: decisions.sh BUILD_DIR STORE_DIR OUT
+# usage: decisions.sh BUILD_DIR STORE_DIR OUT [STORE_SCORE]
 set -euo pipefail
-build=$1 store=$2 out=$3
+build=$1 store=$2 out=$3 score=${4:-}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 pub=tables/published
@@ -93,6 +93,82 @@ span() {
   else
     printf 'Table 4.4: the volumes of (A.10)\tnot yet in the store\topen\n'
   fi
+
+  # --- imoto Table 1, Lap1/Lap2 at m = 5: smoothing, volume mismatch and particles. -----------
+  # Per level 2^-9..2^-12: the plain-grid error beside the prediction |(1 + delta)(1 - eps) - 1|
+  # (eps: gpm smoothing, no particles; delta = |Omega_H|/(N dx^2) - 1 of the stored N), the
+  # errors of seeds 1-3, and the 2^-11/2^-12 rates of each against the published one.
+  if [ -f "$store/imoto_fig5_table1_plain.tsv" ]; then
+    areaH=$("$build/gpm" particles --dx 2^-5 | sed -n 's/^# area_H = //p')
+    for w in Lap1 Lap2; do
+      awk -F'\t' -v w=$w '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
+        $c["weight"] == w && $c["m"] == 5 && $c["level"] >= 9 { print $c["h"] }' "$store/imoto_fig5_table1_plain.tsv" | sort -u | paste -sd, > "$tmp/hs"
+      [ -s "$tmp/hs" ] || continue
+      "$build/gpm" smoothing --weight $w --h "$(cat "$tmp/hs")" | awk -F'\t' '!/^#/ && $1 != "h"' > "$tmp/eps_$w.tsv"
+      awk -F'\t' -v w=$w -v A="$areaH" -v pubfile="$pub/imoto_table1.tsv" '
+        function abs(x) { return x < 0 ? -x : x }
+        BEGIN { while ((getline line < pubfile) > 0) { if (line ~ /^#/) continue; split(line, f, "\t")
+                  if (f[2] == w && f[3] == 5) pubrate = f[4] } }
+        FILENAME ~ /eps_/ { eps[$1] = $3; next }
+        /^#/ { next } !hdr[FILENAME]++ { for (i=1;i<=NF;i++) c[$i]=i; next }
+        $c["weight"] != w || $c["m"] != 5 || $c["level"] < 9 { next }
+        { v = FILENAME; sub(/.*imoto_fig5_table1_?/, "", v); sub(/\.tsv$/, "", v); if (v == "") v = "seed1"
+          l = $c["level"]; e[l, v] = $c["rel_error"]; hh[l] = $c["h"]; N[l] = $c["N"]; dx[l] = $c["dx"]; L[l] = 1 }
+        END { ev = ""
+          for (l = 9; l <= 12; l++) if (l in L) {
+            d = A / (N[l] * dx[l] * dx[l]) - 1; p = abs((1 + d) * (1 - eps[hh[l]]) - 1); pred[l] = p; ep[l] = eps[hh[l]]
+            ev = ev sprintf(" 2^-%d: plain %s, predicted %.3e (eps %.3e, delta %+.2e); seeds %s %s %s;", l,
+                            ((l, "plain") in e) ? sprintf("%.3e", e[l, "plain"]) : "not computed", p, eps[hh[l]], d,
+                            ((l, "seed1") in e) ? sprintf("%.3e", e[l, "seed1"]) : "-", ((l, "seed2") in e) ? sprintf("%.3e", e[l, "seed2"]) : "-",
+                            ((l, "seed3") in e) ? sprintf("%.3e", e[l, "seed3"]) : "-") }
+          r = " rates 2^-11/2^-12:"
+          split("seed1 seed2 seed3 plain", vs, " ")
+          for (j = 1; j <= 4; j++) if (((11, vs[j]) in e) && ((12, vs[j]) in e)) r = r sprintf(" %s %.2f", vs[j], log(e[11, vs[j]] / e[12, vs[j]]) / log(hh[11] / hh[12]))
+          if ((11 in L) && (12 in L)) r = r sprintf(", predicted (plain) %.2f, eps alone %.2f (published %s).", log(pred[11] / pred[12]) / log(hh[11] / hh[12]), log(ep[11] / ep[12]) / log(hh[11] / hh[12]), pubrate)
+          printf "imoto Table 1, %s at m = 5: smoothing, volume mismatch and particles\t%s%s\t%s\n", w, ev, r,
+            "the plain-grid error is the consistency error |(1 + delta)(1 - eps) - 1| of the operator (no particle part); the jittered seeds add the particle part, which shrinks fastest between 2^-11 and 2^-12 and so steepens the two-level rate" }' \
+        "$tmp/eps_$w.tsv" "$store"/imoto_fig5_table1.tsv "$store"/imoto_fig5_table1_seed[23].tsv "$store"/imoto_fig5_table1_plain.tsv
+    done
+  fi
+
+  # --- The reading of each table's set-up (h printed or scaled, h10 or h15, dt = T/K or dt0):
+  # per table, how many of its published rates each stored reading reproduces (store_score.tsv:
+  # agrees, non-convergence, seed band, checked reason), and the one the scoreboard counts.
+  if [ -n "$score" ] && [ -f "$score" ]; then
+    awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
+      $c["setup"] == "document" && $c["slice"] != "" && $c["slice"] != "not in the store" {
+        t = $c["table"]; g = $c["agrees"] + $c["non_convergence"] + $c["in_seed_band"] + $c["checked_reason"]
+        ev[t] = ev[t] sprintf(" %s: %d of %d reproduced (%d not yet computed);", $c["slice"], g, $c["rates"], $c["not_computed"])
+        n[t]++; if ($c["counted"] == "yes") pick[t] = $c["slice"]; if (!(t in seen)) { seen[t] = 1; order[++m] = t } }
+      END { for (i = 1; i <= m; i++) { t = order[i]; if (n[t] < 2) continue
+        printf "%s: which reading of the set-up the document ran\t%s\tcounted: %s (the reading reproduced most often; on a tie the one as printed); every reading stays in the data\n", t, ev[t], pick[t] } }' "$score"
+  fi
+
+  # --- Omega_H: the square or the rounded H-neighbourhood; jittered particles mirrored or dropped.
+  # From the package's own grid (gpm particles, plain grid): the nodes in the square Omega_H,
+  # those within distance H of Omega (the rounded H-neighbourhood the documents define), and
+  # the expected number of particles the jitter moves out of Omega_H (the thesis' X_{N,H} keeps
+  # only points in Omega_H; the package mirrors them back), with the volume mismatch of (A.10)
+  # either way.  The thesis prints N = 1,521 at dx = 2^-5 (Figure 4.1).
+  amp=$("$build/gpm" particles --dx 2^-5 | sed -n 's/^# jitter = //p')
+  ev=""
+  for k in 5 7 8 9; do
+    ev="$ev $("$build/gpm" particles --dx 2^-$k --jitter 0 | awk -F'\t' -v k=$k -v a="$amp" '
+      /^# dx_value = / { dx = $0; sub(/.*= /, "", dx) } /^# H = / { H = $0; sub(/.*= /, "", H) }
+      /^# area_H = / { A = $0; sub(/.*= /, "", A) }
+      /^#/ { next } !h++ { next }
+      { x = $1; y = $2; n++
+        ox = x < 0 ? -x : (x > 1 ? x - 1 : 0); oy = y < 0 ? -y : (y > 1 ? y - 1 : 0)
+        if (ox * ox + oy * oy < H * H) r++
+        ex = x + H < 1 + H - x ? x + H : 1 + H - x; ey = y + H < 1 + H - y ? y + H : 1 + H - y
+        px = ex < a * dx ? (a * dx - ex) / (2 * a * dx) : 0; py = ey < a * dx ? (a * dx - ey) / (2 * a * dx) : 0
+        E += 1 - (1 - px) * (1 - py) }
+      END { printf "2^-%d: N = %d in the square, %d in the rounded neighbourhood; %.0f expected to leave; volume mismatch %+.3f%% mirrored, %+.3f%% dropped;", k, n, r, E, 100 * (A / (n * dx * dx) - 1), 100 * (A / ((n - E) * dx * dx) - 1) }')"
+  done
+  printf 'Omega_H: the square (-H, 1+H)^2 or the rounded H-neighbourhood of Omega; jittered particles that leave Omega_H mirrored back or dropped\t%s\tthe square: its node count at 2^-5 is the N printed with Figure 4.1; particles mirrored (kept), the dropped alternative changes the volume mismatch by the amounts listed\n' "$ev"
+
+  # --- w^bell of the heat and Poisson studies (thesis §4.2-4.3). -------------------------------
+  printf 'w^bell of Sections 4.2-4.3: which registry weight\tthesis 4.1.2: the operators with the quartic polynomial are those of SPH with the bell-shaped kernel (Remark A.1: w = -(r/d) d/dr w^S); the unit test "quartic_polynomial is -(r/2) d/dr of the bell-shaped kernel" checks the registry weight against central differences of (5/pi)(1+3r)(1-r)^3 at r = 0.05..0.95\tquartic_polynomial (and piecewise cubic / quintic polynomial for w^cubic, w^quintic, by the same remark)\n'
 
   # --- The gradient norm (decided by the documents' definitions). ----------------------------
   printf 'Gradient error norm\timoto Sec. 1 defines |x| as the Euclidean norm; the thesis writes [l-inf(Omega)]^2 for vector fields; test "gradient error: Euclidean norm, brute force reference" checks the fused pass against a brute-force Euclidean evaluation and that the component-wise value differs\tEuclidean length of the error vector, maximum over particles in Omega (all gradient data since this change)\n'

@@ -118,6 +118,12 @@ int cmd_particles(int argc, char** argv) {
   require_grid_fits_memory(dx, kParticlesBytes, "--dx");
   const auto p = jittered_grid(dx, seed, jitter);
   TsvTable t = header_from(a, "particles");
+  const Domain dom;
+  t.set("dx_value", dx);
+  t.set("H", dom.H);
+  t.set("omega_H", "(" + fmt(dom.lo()) + ", " + fmt(dom.hi()) + ")^2, the square (Omega = (0, 1)^2)");
+  t.set("area_H", dom.area_H());
+  t.set("volume_mismatch", "|Omega_H|/(N dx^2) - 1 = " + fmt(volume_mismatch(p, dx, dom)));
   t.set("N", fmt(p.size()));
   t.set("N_in_omega", fmt(p.count_in_omega()));
   t.columns = {"x", "y", "in_omega", "i", "j"};

@@ -193,3 +193,18 @@ TEST_CASE("errata: printed forms that do not normalize", "[weights]") {
     CHECK_FALSE(e.evidence.empty());
   }
 }
+
+// w^bell of the thesis' §4.2–4.3 is SPH's bell-shaped (Lucy) kernel (5/π)(1+3r)(1−r)³; by
+// Remark A.1 the generalized operators use w = −(r/d) d/dr w^bell (d = 2), and §4.1.2 says the
+// quartic polynomial is that weight.  Checked here by central differences of the SPH kernel
+// against the registry's quartic_polynomial, so the Poisson and heat studies' choice of
+// quartic_polynomial for w^bell rests on a computation.
+TEST_CASE("quartic_polynomial is -(r/2) d/dr of the bell-shaped kernel", "[weights]") {
+  const auto bell = [](double r) { return r < 1 ? 5 / M_PI * (1 + 3 * r) * std::pow(1 - r, 3) : 0.0; };
+  const gpm::WeightFunction& qp = weight("quartic_polynomial");
+  const double e = 1e-6;
+  for (double r = 0.05; r < 1; r += 0.05) {
+    const double derived = -(r / 2) * (bell(r + e) - bell(r - e)) / (2 * e);
+    CHECK(qp.value(r) == Approx(derived).epsilon(1e-8));
+  }
+}
