@@ -224,44 +224,75 @@ int cmd_trunc(int argc, char** argv) {
 
 // One discrete Poisson problem of thesis §4.2 (u = sin 2π(x+y), uniform volumes), with the
 // error, where it sits, and the solver's counts: the ad hoc run behind Table 4.4.
-int cmd_poisson(int argc, char** argv) {
-  Args a("gpm poisson", "One discrete Poisson problem (thesis (2.2), u = sin 2pi(x+y), V_i = |Omega_H|/N):\n"
-                        "relative l-inf error over Omega, where the maximum sits, CG counts.");
-  a.opt("dx", "2^-6", "grid spacing")
+// What gpm poisson and gpm heat share: the options of one particle set, its volumes, the
+// weight and h, and the discrete Laplacian built from them (after the memory check).
+Args& add_pde_options(Args& a) {
+  return a.opt("dx", "2^-6", "grid spacing")
       .opt("weight", "quartic_polynomial", "registry weight (gpm weights lists them)")
       .opt("h", "", "influence radius (or --h-rule)")
       .opt("h-rule", "h10", "h10 = (2.6^4 2^-10 dx)^(1/4) as printed, h15 = (2.6^4 2^-15 dx)^(1/4)")
       .opt("seed", "1", "jitter seed")
       .opt("jitter", "0.25", "jitter amplitude in units of dx (0: the plain grid)")
-      .opt("tol", "1e-10", "CG relative residual")
       .opt("volumes", "lattice", "lattice: |Omega_H|/N (thesis (A.10)); cell: dx^2 (a diagnostic)")
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free");
-  a.parse(argc, argv, 2);
+}
+
+struct PdeSetup {
+  double dx = 0, h = 0;
+  std::string h_opt;  // the option h came from, for the messages
+  const WeightFunction* w = nullptr;
+  LaplacianStorage storage = LaplacianStorage::automatic;
+};
+
+// Reads and checks the options of add_pde_options (InputError naming the bad one).
+PdeSetup read_pde_options(const Args& a) {
   pde_volumes_description(a.str("volumes"));  // InputError naming an unknown choice
-  const double dx = a.positive("dx");
-  const std::string h_opt = a.str("h").empty() ? "h-rule" : "h";
-  const double h = a.str("h").empty() ? pde_h(a.str("h-rule"), dx) : a.positive("h");
-  require_local_h(h, a, h_opt);
-  const double tol = a.tolerance("tol");
+  PdeSetup s;
+  s.dx = a.positive("dx");
+  s.h_opt = a.str("h").empty() ? "h-rule" : "h";
+  s.h = a.str("h").empty() ? pde_h(a.str("h-rule"), s.dx) : a.positive("h");
+  require_local_h(s.h, a, s.h_opt);
   const double jitter = a.num("jitter");
   if (jitter < 0 || jitter >= 0.5) throw InputError("--jitter: " + a.str("jitter") + " is not in [0, 0.5)");
-  const uint64_t seed = a.seed();
-  const WeightFunction& w = weight(a.str("weight"));
-  const LaplacianStorage storage = parse_laplacian_storage(a.str("storage"));
-  // Matrix-free: peak RSS / N was 264 bytes at dx = 2^-8; an assembled matrix adds 12 bytes
-  // per non-zero (11.8 measured), about pi (h/dx)^2 per unknown, |Omega|/|Omega_H| of the
-  // particles; `auto` assembles only within the 8 GB budget of DiscreteLaplacian.
-  const double nnz_bytes = 12 * kPi * (h / dx) * (h / dx) / Domain{}.area_H();
-  const double matrix_bytes = storage == LaplacianStorage::matrix_free ? 0
-                              : storage == LaplacianStorage::assembled
+  a.seed();
+  s.w = &weight(a.str("weight"));
+  s.storage = parse_laplacian_storage(a.str("storage"));
+  return s;
+}
+
+// The particles, their volumes and the Laplacian, once the machine's memory is known to hold
+// them.  Matrix-free: peak RSS / N was 264 bytes at dx = 2^-8; an assembled matrix adds 12
+// bytes per non-zero (11.8 measured), about pi (h/dx)^2 per unknown, |Omega|/|Omega_H| of the
+// particles; `auto` assembles only within the 8 GB budget of DiscreteLaplacian.
+struct PdeProblem {
+  Particles p;
+  std::vector<double> V;
+};
+PdeProblem make_pde_problem(const Args& a, const PdeSetup& s) {
+  const double nnz_bytes = 12 * kPi * (s.h / s.dx) * (s.h / s.dx) / Domain{}.area_H();
+  const double matrix_bytes = s.storage == LaplacianStorage::matrix_free ? 0
+                              : s.storage == LaplacianStorage::assembled
                                   ? nnz_bytes
-                                  : std::min(nnz_bytes, 8e9 / grid_particle_count(dx));
-  require_grid_fits_memory(dx, 400 + matrix_bytes, "--dx");
-  const Particles p = jittered_grid(dx, seed, jitter);
-  const auto V = pde_volumes(a.str("volumes"), p, dx);
+                                  : std::min(nnz_bytes, 8e9 / grid_particle_count(s.dx));
+  require_grid_fits_memory(s.dx, 400 + matrix_bytes, "--dx");
+  PdeProblem pr;
+  pr.p = jittered_grid(s.dx, a.seed(), a.num("jitter"));
+  pr.V = pde_volumes(a.str("volumes"), pr.p, s.dx);
+  return pr;
+}
+
+int cmd_poisson(int argc, char** argv) {
+  Args a("gpm poisson", "One discrete Poisson problem (thesis (2.2), u = sin 2pi(x+y), V_i = |Omega_H|/N):\n"
+                        "relative l-inf error over Omega, where the maximum sits, CG counts.");
+  add_pde_options(a).opt("tol", "1e-10", "CG relative residual");
+  a.parse(argc, argv, 2);
+  const PdeSetup su = read_pde_options(a);
+  const double dx = su.dx, h = su.h;
+  const double tol = a.tolerance("tol");
+  const auto [p, V] = make_pde_problem(a, su);
   const auto d = poisson_data(p, test_function("sin2pi"));
   const DiscreteLaplacian L =
-      naming_small_h(a, h_opt, [&] { return DiscreteLaplacian(p, V, w, h, storage); });
+      naming_small_h(a, su.h_opt, [&] { return DiscreteLaplacian(p, V, *su.w, h, su.storage); });
   const PoissonResult r = solve_poisson(p, L, d.f, d.g, tol);
   const ErrorLocation e = locate_error(p, d.g, r.U, h);
   TsvTable t = header_from(a, "poisson");
@@ -284,26 +315,16 @@ int cmd_poisson(int argc, char** argv) {
 int cmd_heat(int argc, char** argv) {
   Args a("gpm heat", "One discrete heat problem (thesis (3.2), u = exp(-2 kappa pi^2 t) sin(pi x) sin(pi y),\n"
                      "kappa = 0.5, T = 0.1) with the theta-method: the relative error (4.2), steps, CG counts.");
-  a.opt("dx", "2^-6", "grid spacing")
-      .opt("weight", "quartic_polynomial", "registry weight (gpm weights lists them)")
-      .opt("h", "", "influence radius (or --h-rule)")
-      .opt("h-rule", "h10", "h10 = (2.6^4 2^-10 dx)^(1/4) as printed, h15 = (2.6^4 2^-15 dx)^(1/4)")
+  add_pde_options(a)
       .opt("theta", "1", "theta in [0, 1] (0 explicit, 1/2 Crank-Nicolson, 1 implicit)")
       .opt("dt", "", "time step dt0 (or --dt-c/--dt-p)")
       .opt("dt-c", "0.5", "dt0 = dt-c * h^dt-p when --dt is not given (Table 4.5: 0.0025, 2; 4.6: 0.5, 2; 4.7: 0.5, 1)")
       .opt("dt-p", "1", "power of h in dt0")
       .opt("steps", "fit", "fit: K = ceil(T/dt0), dt = T/K; exact: dt = dt0, K = ceil(T/dt0)")
-      .opt("seed", "1", "jitter seed")
-      .opt("jitter", "0.25", "jitter amplitude in units of dx (0: the plain grid)")
-      .opt("volumes", "lattice", "lattice: |Omega_H|/N (thesis (A.10)); cell: dx^2 (a diagnostic)")
-      .opt("tol", "1e-10", "CG relative residual per implicit step")
-      .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free");
+      .opt("tol", "1e-10", "CG relative residual per implicit step");
   a.parse(argc, argv, 2);
-  pde_volumes_description(a.str("volumes"));  // InputError naming an unknown choice
-  const double dx = a.positive("dx");
-  const std::string h_opt = a.str("h").empty() ? "h-rule" : "h";
-  const double h = a.str("h").empty() ? pde_h(a.str("h-rule"), dx) : a.positive("h");
-  require_local_h(h, a, h_opt);
+  const PdeSetup su = read_pde_options(a);
+  const double dx = su.dx, h = su.h;
   HeatSetting hs;
   hs.theta = a.num("theta");
   if (!(hs.theta >= 0 && hs.theta <= 1)) throw InputError("--theta: " + a.str("theta") + " is not in [0, 1]");
@@ -314,20 +335,12 @@ int cmd_heat(int argc, char** argv) {
     throw InputError("--steps: '" + a.str("steps") + "' is not fit or exact");
   hs.fit_T = a.str("steps") == "fit";
   hs.tol = a.tolerance("tol");
-  const double jitter = a.num("jitter");
-  if (jitter < 0 || jitter >= 0.5) throw InputError("--jitter: " + a.str("jitter") + " is not in [0, 0.5)");
   if (hs.T / hs.dt_nominal > 1e7)
     throw InputError("dt0 = " + fmt(hs.dt_nominal) + " needs more than 1e7 steps to reach T = " + fmt(hs.T));
-  const WeightFunction& w = weight(a.str("weight"));
-  const LaplacianStorage storage = parse_laplacian_storage(a.str("storage"));
-  require_grid_fits_memory(dx, 400 + (storage == LaplacianStorage::matrix_free ? 0
-                                      : std::min(12 * kPi * (h / dx) * (h / dx) / Domain{}.area_H(),
-                                                 8e9 / grid_particle_count(dx))), "--dx");
-  const Particles p = jittered_grid(dx, a.seed(), jitter);
-  const auto V = pde_volumes(a.str("volumes"), p, dx);
+  const auto [p, V] = make_pde_problem(a, su);
   require_h_connectivity(p, h);
   const DiscreteLaplacian L =
-      naming_small_h(a, h_opt, [&] { return DiscreteLaplacian(p, V, w, h, storage); });
+      naming_small_h(a, su.h_opt, [&] { return DiscreteLaplacian(p, V, *su.w, h, su.storage); });
   const HeatResult r = solve_heat(p, L, hs);
   TsvTable t = header_from(a, "heat");
   t.set("h_used", h);
