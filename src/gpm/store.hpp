@@ -39,6 +39,9 @@ CacheMode cache_mode(const Args& a);
 // The runs are deterministic for any thread count (the pair sums run in a fixed order), so
 // on one machine they agree bitwise; the tolerance admits another CPU's rounding.
 constexpr double kStoreRelTol = 1e-9;
+// Solver residual columns (name contains "residual") agree when |a − b| ≤ this, absolutely:
+// they sit at the rounding level, where a relative comparison measures only rounding noise.
+constexpr double kStoreResidualAbsTol = 1e-13;
 
 // The provenance columns every store row ends with.
 const std::vector<std::string>& row_provenance_columns();

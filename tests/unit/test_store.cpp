@@ -197,3 +197,21 @@ TEST_CASE("store: a recheck against the current code's own rows carries nothing 
   for (auto& r : rows_of(f))
     if (r[0] == "6") CHECK(r[code] == "0123456789ab");
 }
+
+// A solver residual (~1e-11) is compared absolutely (kStoreResidualAbsTol): its relative
+// change from rounding alone (~1e-6) is not a change of the numerics; a residual that moves
+// by more than the absolute tolerance still is.
+TEST_CASE("store: residual columns are compared absolutely", "[unit][store]") {
+  TempDir t("gpm_store_");
+  const std::string f = t.file("r.tsv");
+  const std::vector<std::string> cols = {"level", "rel_error", "max_rel_residual"};
+  auto study = [&](CacheMode mode, double residual) {
+    LevelCache c(f, kParams, cols, 1, mode);
+    c.add({"5", fmt(0.125), fmt(residual)});
+    c.save();
+    c.finish();
+  };
+  study(CacheMode::run, 6.753016866560343e-11);
+  REQUIRE_NOTHROW(study(CacheMode::verify, 6.753015449936592e-11));  // rounding: 2e-6 relative
+  REQUIRE_THROWS_AS(study(CacheMode::verify, 6.753e-11 + 5 * kStoreResidualAbsTol), StoreMismatch);
+}
