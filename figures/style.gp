@@ -28,3 +28,6 @@ rows(f, cond) = sprintf("< awk -F'\t' '!/^#/ && (%s)' '%s'", cond, f)
 # less than a decade, where '10^{%L}' would leave a single label.  Set the range first:
 #   xlo = 0.09; xhi = 0.22; eval pow2_xtics
 pow2_xtics = "set logscale x 2; set xrange [xlo:xhi]; set xtics ('' xlo); do for [k=ceil(2*log(xlo)/log(2)):floor(2*log(xhi)/log(2))] { set xtics add (sprintf('2^{%g}', k/2.0) 2**(k/2.0)) }"
+# Data rows chosen by column NAME, header kept, for `set datafile columnheaders` and
+# column("name") in `using`:   plot rows_named(f, '$c["variant"]=="seed1"') using (column("h")):(column("rel_error"))
+rows_named(f, cond) = sprintf("< awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; print; next } (%s)' '%s'", cond, f)

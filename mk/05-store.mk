@@ -25,3 +25,9 @@ $(DATA)/decisions.tsv: tables/decisions.sh tables/store_lib.sh $(STORE_FILES) $(
     $(DATA)/store_score.tsv
 	@mkdir -p $(DATA)
 	bash $< $(BUILD) $(STORE) $@ $(DATA)/store_score.tsv
+
+# Figures from the store itself (paper scale, whatever the profile).
+FIGFILES += $(FIGOUT)/thesis_poisson_volumes.svg
+$(FIGOUT)/thesis_poisson_volumes.svg: figures/thesis_poisson_volumes.gp figures/style.gp $(STORE)/thesis_poisson_diagnostic.tsv
+	@mkdir -p $(FIGOUT)
+	gnuplot -e "datadir='$(DATA)'; storedir='$(STORE)'; out='$@.tmp'" $< && mv $@.tmp $@
