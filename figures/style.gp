@@ -31,3 +31,10 @@ pow2_xtics = "set logscale x 2; set xrange [xlo:xhi]; set xtics ('' xlo); do for
 # Data rows chosen by column NAME, header kept, for `set datafile columnheaders` and
 # column("name") in `using`:   plot rows_named(f, '$c["variant"]=="seed1"') using (column("h")):(column("rel_error"))
 rows_named(f, cond) = sprintf("< awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; print; next } (%s)' '%s'", cond, f)
+# A slope-s triangle under the two finest points (smallest h) of the series in the string
+# variable ANCHOR (a rows_named(...) source; needs `set datafile columnheaders`; call before any
+# xrange/yrange is set, which stats would apply):   ANCHOR = sel(1, 1); eval anchored_triangle(2, 'slope 2')
+anchored_triangle(s, lab) = "stats ANCHOR using (column('h')) name 'AX' nooutput; " . \
+  "stats ANCHOR using (column('h') > AX_min ? column('h') : NaN) name 'AX2' nooutput; " . \
+  "stats ANCHOR using (column('h') == AX_min ? column('rel_error') : NaN) name 'AY' nooutput; " . \
+  sprintf("eval triangle(AX_min, AY_min * 0.7, AX2_min / AX_min, %g, '%s')", s, lab)

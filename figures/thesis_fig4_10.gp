@@ -2,5 +2,5 @@
 load 'figures/style.gp'
 f = datadir.'/thesis_table4_6.tsv'
 thetas = '0.5 1'
-eval triangle(0.12, 5e-4, 1.2, 2, 'slope 2')
+slopes = '2 2'  # Theorem 3.7 with m = 4 and the table's dt
 load 'figures/thesis_heat.gp'

@@ -2,6 +2,5 @@
 load 'figures/style.gp'
 f = datadir.'/thesis_table4_7.tsv'
 thetas = '0.5 1'
-eval triangle(0.12, 5e-4, 1.2, 2, 'slope 2')
-eval triangle(0.12, 3e-2, 1.2, 1, 'slope 1')
+slopes = '2 1'  # Theorem 3.7 with m = 4 and the table's dt
 load 'figures/thesis_heat.gp'
