@@ -55,6 +55,13 @@ span() {
               printf "at levels %s the closer reading is %s (mean |rate - published| %.2f against %.2f)", lv,
                      (b < a ? "dt = dt0" : "dt = T/K"), (b < a ? b : a), (b < a ? a : b) }' "$tmp/fit.tsv" "$tmp/ex.tsv")
     done
+    # The same set-up with V_i = dx^2 (the volume mismatch that sets Table 4.4's rates removed).
+    cv=$store/thesis_table4_7_cellvol.tsv
+    if [ -f "$cv" ]; then
+      rates "$cv" 8,9
+      c1=$(span reproduced theta 1 "$tmp/r.tsv"); c5=$(span reproduced theta 0.5 "$tmp/r.tsv")
+      ev="$ev With V_i = dx^2 (dt = T/K), levels 8/9: theta=1 $c1, theta=1/2 $c5."
+    fi
     Kf=$(awk -F'\t' '/^#/{next} !h++{for(i=1;i<=NF;i++)c[$i]=i;next} {k[$c["level"]]=$c["K"]} END{for(l=5;l<=9;l++) if(l in k) printf "%s2^-%d: %s", (n++?", ":""), l, k[l]}' "$fit")
     printf 'Table 4.7 (dt = 0.5h, T = 0.1): dt = T/K with K = ceil(T/dt0) (the thesis defines dt = T/K), or dt = dt0 as prescribed\t%s Steps K under dt = T/K: %s.\tboth readings kept; %s\n' "$ev" "$Kf" "${verdict:-no level pair computed under both}"
   else
