@@ -108,8 +108,9 @@ span() {
   if [ -f "$store/imoto_fig5_table1_plain.tsv" ]; then
     areaH=$("$build/gpm" particles --dx 2^-5 | sed -n 's/^# area_H = //p')
     for w in Lap1 Lap2; do
-      awk -F'\t' -v w=$w '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
-        $c["weight"] == w && $c["m"] == 5 && $c["level"] >= 9 { print $c["h"] }' "$store/imoto_fig5_table1_plain.tsv" | sort -u | paste -sd, > "$tmp/hs"
+      awk -F'\t' -v w=$w '/^#/ { next } !hdr[FILENAME]++ { for (i=1;i<=NF;i++) c[$i]=i; next }
+        $c["weight"] == w && $c["m"] == 5 && $c["level"] >= 9 { print $c["h"] }' \
+        "$store"/imoto_fig5_table1.tsv "$store"/imoto_fig5_table1_seed[23].tsv "$store"/imoto_fig5_table1_plain.tsv | sort -u | paste -sd, > "$tmp/hs"
       [ -s "$tmp/hs" ] || continue
       "$build/gpm" smoothing --weight $w --h "$(cat "$tmp/hs")" | awk -F'\t' '!/^#/ && $1 != "h"' > "$tmp/eps_$w.tsv"
       awk -F'\t' -v w=$w -v A="$areaH" -v pubfile="$pub/imoto_table1.tsv" '
