@@ -18,8 +18,10 @@ set datafile separator "\t"
 set datafile commentschars "#"
 # Draw a reference-slope triangle of slope s with its lower-left corner at (x0, y0),
 # spanning a factor f in x: call   eval triangle(x0, y0, f, s, 'label')
-triangle(x0, y0, f, s, lab) = sprintf("set object polygon from %g,%g to %g,%g to %g,%g to %g,%g fs empty border lc rgb '#000000'; set label '%s' at %g,%g center font ',10'", \
-  x0, y0, x0*f, y0, x0*f, y0*f**s, x0, y0, lab, x0*sqrt(f)*1.0, y0*0.75)
+# The label sits left of the triangle's lower-left corner, so neighbouring triangles do not
+# share label space.
+triangle(x0, y0, f, s, lab) = sprintf("set object polygon from %g,%g to %g,%g to %g,%g to %g,%g fs empty border lc rgb '#000000'; set label '%s' at %g,%g right font ',10'", \
+  x0, y0, x0*f, y0, x0*f, y0*f**s, x0, y0, lab, x0/1.06, y0)
 # Rows of a data file that satisfy an awk condition on its tab-separated columns, e.g.
 #   plot rows(f, '$4=="grid"') using 2:10
 # (filtering outside gnuplot keeps lines unbroken where other rows are interleaved).
@@ -37,4 +39,5 @@ rows_named(f, cond) = sprintf("< awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF
 anchored_triangle(s, lab) = "stats ANCHOR using (column('h')) name 'AX' nooutput; " . \
   "stats ANCHOR using (column('h') > AX_min ? column('h') : NaN) name 'AX2' nooutput; " . \
   "stats ANCHOR using (column('h') == AX_min ? column('rel_error') : NaN) name 'AY' nooutput; " . \
-  sprintf("eval triangle(AX_min, AY_min * 0.7, AX2_min / AX_min, %g, '%s')", s, lab)
+  sprintf("eval triangle(AX_min, AY_min * ANCHOR_DROP, AX2_min / AX_min, %g, '%s')", s, lab)
+ANCHOR_DROP = 0.7  # how far below the finest point the triangle sits (factor in y)
