@@ -31,3 +31,9 @@ FIGFILES += $(FIGOUT)/thesis_poisson_volumes.svg
 $(FIGOUT)/thesis_poisson_volumes.svg: figures/thesis_poisson_volumes.gp figures/style.gp $(STORE)/thesis_poisson_diagnostic.tsv
 	@mkdir -p $(FIGOUT)
 	gnuplot -e "datadir='$(DATA)'; storedir='$(STORE)'; out='$@.tmp'" $< && mv $@.tmp $@
+
+# What the store still owes, with the predicted time of each missing level on this machine.
+DATAFILES += $(DATA)/store_missing.tsv
+$(DATA)/store_missing.tsv: tables/store_missing.sh $(STORE_FILES) $(DATA)/plan_paper.tsv
+	@mkdir -p $(DATA)
+	bash $< $(STORE) $(DATA)/plan_paper_summary.tsv $@
