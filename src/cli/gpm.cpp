@@ -225,7 +225,7 @@ int cmd_trunc(int argc, char** argv) {
 // One discrete Poisson problem of thesis §4.2 (u = sin 2π(x+y), uniform volumes), with the
 // error, where it sits, and the solver's counts: the ad hoc run behind Table 4.4.
 // What gpm poisson and gpm heat share: the options of one particle set, its volumes, the
-// weight and h, and the discrete Laplacian built from them (after the memory check).
+// weight, h and the Laplacian's storage.
 Args& add_pde_options(Args& a) {
   return a.opt("dx", "2^-6", "grid spacing")
       .opt("weight", "quartic_polynomial", "registry weight (gpm weights lists them)")
@@ -260,8 +260,8 @@ PdeSetup read_pde_options(const Args& a) {
   return s;
 }
 
-// The particles, their volumes and the Laplacian, once the machine's memory is known to hold
-// them.  Matrix-free: peak RSS / N was 264 bytes at dx = 2^-8; an assembled matrix adds 12
+// The particles and their volumes, once the machine's memory is known to hold them and the
+// Laplacian the caller builds.  Matrix-free: peak RSS / N was 264 bytes at dx = 2^-8; an assembled matrix adds 12
 // bytes per non-zero (11.8 measured), about pi (h/dx)^2 per unknown, |Omega|/|Omega_H| of the
 // particles; `auto` assembles only within the 8 GB budget of DiscreteLaplacian.
 struct PdeProblem {
