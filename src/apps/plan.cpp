@@ -94,19 +94,29 @@ int body(int argc, char** argv) {
   cal.write(t);
   add_provenance(t);
   t.columns = {"study", "variant", "level", "dx", "h", "N", "pairs", "products", "method",
-               "time_s", "peak_mib", "recorded", "basis"};
-  std::map<std::string, std::map<int, Agg>> per_level;
+               "time_s", "peak_mib", "recorded", "trimmed", "basis"};
+  t.set("trimmed_note", "a unit the profile skips (a trim of the study catalog: its reason); "
+                        "not in the totals, summed in the summary's 'trimmed' row");
+  // Run units per (study, level), per study and in all; trimmed units apart.
+  std::map<std::string, std::map<int, Agg>> per_level, per_level_trimmed;
   std::map<std::string, Agg> per_study;
-  Agg all;
+  Agg all, trimmed, before;
   for (auto& u : units) {
     t.add_row({u.study, u.variant, fmt(u.level), fmt(u.dx), fmt(u.h), fmt(u.N), fmt(u.pairs),
                fmt(u.products), u.method, fmt(u.time_s), fmt(u.mem_mib),
-               u.recorded ? "yes" : "no", u.basis});
+               u.recorded ? "yes" : "no", u.trimmed.empty() ? "no" : u.trimmed, u.basis});
+    before.add(u);
+    if (!u.trimmed.empty()) {
+      per_level_trimmed[u.study][u.level].add(u);
+      trimmed.add(u);
+      continue;
+    }
     per_level[u.study][u.level].add(u);
     per_study[u.study].add(u);
     all.add(u);
   }
   t.set("total_time_s", all.time_s);
+  t.set("trimmed_time_s", trimmed.time_s);
   t.set("peak_mib", all.peak_mib);
   t.set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   t.save(a.str("out"));
@@ -119,16 +129,24 @@ int body(int argc, char** argv) {
   s.set("calibration_source", cal.source);
   s.set("pair_interactions_note", "sum over units of pairs x max(1, products) (Voronoi: 0)");
   add_provenance(s);
-  s.columns = {"study", "level", "units", "N", "pair_interactions", "time_s", "peak_mib", "method"};
-  auto row = [&](const std::string& study, const std::string& level, const Agg& g) {
+  s.set("trimmed_note", "trimmed = yes: units the profile skips (study catalog trims), not in "
+                        "the study and total rows; 'before trims' = total + trimmed");
+  s.columns = {"study", "level", "units", "N", "pair_interactions", "time_s", "peak_mib", "method",
+               "trimmed"};
+  auto row = [&](const std::string& study, const std::string& level, const Agg& g, bool trim) {
     s.add_row({study, level, fmt(g.units), fmt(g.N), fmt(g.pair_work), fmt(g.time_s),
-               fmt(g.peak_mib), g.method_list()});
+               fmt(g.peak_mib), g.method_list(), trim ? "yes" : "no"});
   };
   for (auto& study : planned_studies()) {
-    for (auto& [k, g] : per_level[study]) row(study, fmt(k), g);
-    row(study, "all", per_study[study]);
+    for (auto& [k, g] : per_level[study]) row(study, fmt(k), g, false);
+    for (auto& [k, g] : per_level_trimmed[study]) row(study, fmt(k), g, true);
+    row(study, "all", per_study[study], false);
   }
-  row("total", "all", all);
+  row("total", "all", all, false);
+  if (trimmed.units > 0) {
+    row("trimmed (not run)", "all", trimmed, true);
+    row("total before trims", "all", before, false);
+  }
   if (!a.str("summary").empty()) s.save(a.str("summary"));
 
   // --- The calibration as a table (quantity, value, unit). --------------------------------
@@ -180,6 +198,15 @@ int body(int argc, char** argv) {
     }
     std::printf("%-22s %5s %5d %11s %11.4g %12s %10.0f\n", "TOTAL", "", all.units, "",
                 all.pair_work, human_time(all.time_s).c_str(), all.peak_mib);
+    if (trimmed.units > 0) {
+      for (auto& study : planned_studies())
+        for (auto& [k, g] : per_level_trimmed[study])
+          std::printf("  trimmed: %-13s %5d %5d %11.4g %11.4g %12s\n", study.c_str(), k, g.units,
+                      g.N, g.pair_work, human_time(g.time_s).c_str());
+      std::printf("%-22s %5s %5d %11s %11.4g %12s   (TOTAL %.2fx less)\n", "BEFORE TRIMS", "",
+                  before.units, "", before.pair_work, human_time(before.time_s).c_str(),
+                  before.time_s / std::max(1e-9, all.time_s));
+    }
     std::printf("wrote %s%s%s\n", a.str("out").c_str(), a.str("summary").empty() ? "" : " and ",
                 a.str("summary").c_str());
   }

@@ -63,6 +63,7 @@ int body(int argc, char** argv) {
   const int c_study = pc("study"), c_var = pc("variant"), c_level = pc("level"),
             c_time = pc("time_s"), c_mem = pc("peak_mib"), c_rec = pc("recorded"),
             c_pairs = pc("pairs"), c_prod = pc("products"), c_method = pc("method");
+  const int c_trim = plan.column("trimmed");  // units a profile skips (absent in older plans)
 
   TsvTable out;
   out.set("program", "plan_vs_actual");
@@ -88,7 +89,7 @@ int body(int argc, char** argv) {
     std::map<std::pair<std::string, int>, double> planned_pairs, planned_work;
     for (std::size_t i = 0; i < plan.rows.size(); ++i) {
       const auto& r = plan.rows[i];
-      if (r[c_study] != study) continue;
+      if (r[c_study] != study || (c_trim >= 0 && r[c_trim] != "no")) continue;
       const std::pair<std::string, int> key{r[c_var], static_cast<int>(plan.integer(i, c_level))};
       const double pairs = plan.number(i, c_pairs);
       planned_pairs[key] = pairs;
@@ -107,7 +108,7 @@ int body(int argc, char** argv) {
     std::map<std::pair<std::string, int>, bool> planned_keys;
     for (std::size_t i = 0; i < plan.rows.size(); ++i) {
       const auto& r = plan.rows[i];
-      if (r[c_study] != study) continue;
+      if (r[c_study] != study || (c_trim >= 0 && r[c_trim] != "no")) continue;
       const int k = static_cast<int>(plan.integer(i, c_level));
       const double pred = plan.number(i, c_time);
       Cmp& c = lv[k];

@@ -28,6 +28,7 @@
 #include "gpm/domain.hpp"
 #include "gpm/error.hpp"
 #include "gpm/heat.hpp"
+#include "gpm/heat_tables.hpp"
 #include "gpm/influence_radius.hpp"
 #include "gpm/laplacian_matrix.hpp"
 #include "gpm/poisson.hpp"
@@ -40,30 +41,7 @@ using namespace gpm;
 
 namespace {
 
-// --- Parameters --------------------------------------------------------------------------
-struct TableSetting {
-  std::string table;             // "4.5", "4.6", "4.7"
-  std::string dt_rule;           // for the header
-  double c;                      // Δt₀ = c·h^p
-  int p;
-  std::vector<double> thetas;
-  std::vector<int> quick, paper;  // levels k, Δx = 2^-k
-};
-
-const std::vector<TableSetting> kTables = {
-    {"4.5", "0.0025 h^2", 0.0025, 2, {0, 0.5, 1}, {5, 6}, {5, 6, 7, 8}},
-    {"4.6", "0.5 h^2", 0.5, 2, {0, 0.5, 1}, {5, 6, 7}, {5, 6, 7, 8, 9}},
-    {"4.7", "0.5 h", 0.5, 1, {0.5, 1}, {5, 6, 7}, {5, 6, 7, 8, 9}},
-};
-const std::vector<std::string> kWeights = {"quartic_polynomial", "piecewise_cubic_polynomial",
-                                           "piecewise_quintic_polynomial"};
-constexpr double kKappa = 0.5, kT = 0.1;
-
-const TableSetting& table_setting(const std::string& t) {
-  for (auto& s : kTables)
-    if (s.table == t) return s;
-  throw InputError("unknown --table '" + t + "'; valid: 4.5, 4.6, 4.7");
-}
+// --- Parameters: the tables, weights, κ and T are the catalog's (gpm/heat_tables.hpp). ---
 
 // The rows of series (weight, θ) that never blew up: the input of rate_table.
 void write_rates_input(LevelCache& cache, const std::string& path) {
@@ -106,7 +84,7 @@ int body(int argc, char** argv) {
   if (a.str("out").empty() || a.str("table").empty())
     throw InputError("--table and --out are required (see --help)");
   const CacheMode mode = cache_mode(a);
-  const TableSetting& ts = table_setting(a.str("table"));
+  const HeatTable& ts = heat_table(a.str("table"));
   const Profile prof = parse_profile(a.str("profile"));
   const uint64_t seed = a.seed();
   const std::string h_rule = a.str("h-rule");
@@ -114,8 +92,8 @@ int body(int argc, char** argv) {
   const std::string volumes = a.str("volumes");
   const std::string volumes_text = pde_volumes_description(volumes);  // InputError if unknown
   HeatSetting hs;
-  hs.kappa = kKappa;
-  hs.T = kT;
+  hs.kappa = kHeatKappa;
+  hs.T = kHeatT;
   hs.tol = a.tolerance("tol");
   const std::string dt_rule = a.str("dt-rule");
   if (dt_rule != "fit" && dt_rule != "exact")
@@ -126,13 +104,13 @@ int body(int argc, char** argv) {
   if (!(hs.blowup_factor > 1)) throw InputError("--blowup must exceed 1, got " + a.str("blowup"));
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
-  const std::vector<int> levels = levels_option(a, prof, ts.quick, ts.paper, 3, 13);
+  const std::vector<int> levels = levels_option(a, prof, ts.quick, heat_levels(ts, true, h_rule), 3, 13);
 
   // --- The data file: one row per (weight, θ, level), cached. -----------------------------
   LevelCache cache(
       a.str("out"),
       {{"program", "thesis_heat"}, {"table", ts.table}, {"profile", profile_name(prof)},
-       {"seed", fmt(static_cast<long long>(seed))}, {"kappa", fmt(kKappa)}, {"T", fmt(kT)},
+       {"seed", fmt(static_cast<long long>(seed))}, {"kappa", fmt(kHeatKappa)}, {"T", fmt(kHeatT)},
        {"dt_nominal", ts.dt_rule}, {"steps", hs.fit_T ? "K = ceil(T/dt_nominal), dt = T/K"
                            : "dt = dt_nominal, K = ceil(T/dt_nominal) (last step at K dt >= T)"},
        {"tol", fmt(hs.tol)}, {"blowup", fmt(hs.blowup_factor)},
@@ -152,7 +130,7 @@ int body(int argc, char** argv) {
     const Particles p = jittered_grid(dx, seed);
     const auto V = pde_volumes(volumes, p, dx, dom);
     bool checked = false;
-    for (const auto& wname : kWeights) {
+    for (const auto& wname : heat_weights()) {
       bool todo = false;
       for (double th : ts.thetas) todo = todo || !cache.has({wname, fmt(th), fmt(k)});
       if (!todo) continue;

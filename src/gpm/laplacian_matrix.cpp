@@ -232,6 +232,18 @@ Eigen::VectorXd DiscreteLaplacian::extend(const Eigen::VectorXd& x,
   return v;
 }
 
+void cg_check_true_residual(CgResult& res, const Eigen::VectorXd& b, const Eigen::VectorXd& Sx,
+                            double tol, const std::string& what) {
+  const double true_rel = (b - Sx).norm() / b.norm();
+  if (!(true_rel <= std::max(1e3 * tol, 1e-10)))
+    throw NumericalError(what + ": conjugate gradients stopped on a recursive residual of " +
+                         cg_number(res.recursive_rel_residual) +
+                         " but the true residual ||b - Sx||/||b|| is " + cg_number(true_rel) +
+                         " after " + std::to_string(res.iterations) +
+                         " iterations (singular or indefinite system?)");
+  res.rel_residual = true_rel;
+}
+
 std::string cg_number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", v);

@@ -12,6 +12,7 @@
 #include "gpm/domain.hpp"
 #include "gpm/error.hpp"
 #include "gpm/heat.hpp"
+#include "gpm/heat_tables.hpp"
 #include "gpm/laplacian_matrix.hpp"
 #include "gpm/poisson.hpp"
 #include "gpm/study.hpp"
@@ -81,19 +82,6 @@ const std::vector<double> kImotoOrders = {1, 3, 5};
 const std::vector<std::string> kPdeWeights = {"quartic_polynomial", "piecewise_cubic_polynomial",
                                               "piecewise_quintic_polynomial"};
 const std::vector<int> kPoissonQuick = {5, 6, 7}, kPoissonPaper = {5, 6, 7, 8, 9};
-struct HeatPlan {
-  std::string table;  // "4.5"
-  double c;           // Δt₀ = c·h^p
-  int p;
-  std::vector<double> thetas;
-  std::vector<int> quick, paper;
-};
-const std::vector<HeatPlan> kHeat = {
-    {"4.5", 0.0025, 2, {0, 0.5, 1}, {5, 6}, {5, 6, 7, 8}},
-    {"4.6", 0.5, 2, {0, 0.5, 1}, {5, 6, 7}, {5, 6, 7, 8, 9}},
-    {"4.7", 0.5, 1, {0.5, 1}, {5, 6, 7}, {5, 6, 7, 8, 9}},
-};
-constexpr double kHeatT = 0.1, kHeatKappa = 0.5;
 constexpr double kMaxAssembledBytes = 8e9;  // the programs' default --max-gb 8
 
 // core_voronoi.cpp: levels per profile, seeds 1, 2, 3, the plain grid once per level.
@@ -143,7 +131,7 @@ std::vector<std::string> planned_studies() {
   std::vector<std::string> s = {"imoto_fig5_table1"};
   for (auto& t : thesis_table_specs()) s.push_back(t.program);
   s.push_back("thesis_table4_4");
-  for (auto& hp : kHeat)
+  for (auto& hp : heat_tables())
     for (const char* suffix : {"", "_h15"}) {
       std::string name = "thesis_table" + hp.table + suffix;
       std::replace(name.begin(), name.end(), '.', '_');
@@ -244,7 +232,7 @@ Calibration calibrate() {
         const double h = pde_h(rule, dx);
         const DiscreteLaplacian L(p, V, weight(w), h);
         c.poisson_its[std::string(rule) + "/" + w] = solve_poisson(p, L, f, g, 1e-10).cg.iterations;
-        for (auto& hp : kHeat)
+        for (auto& hp : heat_tables())
           for (double th : hp.thetas) {
             if (th == 0) continue;
             HeatSetting hs;
@@ -362,9 +350,12 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
       all.insert(all.end(), lv.begin(), lv.end());
       for (int k : lv)
         for (const char* vol : {"voronoi", "uniform"})
-          if (!(paper && std::string(vol) == "uniform" && k > t.paper_uniform_max_level))
+          if (!(paper && std::string(vol) == "uniform" && k > t.paper_uniform_max_level)) {
             add_fused(t.program, h_reading_name(r) + "/" + vol, k,
                       thesis_h(r, t.c, t.p, dx_of(k)), thesis_mix(t.program));
+            if (paper && r == HReading::printed && k > t.paper_printed_max_level)
+              out.back().trimmed = "printed reading stops at 2^-" + fmt(t.paper_printed_max_level);
+          }
     }
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
@@ -405,16 +396,22 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
         out.push_back(u);
       }
 
-  // Heat (Tables 4.5–4.7, both h rules): K = ⌈T/Δt₀⌉ steps, per step (θ < 1) + (θ > 0)·(its + 1)
-  // products; the Laplacian's set-up once per (level, weight), not in the per-row seconds.
-  for (auto& hp : kHeat)
+  // Heat (Tables 4.5–4.7, both h rules): K = ⌈T/Δt₀⌉ steps, one product per step (M·U^k,
+  // which also serves the CG's initial and true residuals) plus (θ > 0) the CG iterations;
+  // the Laplacian's set-up once per (level, weight), not in the per-row seconds.
+  for (auto& hp : heat_tables())
     for (const char* rule : {"h10", "h15"}) {
       std::string study = "thesis_table" + hp.table + (std::string(rule) == "h15" ? "_h15" : "");
       std::replace(study.begin(), study.end(), '.', '_');
       const double h5 = pde_h(rule, dx_of(5));
       const double r5 = hp.c * std::pow(h5, hp.p) / (h5 * h5);
+      const std::vector<int> run = heat_levels(hp, paper, rule);
       for (int k : paper ? hp.paper : hp.quick)
-        for (auto& w : kPdeWeights) {
+        for (auto& w : heat_weights()) {
+          const std::string trimmed =
+              std::find(run.begin(), run.end(), k) == run.end()
+                  ? "h15 reading stops at 2^-" + fmt(hp.paper_h15_max_level) + " (Table 4.4 settles h10)"
+                  : "";
           const double h = pde_h(rule, dx_of(k));
           PlanUnit a = base(study, "setup/" + w, k, h);
           const bool as = is_assembled(a);
@@ -423,6 +420,7 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
           a.mem_mib = pde_mib(a, as);
           a.recorded = false;
           a.basis = "Laplacian set-up (not in the rows' seconds)";
+          a.trimmed = trimmed;
           out.push_back(a);
           const double dt0 = hp.c * std::pow(h, hp.p);
           const double K = std::ceil(kHeatT / dt0 - 1e-9);
@@ -432,11 +430,12 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
             if (th > 0)
               its = c.heat_its.at(hp.table + "/" + rule + "/" + w + "/" + fmt(th)) *
                     std::sqrt((dt0 / (h * h)) / r5);
-            u.products = K * ((th < 1 ? 1 : 0) + (th > 0 ? its + 1 : 0));
+            u.products = K * (1 + its);
             u.method = a.method;
             u.time_s = u.products * product_s(u, as);
             u.mem_mib = a.mem_mib;
             u.basis = "K=" + fmt(K) + " steps, " + fmt(std::round(its * 10) / 10) + " CG its/step";
+            u.trimmed = trimmed;
             out.push_back(u);
           }
         }

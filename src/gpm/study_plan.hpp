@@ -79,6 +79,7 @@ struct PlanUnit {
   double time_s = 0, mem_mib = 0;
   bool recorded = true;  // the study's data file records this unit's time (else plan only)
   std::string basis;     // how the time was predicted
+  std::string trimmed;   // why the profile skips this unit (a trim of the catalog); empty: it runs
 };
 
 std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c);

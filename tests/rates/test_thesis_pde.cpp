@@ -19,6 +19,7 @@
 #include "gpm/domain.hpp"
 #include "gpm/error.hpp"
 #include "gpm/heat.hpp"
+#include "gpm/heat_tables.hpp"
 #include "gpm/influence_radius.hpp"
 #include "gpm/laplacian_matrix.hpp"
 #include "gpm/norms.hpp"
@@ -204,4 +205,76 @@ TEST_CASE("Heat: the explicit scheme at Δt = 0.5h² blows up and is reported", 
   const auto t = heat(5, 0, 0.0025, 2, 10.0);
   CHECK_FALSE(t.blew_up);
   CHECK(t.growth_max <= 1.0);
+}
+
+// solve_heat takes one product M·U^k per step and lets it serve the explicit part, the CG's
+// initial residual and the previous solve's true residual (heat.hpp).  The textbook step —
+// its own products for each, conjugate_gradient as the Poisson solver calls it — must give
+// the same error, for θ = ½ and θ = 1: to 1e-12 here, since the compiler may contract
+// x − θκΔt·Mx into a fused multiply-add differently in this file (measured: 0 and 1 ulp).
+// Against the rows of the code before the change the store's --verify found no difference.
+TEST_CASE("Heat: the product-sharing step equals the textbook θ-step", "[quick][pde]") {
+  const Particles p = jittered_grid(std::ldexp(1.0, -5), 1);
+  const double h = printed_h(5);
+  const DiscreteLaplacian L(p, uniform_volumes(p), weight("quartic_polynomial"), h);
+  for (double th : {0.5, 1.0}) {
+    HeatSetting s;
+    s.theta = th;
+    s.dt_nominal = 0.5 * h * h;
+    const HeatResult r = solve_heat(p, L, s);
+    REQUIRE(r.K > 1);
+
+    // The textbook loop, with the solver's definitions (heat.hpp).
+    const double dt = r.dt, kdt = s.kappa * dt, lambda = 2 * s.kappa * M_PI * M_PI;
+    const auto& om = L.omega();
+    const auto& V = L.volumes();
+    const Eigen::Index n = static_cast<Eigen::Index>(om.size());
+    Eigen::VectorXd shat = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(p.size())), c;
+    double ref = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const double v = heat_exact(p.x[i], p.y[i], 0, s.kappa);
+      if (!p.in_omega[i]) shat[static_cast<Eigen::Index>(i)] = v;
+      ref += V[i] * v * v;
+    }
+    L.apply_full(shat, c);
+    Eigen::VectorXd d(n), sk(n), U, y, tmp, rhs, b;
+    for (Eigen::Index k = 0; k < n; ++k) d[k] = V[om[k]], sk[k] = heat_exact(p.x[om[k]], p.y[om[k]], 0, s.kappa);
+    U = sk;
+    auto A = [&](const Eigen::VectorXd& x, Eigen::VectorXd& out) {
+      L.apply(x, tmp);
+      out = (d.array() * (x.array() - th * kdt * tmp.array())).matrix();
+    };
+    double err = 0;
+    for (long k = 0; k < r.K; ++k) {
+      const double ek = std::exp(-lambda * dt * k), ek1 = std::exp(-lambda * dt * (k + 1));
+      rhs = U;
+      if (th < 1) {
+        L.apply(U, y);
+        rhs += (1 - th) * kdt * (y + ek * c);
+      }
+      rhs += th * kdt * ek1 * c;
+      b = (d.array() * rhs.array()).matrix();
+      conjugate_gradient(A, b, U, s.tol, s.max_iter, "textbook step");
+      double e2 = 0;
+      for (Eigen::Index j = 0; j < n; ++j) e2 += d[j] * (ek1 * sk[j] - U[j]) * (ek1 * sk[j] - U[j]);
+      err = std::max(err, std::sqrt(e2));
+    }
+    INFO("theta " << th << ": solve_heat - textbook = " << r.rel_error - err / std::sqrt(ref));
+    CHECK(r.rel_error == Approx(err / std::sqrt(ref)).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("Heat catalog: the paper profile trims h15 at the finest level of Tables 4.5 and 4.6 only",
+          "[quick][pde]") {
+  for (const auto& t : heat_tables()) {
+    const auto h10 = heat_levels(t, true, "h10"), h15 = heat_levels(t, true, "h15");
+    CHECK(h10 == t.paper);  // the printed reading runs every level of the thesis
+    if (t.table == "4.7") CHECK(h15 == t.paper);
+    else {
+      REQUIRE(h15.size() + 1 == t.paper.size());
+      CHECK(h15.back() + 1 == t.paper.back());
+    }
+    CHECK(heat_levels(t, false, "h15") == t.quick);  // the quick profile is not trimmed
+  }
+  CHECK_THROWS_AS(heat_table("4.8"), InputError);
 }

@@ -5,17 +5,24 @@
 # no longer matches its code fails the suite.  Files not yet in the store are named, not
 # passed silently.
 #
-# usage: verify_store.sh BUILD_DIR STORE_DIR
+# With --recheck (by hand, after a change of the core that should not change the numbers):
+# the same units are recomputed with --recheck instead, which re-stamps the rows of a file
+# whose units agree with the check's record and recomputes the rows of one that differs.
+# A file being written by a running study is locked: its recheck fails and says so.
+#
+# usage: verify_store.sh BUILD_DIR STORE_DIR [--recheck]
 set -u
 build=$1
 store=$2
+mode=${3:---verify}
+case $mode in --verify|--recheck) ;; *) echo "verify_store.sh: unknown mode '$mode' (--verify or --recheck)" >&2; exit 2;; esac
 failed=0 checked=0 absent=()
 verify() {  # verify FILE PROGRAM ARGS...
   local file=$1 prog=$2
   shift 2
   if [ ! -f "$store/$file" ]; then absent+=("$file"); return; fi
-  echo "== $file: $prog $* --verify"
-  if "$build/$prog" "$@" --profile paper --out "$store/$file" --verify 2>&1 | grep '\[store\]'; then :; fi
+  echo "== $file: $prog $* $mode"
+  if "$build/$prog" "$@" --profile paper --out "$store/$file" "$mode" 2>&1 | grep '\[store\]\|rror'; then :; fi
   if [ "${PIPESTATUS[0]}" -eq 0 ]; then checked=$((checked + 1)); else failed=$((failed + 1)); fi
 }
 # The cheap units of each study: the coarse levels, which take seconds.
