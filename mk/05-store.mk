@@ -37,3 +37,12 @@ DATAFILES += $(DATA)/store_missing.tsv
 $(DATA)/store_missing.tsv: tables/store_missing.sh $(STORE_FILES) $(DATA)/plan_paper.tsv
 	@mkdir -p $(DATA)
 	bash $< $(STORE) $(DATA)/plan_paper_summary.tsv $@
+
+# Page one: a verdict per figure and table of the documents (tables/items.tsv), each with the
+# number that decides it: paper-scale rates from the store, the other checks from this run.
+DATAFILES += $(DATA)/verdicts.tsv
+$(DATA)/verdicts.tsv: tables/verdicts.sh tables/items.tsv $(DATA)/store_score.tsv \
+    $(DATA)/koba_sato_cor71.tsv $(DATA)/koba_sato_bounds.tsv $(DATA)/imoto_regularity_cover.tsv \
+    $(DATA)/imoto_figs_particles.tsv $(DATA)/core_voronoi.tsv $(DATA)/core_weights.tsv
+	@mkdir -p $(DATA)
+	bash $< tables/items.tsv $(DATA)/store_score.tsv $(DATA) $@

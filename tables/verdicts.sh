@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# Page one of the report: one verdict per figure and table of the three documents
+# (tables/items.tsv), each with the number that decides it, computed from the data files:
+#   rates T    the paper-scale verdicts of T's published rates (store_score.tsv, the counted
+#              setting): reproduced when every rate agrees, is inside the seed band or
+#              reproduces non-convergence; partial when some do; not reproduced when none do;
+#              not yet computed when the store lacks the table;
+#   as T       a figure of T's errors: T's verdict, since it is drawn from the same rows;
+#   cor71      Corollary 7.1: printed coefficients that hold (koba_sato_cor71.tsv, holds);
+#   bounds     Theorems 1.3–1.6: cases where a bound falls below the measured error
+#              (koba_sato_bounds_summary.tsv, violations);
+#   covering   imoto's covering bound: (level, seed) pairs where it holds (imoto_regularity_cover.tsv);
+#   fig3       imoto Fig. 3: r_N of the uniform against the non-uniform distribution;
+#   count      N of the distribution at Δx = 2^-5 against the printed 1,521 (core_voronoi.tsv);
+#   weights W  the plotted weights: printed formulas that fail normalization
+#              (core_weights_errata.tsv) and the norm of the corrected ones (core_weights.tsv);
+#   drawn      an illustration drawn from the definitions: reproduced qualitatively.
+# usage: verdicts.sh ITEMS STORE_SCORE DATA_DIR OUT
+set -euo pipefail
+items=$1 score=$2 data=$3 out=$4
+{
+  echo "# program = tables/verdicts.sh"
+  echo "# items = $items"
+  echo "# score = $score (paper scale, the result store)"
+  echo "# data = $data"
+  echo "# written_utc = $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+  printf 'document\titem\tshows\tverdict\tevidence\tsection\n'
+  awk -F'\t' -v score="$score" -v data="$data" '
+    function hdr(file, c,   line, f, i, k) {  # column index of a TSV file by name; the next
+      delete c                                # getline from the file reads its first row
+      close(file)
+      while ((getline line < file) > 0) { if (line ~ /^#/) continue
+        k = split(line, f, "\t"); for (i = 1; i <= k; i++) c[f[i]] = i; return 1 }
+      return 0 }
+    function rates(t,   v) {
+      if (!(t in total)) return "not yet computed\tthe result store has no rows for this table"
+      if (nc[t] == total[t]) return "not yet computed\tnone of its " total[t] " rates is in the result store at the documents'"'"' levels yet"
+      v = (good[t] == total[t]) ? "reproduced" : (good[t] > 0 ? "partial" : (cr[t] > 0 && cr[t] + nc[t] == total[t] ? "not reproduced (reason checked)" : "not reproduced"))
+      return v "\t" sprintf("%d of %d rates reproduced at the documents'"'"' levels (%d agree, %d non-convergence, %d in seed band); %d differ with a checked reason, %d unexplained, %d not yet computed",
+                            good[t], total[t], ag[t], ncv[t], sb[t], cr[t], un[t], nc[t]) }
+    BEGIN {
+      if (hdr(score, c))
+        while ((getline line < score) > 0) { if (line ~ /^#/) continue; split(line, f, "\t")
+          if (f[c["table"]] == "table" || f[c["counted"]] != "yes" || f[c["table"]] == "total") continue
+          t = f[c["table"]]; total[t] = f[c["rates"]]; ag[t] = f[c["agrees"]]; ncv[t] = f[c["non_convergence"]]
+          sb[t] = f[c["in_seed_band"]]; cr[t] = f[c["checked_reason"]]; un[t] = f[c["unexplained"]]; nc[t] = f[c["not_computed"]]
+          good[t] = ag[t] + ncv[t] + sb[t] } }
+    /^#/ || $1 == "document" { next }
+    { split($4, r, " "); kind = r[1]; arg = r[2]; res = "" }
+    kind == "rates" { res = rates(arg) }
+    kind == "as" { split(rates(arg), q, "\t"); res = q[1] "\tdrawn from the rows of the table: " q[2] }
+    kind == "cor71" { file = data "/koba_sato_cor71.tsv"; n = h = 0
+      if (hdr(file, c)) while ((getline line < file) > 0) { if (line ~ /^#/) continue; split(line, f, "\t")
+        if (f[c["holds"]] == "holds") continue; n++; h += (f[c["holds"]] == 1) }
+      res = (n == 0 ? "not yet computed\t-" : ((h == n ? "reproduced" : "published value wrong") "\t" sprintf("%d of %d printed coefficients hold", h, n))) }
+    kind == "bounds" { file = data "/koba_sato_bounds_summary.tsv"; n = v = 0; m = 1e300
+      if (hdr(file, c)) while ((getline line < file) > 0) { if (line ~ /^#/) continue; split(line, f, "\t")
+        if (f[c["cases"]] == "cases") continue; n += f[c["cases"]]; v += f[c["violations"]]; if (f[c["min_ratio"]] + 0 < m) m = f[c["min_ratio"]] + 0 }
+      res = (n == 0 ? "not yet computed\t-" : ((v == 0 ? "reproduced" : "published value wrong") "\t" sprintf("bound below the measured error in %d of %d cases (smallest bound/error %.3g)", v, n, m))) }
+    kind == "covering" { file = data "/imoto_regularity_cover.tsv"; n = h = 0
+      if (hdr(file, c)) while ((getline line < file) > 0) { if (line ~ /^#/) continue; split(line, f, "\t")
+        if (f[c["claim_holds"]] == "claim_holds") continue; n++; h += f[c["claim_holds"]] }
+      res = (n == 0 ? "not yet computed\t-" : ((h == n ? "reproduced" : "published value wrong") "\t" sprintf("the bound holds on %d of %d (level, seed) distributions", h, n))) }
+    kind == "fig3" { file = data "/imoto_figs_fig3_discs.tsv"; delete rn
+      if (hdr(file, c)) while ((getline line < file) > 0) { if (line ~ /^#/) continue; split(line, f, "\t"); rn[f[c["distribution"]]] = f[c["r_N"]] }
+      res = (!("uniform" in rn) ? "not yet computed\t-" : ((rn["uniform"] < rn["non-uniform"] ? "reproduced" : "not reproduced") "\t" sprintf("r_N = %.4g (uniform) against %.4g (non-uniform), same N", rn["uniform"], rn["non-uniform"]))) }
+    kind == "count" { file = data "/core_voronoi.tsv"; N = ""
+      if (hdr(file, c)) while ((getline line < file) > 0) { if (line ~ /^#/) continue; split(line, f, "\t")
+        if (f[c["level"]] == 5 && f[c["distribution"]] == "jittered") N = f[c["N"]] }
+      res = (N == "" ? "not yet computed\t-" : ((N == 1521 ? "reproduced" : "not reproduced") "\t" sprintf("N = %s at Δx = 2^-5 (printed: 1,521)", N))) }
+    kind == "weights" { nw = split(arg, w, ","); wrong = ""; ok = ""
+      file = data "/core_weights_errata.tsv"; delete bad
+      if (hdr(file, c)) while ((getline line < file) > 0) { if (line ~ /^#/) continue; split(line, f, "\t")
+        if (f[c["name"]] != "name") bad[f[c["name"]]] = f[c["printed_norm"]] }
+      file = data "/core_weights.tsv"; delete nrm
+      if (hdr(file, c)) while ((getline line < file) > 0) { if (line ~ /^#/) continue; split(line, f, "\t")
+        if (f[c["name"]] != "name") nrm[f[c["name"]]] = f[c["norm"]] }
+      for (i = 1; i <= nw; i++) {
+        if (w[i] in bad) wrong = wrong sprintf("%s%s printed integrates to %.4g", wrong == "" ? "" : "; ", w[i], bad[w[i]])
+        if (w[i] in nrm) ok = ok sprintf("%s%s %.6g", ok == "" ? "" : ", ", w[i], nrm[w[i]]) }
+      res = (ok == "" ? "not yet computed\t-" : ((wrong != "" ? "published value wrong" : "reproduced") "\t" (wrong != "" ? wrong ". " : "") "Norms of the plotted (corrected) weights: " ok)) }
+    kind == "drawn" { res = "reproduced qualitatively\tan illustration, drawn by the package from the same definitions (no number to compare)" }
+    res == "" { res = "not yet computed\tunknown rule " $4 }
+    { printf "%s\t%s\t%s\t%s\t%s\n", $1, $2, $3, res, $5 }' "$items"
+} > "$out.tmp"
+mv "$out.tmp" "$out"
