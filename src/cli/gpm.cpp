@@ -212,9 +212,15 @@ int cmd_trunc(int argc, char** argv) {
     t.set("warning", msg);
     std::fprintf(stderr, "gpm trunc: warning: %s\n", msg);
   }
-  t.columns = {"dx", "h", "N", "N_in_omega", "pairs", "rel_error", "time_s"};
+  // Where the maximum sits: the particle, its distance to the boundary of Ω = (0,1)², in
+  // units of h (below 1: its stencil reaches outside Ω).
+  const double to_boundary = std::min({r.worst_x, 1 - r.worst_x, r.worst_y, 1 - r.worst_y});
+  t.set("where", "worst_x, worst_y: the particle of Omega with the largest error; "
+                 "worst_to_boundary_over_h: its distance to the boundary of Omega / h");
+  t.columns = {"dx", "h", "N", "N_in_omega", "pairs", "rel_error", "worst_x", "worst_y",
+               "worst_to_boundary_over_h", "time_s"};
   t.add_row({fmt(s.dx), fmt(s.h), fmt(r.n), fmt(r.n_in_omega), fmt(r.pairs), fmt(r.rel_error),
-             fmt(r.seconds)});
+             fmt(r.worst_x), fmt(r.worst_y), fmt(to_boundary / s.h), fmt(r.seconds)});
   if (r.h_exceeds_H)
     std::fprintf(stderr, "gpm trunc: warning: h = %g >= H = 0.1: stencils near the boundary are "
                          "cut by the edge of Omega_H (outside the theory)\n", s.h);

@@ -78,12 +78,14 @@ FusedErrors fused_errors(const Particles& p, const std::vector<double>& V, doubl
   // Running maxima of |error| and |exact| per (request, function).
   const std::size_t nrf = requests.size() * tf.size();
   std::vector<double> err(nrf, 0), ref(nrf, 0);
+  std::vector<int32_t> worst(nrf, -1);
   auto accumulate = [&](const std::vector<int32_t>& tg, const KernelResult& res) {
     for (std::size_t ri = 0; ri < requests.size(); ++ri) {
       const auto& r = requests[ri];
       const int w = slot.at(r.weight);
       for (std::size_t f = 0; f < tf.size(); ++f) {
         double& em = err[ri * tf.size() + f];
+        int32_t& where = worst[ri * tf.size() + f];
         double& qm = ref[ri * tf.size() + f];
         for (std::size_t k = 0; k < tg.size(); ++k) {
           const int32_t i = tg[k];
@@ -109,7 +111,7 @@ FusedErrors fused_errors(const Particles& p, const std::vector<double>& V, doubl
           if (!std::isfinite(e))
             throw NumericalError("non-finite " + operator_name(r.op) + " with weight " +
                                  r.weight + " at particle " + std::to_string(i));
-          em = std::max(em, e);
+          if (e > em || where < 0) em = std::max(em, e), where = i;
           qm = std::max(qm, q);
         }
       }
@@ -162,7 +164,8 @@ FusedErrors fused_errors(const Particles& p, const std::vector<double>& V, doubl
       if (!(q > 0))
         throw InputError("the exact " + operator_name(r.op) + " of '" + functions[f] +
                          "' vanishes on Omega: relative error undefined");
-      out.errors.push_back({r.weight, functions[f], r.op, err[ri * tf.size() + f] / q});
+      out.errors.push_back({r.weight, functions[f], r.op, err[ri * tf.size() + f] / q,
+                            worst[ri * tf.size() + f]});
     }
   }
   return out;

@@ -32,6 +32,7 @@ struct ErrorResult {
   std::string weight, function;
   Operator op;
   double rel_error = 0;
+  int32_t worst = -1;  // the particle where |error| is largest (the first such, in target order)
 };
 
 struct FusedErrors {

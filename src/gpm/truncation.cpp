@@ -83,6 +83,8 @@ TruncationResult truncation_error(const TruncationSetting& s) {
   out.n_in_omega = p.count_in_omega();
   out.pairs = e.pairs;
   out.rel_error = e.errors.at(0).rel_error;
+  out.worst_x = p.x[static_cast<std::size_t>(e.errors.at(0).worst)];
+  out.worst_y = p.y[static_cast<std::size_t>(e.errors.at(0).worst)];
   out.h_exceeds_H = s.h >= dom.H;
   const TargetSpacing sp = target_spacing(p, s.dx, s.jitter, s.h);
   out.largest_spacing = sp.largest;

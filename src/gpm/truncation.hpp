@@ -39,6 +39,7 @@ struct TruncationResult {
   std::size_t n = 0, n_in_omega = 0;
   double pairs = 0;        // neighbour pairs with r < h summed over targets
   double rel_error = 0;
+  double worst_x = 0, worst_y = 0;  // the particle of Ω where the error is largest
   double seconds = 0;      // wall time of the whole measurement
   bool h_exceeds_H = false;
   // Below the largest spacing, some targets see no particle but themselves: their operator
