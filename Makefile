@@ -1,7 +1,7 @@
 # gpm-repro — two commands do everything on a fresh Debian 12 machine (as root):
 #   make report   install what is missing, build, run the studies, plot, assemble the report
 #   make test     install what is missing, build, run the Catch2 suite through ctest
-# Other targets: make bench, make plan, make clean, make deps, make build.
+# Other targets: make pdf, make bench, make plan, make clean, make deps, make build.
 # PROFILE=quick (default, minutes) or PROFILE=paper (the documents' exact resolutions, hours).
 
 PROFILE ?= quick
@@ -32,9 +32,10 @@ endif
 
 # Debian packages the project needs (compilers, libraries, plotting, report).
 PACKAGES := build-essential cmake git pkg-config libeigen3-dev libcgal-dev libgmp-dev \
-            libmpfr-dev libboost-dev libgsl-dev libglpk-dev glpk-utils catch2 gnuplot-nox pandoc
+            libmpfr-dev libboost-dev libgsl-dev libglpk-dev glpk-utils catch2 gnuplot-nox pandoc \
+            chromium
 
-.PHONY: all report test test-paper bench plan deps build data figures tables clean help
+.PHONY: all report pdf test test-paper bench plan deps build data figures tables clean help
 
 all: report
 
@@ -105,8 +106,20 @@ paper/report.html: $(REPORT_SOURCES) paper/tsv-tables.lua paper/style.css $(DATA
 	  $(REPORT_SOURCES) -o $@.tmp && mv $@.tmp $@
 	@echo "report: $@ (profile $(PROFILE))"
 
+# The printed form: the browser check (figures that load and draw, no table wider than an
+# A4 page, every formula in MathML) on the report, then Chromium's print to PDF of the same
+# HTML (print rules in paper/style.css).
+paper/report.pdf: paper/report.html paper/style.css tests/report/browser_check.sh
+	bash tests/report/browser_check.sh paper/report.html
+	chromium --headless --no-sandbox --disable-gpu --no-pdf-header-footer \
+	  --print-to-pdf=$@.tmp "file://$(CURDIR)/paper/report.html" 2>/dev/null && mv $@.tmp $@
+	@echo "report: $@ (printed from paper/report.html)"
+
 report: build
-	$(MAKE) --no-print-directory PROFILE=$(PROFILE) paper/report.html
+	$(MAKE) --no-print-directory PROFILE=$(PROFILE) paper/report.html paper/report.pdf
+
+pdf: build
+	$(MAKE) --no-print-directory PROFILE=$(PROFILE) paper/report.pdf
 
 # --- benchmarks -------------------------------------------------------------------------
 # The measured limit (bench_limit), every kernel variant as a fraction of it, and the

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# make test's check of the browser check (tests/report/browser_check.sh): a fixture page with
+# a formula, a drawn figure and a wide table under the report's own CSS must pass at the A4
+# printable width; a page with a formula pandoc cannot convert, a blank figure and a table
+# forced wider than the page must fail, naming all three.  (make report runs the check on
+# the report itself.)
+# usage: browser_check_test.sh SOURCE_DIR
+set -u
+src=$1
+fx=$src/tests/report/fixture
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+for page in ok bad; do
+  (cd "$fx" && pandoc --from markdown --to html5 --standalone --mathml --self-contained \
+     --metadata title="$page" --css "$src/paper/style.css" "$page.md" -o "$tmp/$page.html" 2>/dev/null) ||
+    { echo "FAIL: pandoc could not build the $page fixture"; exit 1; }
+done
+fail=0
+if ! bash "$src/tests/report/browser_check.sh" "$tmp/ok.html"; then
+  echo "FAIL: the good page was rejected"; fail=1
+fi
+out=$(bash "$src/tests/report/browser_check.sh" "$tmp/bad.html" 2>&1); rc=$?
+printf '%s\n' "$out"
+[ $rc -eq 1 ] || { echo "FAIL: the bad page gave exit $rc, expected 1"; fail=1; }
+for kind in "FIGURE draws nothing" "TABLE wider than the page" "FORMULA not converted"; do
+  printf '%s\n' "$out" | grep -q "$kind" || { echo "FAIL: the bad page's '$kind' was not reported"; fail=1; }
+done
+[ $fail -eq 0 ] && echo "browser check: good page passes, bad page rejected on all three counts"
+exit $fail
