@@ -20,7 +20,8 @@
 #                               smallest and largest rate of the stored seeds 1-3 (imoto);
 #   differs, checked reason     a reason in CHECKED (checked_reasons.sh) whose diagnostic passed;
 #   differs, unexplained        none of the above;
-#   not computed / undefined    a level missing, or no finite rate.
+#   not computed / undefined    a level missing (or only other levels than the documents', for a
+#                               reading the catalog trims), or no finite rate.
 # `counted` = yes for the one reading per table that the scoreboard counts (see below), so
 # that each of the 80 published rates counts once.
 #
@@ -135,23 +136,35 @@ done
           if (band != "" && num($5) && $5 + 0 >= lo[k] && $5 + 0 <= hi[k]) v = "inside seed band"
           else if (($1, $2, $4) in ok) { v = "differs, checked reason"; reason = why[$1, $2, $4] }
           else v = "differs, unexplained" }
-        else if ($8 == "not-computed") v = "not computed" }
+        else if ($8 == "not-computed") v = "not computed"
+        # A rate from other levels than those of the document (a reading the catalog trims before
+        # the finest level): shown, but not computed at the levels of the document.
+        else if ($8 == "other-levels") { v = "not computed"; reason = "rate from levels " $7 " only (the catalog trims this reading before the finest level of the document)" } }
       else v = "not counted"
       printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", $1, $2, $3, $4, $5, $6, $7, $8, band, v, reason }' \
     "$checked" "$tmp/merged.tsv" "$tmp/merged_again.tsv" > "$tmp/verdicts.tsv"
   # Which reading counts: where a document admits several readings of its set-up (h printed or
   # scaled, h10 or h15, dt = T/K or dt0), the scoreboard counts, per table, the one whose rates
   # are reproduced most often (agrees, non-convergence, seed band or checked reason); on a tie
-  # the reading as printed (printed h, h10, dt = T/K).  So every published rate counts once.
+  # the one with more rates computed at the documents' levels, then the reading as printed
+  # (printed h, h10, dt = T/K).  So every published rate counts once.
   cp "$tmp/verdicts.tsv" "$tmp/verdicts_again.tsv"
   awk -F'\t' '
     function rank(s) { return (s == "all" || s == "printed_voronoi" || s == "h10") ? 0 : 1 }
     FILENAME == ARGV[1] { if ($3 != "document") next
       good[$1, $2] += ($10 == "agrees" || $10 == "non-convergence reproduced" || $10 == "inside seed band" || $10 == "differs, checked reason")
+      done[$1, $2] += ($10 != "not computed")
       sl[$1, $2] = 1; tabs[$1] = 1; next }
+    # better(a, b): a reproduces more rates; on a tie, more of its rates are computed at the
+    # documents levels; then the reading as printed; then by name.
+    function better(t, a, b) {
+      if (good[t, a] != good[t, b]) return good[t, a] > good[t, b]
+      if (done[t, a] != done[t, b]) return done[t, a] > done[t, b]
+      if (rank(a) != rank(b)) return rank(a) < rank(b)
+      return a < b }
     FNR == 1 { for (t in tabs) { best = ""
         for (k in sl) { split(k, q, SUBSEP); if (q[1] != t) continue
-          if (best == "" || good[t, q[2]] > good[t, best] || (good[t, q[2]] == good[t, best] && (rank(q[2]) < rank(best) || (rank(q[2]) == rank(best) && q[2] < best)))) best = q[2] }
+          if (best == "" || better(t, q[2], best)) best = q[2] }
         chosen[t] = best } }
     { print $0 "\t" (($3 == "document" && chosen[$1] == $2) ? "yes" : "no") }' \
     "$tmp/verdicts.tsv" "$tmp/verdicts_again.tsv"
