@@ -55,8 +55,8 @@ $(FIGOUT)/thesis_fig1_4.svg: figures/thesis_fig1_4.gp figures/thesis_connectivit
 $(FIGOUT)/thesis_fig4_1.svg: figures/thesis_fig4_1.gp figures/style.gp $(DATA)/thesis_fig4_1_particles.tsv
 $(FIGOUT)/thesis_fig4_2.svg: figures/thesis_fig4_2.gp figures/style.gp $(DATA)/thesis_fig_weights.tsv
 $(FIGOUT)/thesis_fig4_4.svg: figures/thesis_fig4_4.gp figures/style.gp $(DATA)/thesis_fig_weights.tsv
-$(FIGOUT)/thesis_fig4_3.svg: figures/thesis_fig4_3.gp figures/thesis_errors.gp figures/style.gp $(DATA)/thesis_table4_1.tsv
-$(FIGOUT)/thesis_fig4_5.svg: figures/thesis_fig4_5.gp figures/thesis_errors.gp figures/style.gp $(DATA)/thesis_table4_2.tsv
-$(FIGOUT)/thesis_fig4_6.svg: figures/thesis_fig4_6.gp figures/thesis_errors.gp figures/style.gp $(DATA)/thesis_table4_3.tsv
-$(FIGOUT)/thesis_fig4_7.svg: figures/thesis_fig4_7.gp figures/thesis_errors.gp figures/style.gp $(DATA)/thesis_table4_3.tsv
+$(FIGOUT)/thesis_fig4_3.svg: figures/thesis_fig4_3.gp figures/thesis_errors.gp figures/style.gp $(DATA)/thesis_table4_1.tsv tables/published/thesis_table4_1_long.tsv
+$(FIGOUT)/thesis_fig4_5.svg: figures/thesis_fig4_5.gp figures/thesis_errors.gp figures/style.gp $(DATA)/thesis_table4_2.tsv tables/published/thesis_table4_2_long.tsv
+$(FIGOUT)/thesis_fig4_6.svg: figures/thesis_fig4_6.gp figures/thesis_errors.gp figures/style.gp $(DATA)/thesis_table4_3.tsv tables/published/thesis_table4_3_long.tsv
+$(FIGOUT)/thesis_fig4_7.svg: figures/thesis_fig4_7.gp figures/thesis_errors.gp figures/style.gp $(DATA)/thesis_table4_3.tsv tables/published/thesis_table4_3_long.tsv
 $(FIGOUT)/thesis_speed_accuracy.svg: figures/thesis_speed_accuracy.gp figures/style.gp $(DATA)/thesis_table4_1.tsv $(DATA)/thesis_table4_2.tsv $(DATA)/thesis_table4_3.tsv
