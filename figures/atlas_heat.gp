@@ -15,7 +15,7 @@ sh(w) = w eq 'piecewise_cubic_polynomial' ? 'pw. cubic' : w eq 'piecewise_quinti
         w eq 'quartic_polynomial' ? 'quartic' : w
 set format x '10^{%T}'
 set format y '10^{%T}'
-set ylabel 'relative error (4.2)'
+set ylabel 'relative error (4.2), ℓ^∞(0,T; ℓ^2(Ω_H))'
 set xlabel 'wall time of the run [s]'
 set key outside right font ',9' samplen 3 noenhanced
 set multiplot layout 1,words(dts) title 'Thesis Tables 4.5-4.7 (heat): accuracy against cost'

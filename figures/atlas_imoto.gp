@@ -13,7 +13,7 @@ pre = "Pi Grad Lap"
 mpt(m) = m == 1 ? 6 : m == 3 ? 4 : 8
 set format x '10^{%T}'
 set format y '10^{%T}'
-set ylabel 'relative error'
+set ylabel 'relative ℓ^∞(Ω) error (max over particles in Ω, Euclidean for ∇)'
 set key outside right font ',9' samplen 2.5
 set multiplot layout 3,2
 do for [k=1:3] {

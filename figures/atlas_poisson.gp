@@ -13,7 +13,7 @@ sh(w) = w eq 'piecewise_cubic_polynomial' ? 'pw. cubic' : w eq 'piecewise_quinti
         w eq 'quartic_polynomial' ? 'quartic' : w
 set format x '10^{%T}'
 set format y '10^{%T}'
-set ylabel 'relative error'
+set ylabel 'max_Ω|ũ − U| / max_Ω|ũ|  (ℓ^∞(Ω), relative)'
 set key outside right font ',9' samplen 3 noenhanced
 set multiplot layout 1,2 title 'Thesis Table 4.4 (Poisson): accuracy against cost'
 do for [c=1:2] {

@@ -18,7 +18,7 @@ set terminal svg size 1050,(nrow * 400 + 60) dynamic enhanced font 'Helvetica,11
 set output out
 set format x '10^{%T}'
 set format y '10^{%T}'
-set ylabel 'relative error, Case 2'
+set ylabel 'relative ℓ^∞(Ω) error, Case 2'
 set key outside right font ',9' samplen 3 noenhanced
 sh(w) = w eq 'piecewise_cubic_polynomial' ? 'pw. cubic' : w eq 'piecewise_quintic_polynomial' ? 'pw. quintic' : \
         w eq 'quartic_polynomial' ? 'quartic' : w eq 'quadratic_spike' ? 'quadr. spike' : \

@@ -7,7 +7,7 @@ set terminal svg size 1080,400 dynamic enhanced font 'Helvetica,11' background r
 set output out
 set multiplot layout 1,3
 set xlabel 'Δx'
-set ylabel 'relative error (4.2)'
+set ylabel 'relative error (4.2), ℓ^∞(0,T; ℓ^2(Ω_H))'
 set format x '2^{%L}'
 set logscale x 2
 set key bottom right font ',9'

@@ -6,7 +6,7 @@ load 'figures/style.gp'
 set terminal svg size 1100,520 dynamic enhanced font 'Helvetica,12' background rgb 'white'
 set output out
 set xlabel 'wall time of the level [s] (pass + Voronoi)'
-set ylabel 'relative error, Case 2'
+set ylabel 'relative ℓ^∞(Ω) error, Case 2'
 set format x '10^{%L}'
 set key outside right font ',9' samplen 2
 sel(f, r, v, w, o) = rows(f, sprintf('$1=="%s" && $2=="%s" && $4=="%s" && $5=="%s" && $6=="case2"', r, v, w, o))

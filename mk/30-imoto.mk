@@ -31,5 +31,5 @@ $(DATA)/imoto_figs_particles.tsv: $(BUILD)/imoto_figs1_4
 $(FIGOUT)/imoto_fig4.svg: figures/imoto_fig4.gp figures/style.gp $(DATA)/imoto_figs_particles.tsv
 $(FIGOUT)/imoto_fig2.svg: figures/imoto_fig2.gp figures/style.gp $(DATA)/imoto_figs_particles.tsv
 $(FIGOUT)/imoto_fig3.svg: figures/imoto_fig3.gp figures/style.gp $(DATA)/imoto_figs_particles.tsv
-$(FIGOUT)/imoto_fig5.svg: figures/imoto_fig5.gp figures/style.gp $(DATA)/imoto_fig5_table1.tsv
+$(FIGOUT)/imoto_fig5.svg: figures/imoto_fig5.gp figures/style.gp $(DATA)/imoto_fig5_table1.tsv tables/published/imoto_table1.tsv
 $(FIGOUT)/imoto_covering.svg: figures/imoto_covering.gp figures/style.gp $(DATA)/imoto_regularity_cover.tsv
