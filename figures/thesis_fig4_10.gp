@@ -3,4 +3,5 @@ load 'figures/style.gp'
 f = datadir.'/thesis_table4_6.tsv'
 thetas = '0.5 1'
 slopes = '2 2'  # Theorem 3.7 with m = 4 and the table's dt
+P = 'tables/published/thesis_table4_6_long.tsv'
 load 'figures/thesis_heat.gp'
