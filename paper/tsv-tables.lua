@@ -62,7 +62,10 @@ local function describe(path, meta)
   local wall = meta["wall_time_s"] or meta["wall_s"]
   local parts = {
     "program " .. (meta["program"] or "?"),
-    "profile " .. (meta["profile"] or "?"),
+    -- A file without a profile header (a rate table, a figure's coordinates, a report
+    -- script's table) belongs to the folder it was written to: data/<profile>, or the store.
+    "profile " .. (meta["profile"] or (path:match("^results/paper/") and "paper (result store)")
+                   or (path:match("^data/paper/") and "paper") or profile .. " (its folder)"),
     "seed " .. (meta["seed"] or "none"),
     "git " .. (meta["git_revision"] or "?"),
     "written " .. (meta["written_utc"] or "?"),

@@ -14,6 +14,7 @@ cpu=$(lscpu | sed -n 's/^Model name: *//p' | head -1)
   echo "# plan = $plan"
   echo "# machine = $cpu, $(nproc) cores (the plan's calibration ran here)"
   echo "# calibration_load = $(sed -n 's/^# calibration_load_before = //p' "${plan/_summary.tsv/.tsv}" "$plan" 2>/dev/null | head -1) (load average when the plan calibrated: above the 2 cores, the predictions are slower than an idle run)"
+  echo "# git_revision = $(git describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)"
   echo "# written_utc = $(date -u +%Y-%m-%dT%H:%M:%SZ)"
   printf 'study\tstore_file\tlevels_stored\tlevels_missing\tpredicted_missing_h\tlevels_trimmed\ttrimmed_h\n'
   awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }

@@ -23,6 +23,7 @@ items=$1 score=$2 data=$3 out=$4
   echo "# items = $items"
   echo "# score = $score (paper scale, the result store)"
   echo "# data = $data"
+  echo "# git_revision = $(git describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)"
   echo "# written_utc = $(date -u +%Y-%m-%dT%H:%M:%SZ)"
   printf 'document\titem\tshows\tverdict\tevidence\tsection\n'
   awk -F'\t' -v score="$score" -v data="$data" '
