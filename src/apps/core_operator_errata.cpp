@@ -54,7 +54,7 @@ int body(int argc, char** argv) {
   a.output("out", "", "TSV, one row per erratum (required)")
       .opt("profile", "quick", "run profile recorded in the header (the table is the same for both)");
   a.parse(argc, argv);
-  if (a.str("out").empty()) throw InputError("--out PATH is required (see --help)");
+  a.required("out");
   const Profile prof = parse_profile(a.str("profile"));
 
   // The particle set and the test function.

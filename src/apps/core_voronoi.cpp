@@ -80,8 +80,7 @@ int body(int argc, char** argv) {
       .opt("profile", "quick",
            "quick (levels 5-9) or paper (levels 5-12; level 12 needs ~4 GB)");
   args.parse(argc, argv);
-  const std::string out = args.str("out");
-  if (out.empty()) throw InputError("--out PATH is required (see --help)");
+  const std::string out = args.required("out");
   const Profile profile = parse_profile(args.str("profile"));
   const std::vector<int> levels = levels_option(args, profile, kQuickLevels, kPaperLevels, 2, 13);
   const std::vector<uint64_t> seeds = args.seeds("seeds");

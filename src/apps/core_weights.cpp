@@ -95,7 +95,7 @@ int body(int argc, char** argv) {
       .opt("profile", "quick", "run profile recorded in the header: quick or paper "
                                "(the table is the same for both)");
   args.parse(argc, argv);
-  if (args.str("out").empty()) throw gpm::InputError("--out PATH is required (see --help)");
+  args.required("out");
   gpm::parse_profile(args.str("profile"));  // rejects unknown profiles
 
   const auto props = property_table(args);

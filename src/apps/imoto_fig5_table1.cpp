@@ -121,8 +121,7 @@ int body(int argc, char** argv) {
                            "  measured where computed, else extrapolated at the measured rate");
   add_cache_options(args);
   args.parse(argc, argv);
-  const std::string out = args.str("out");
-  if (out.empty()) throw InputError("--out PATH is required (see --help)");
+  const std::string out = args.required("out");
   const CacheMode mode = cache_mode(args);
   const Profile profile = parse_profile(args.str("profile"));
   const std::vector<int> levels = levels_option(args, profile, kQuickLevels, kPaperLevels, 3, 13);

@@ -46,8 +46,7 @@ int body(int argc, char** argv) {
                          "  <prefix>_fig3_edges.tsv, <prefix>_fig3_discs.tsv")
       .opt("seed", "1", "jitter seed (non-negative integer)");
   args.parse(argc, argv);
-  const std::string prefix = args.str("prefix");
-  if (prefix.empty()) throw InputError("--prefix PATH is required (see --help)");
+  const std::string prefix = args.required("prefix");
   const uint64_t seed = args.seed();
   // Every file this run writes, checked before the first is computed.
   std::vector<std::pair<std::string, std::string>> outputs;

@@ -182,8 +182,7 @@ int body(int argc, char** argv) {
       .opt("lp-method", "interior", "interior (GLPK interior point) or simplex (slow; a check)")
       .opt("lp-levels", "", "comma-separated LP levels; default: by profile");
   args.parse(argc, argv);
-  for (const char* o : {"out-cover", "out-example", "out-deviation"})
-    if (args.str(o).empty()) throw InputError(std::string("--") + o + " PATH is required");
+  for (const char* o : {"out-cover", "out-example", "out-deviation"}) args.required(o);
   const Profile profile = parse_profile(args.str("profile"));
   const std::vector<uint64_t> seeds = args.seeds("seeds");
   const uint64_t lp_seed = args.seed("lp-seed");

@@ -178,8 +178,7 @@ int body(int argc, char** argv) {
       .opt("fig-level", "4", "level of the tessellation drawn in Figures 1-2, 2..10")
       .opt("fig-cstar", "3", "C* drawn in Figures 1-2 (> 1)");
   args.parse(argc, argv);
-  const std::string out = args.str("out");
-  if (out.empty()) throw InputError("--out PATH is required (see --help)");
+  const std::string out = args.required("out");
   const Profile profile = parse_profile(args.str("profile"));
   const auto or_default = [&](const std::string& key, const std::string& def) {
     return args.str(key).empty() ? def : args.str(key);

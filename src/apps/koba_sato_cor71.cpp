@@ -52,8 +52,7 @@ int body(int argc, char** argv) {
       .opt("m-max", "3", "case (i) is evaluated for m = 1..m-max (1..12)")
       .opt("profile", "quick", "quick or paper (identical here: the evaluation is exact)");
   args.parse(argc, argv);
-  const std::string out = args.str("out");
-  if (out.empty()) throw InputError("--out PATH is required (see --help)");
+  const std::string out = args.required("out");
   const Profile profile = parse_profile(args.str("profile"));
   const long long m_max = args.integer("m-max", 1, 12);
   const auto t0 = std::chrono::steady_clock::now();

@@ -69,7 +69,7 @@ int body(int argc, char** argv) {
                                              "calibration when present")
       .flag("quiet", "do not print the table");
   a.parse(argc, argv);
-  if (a.str("out").empty()) throw InputError("--out PATH is required (see --help)");
+  a.required("out");
   const Profile profile = parse_profile(a.str("profile"));
   const auto t0 = std::chrono::steady_clock::now();
 

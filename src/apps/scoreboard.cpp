@@ -23,7 +23,7 @@ int body(int argc, char** argv) {
   a.opt("profile", "quick", "profile the tables come from (recorded only)");
   a.output("out", "", "output TSV");
   a.parse(argc, argv);
-  if (a.str("out").empty()) throw InputError("--out is required");
+  a.required("out");
   const auto files = a.list("tables");
   if (files.empty()) throw InputError("--tables names no file");
   TsvTable out;

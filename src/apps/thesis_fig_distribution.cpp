@@ -27,7 +27,7 @@ int body(int argc, char** argv) {
       .opt("dx", "2^-5", "grid spacing")
       .opt("seed", "1", "jitter seed (non-negative integer)");
   a.parse(argc, argv);
-  if (a.str("particles").empty()) throw InputError("--particles PATH is required (see --help)");
+  a.required("particles");
   const double dx = a.positive("dx");
   const uint64_t seed = a.seed();
   require_grid_fits_memory(dx, a.str("cells").empty() ? kParticleBytes : kCellBytes, "--dx");

@@ -23,7 +23,7 @@ int body(int argc, char** argv) {
   Args a("thesis_fig_weights", "w(r) samples of the thesis' Chapter-4 weights (Figures 4.2, 4.4).");
   a.output("out", "", "output TSV (required)").opt("samples", "401", "samples on [0, 1.2]");
   a.parse(argc, argv);
-  if (a.str("out").empty()) throw InputError("--out PATH is required (see --help)");
+  a.required("out");
   const long long n = a.integer("samples", 2, 1000000);
   const auto t0 = std::chrono::steady_clock::now();
   TsvTable t;

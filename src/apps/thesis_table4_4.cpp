@@ -51,7 +51,7 @@ int body(int argc, char** argv) {
       .opt("levels", "", "override the profile's levels (comma-separated k, dx = 2^-k)");
   add_cache_options(a);
   a.parse(argc, argv);
-  if (a.str("out").empty()) throw InputError("--out PATH is required (see --help)");
+  a.required("out");
   const CacheMode mode = cache_mode(a);
   const Profile prof = parse_profile(a.str("profile"));
   const uint64_t seed = a.seed();

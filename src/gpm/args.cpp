@@ -105,6 +105,12 @@ void check_output_paths(const std::vector<std::pair<std::string, std::string>>& 
   require_distinct_paths(outputs);
 }
 
+std::string Args::required(const std::string& name) const {
+  const std::string v = str(name);
+  if (v.empty()) throw InputError("--" + name + " PATH is required (see --help)");
+  return v;
+}
+
 std::string Args::str(const std::string& name) const { return opts_.at(name).value; }
 bool Args::has(const std::string& name) const { return opts_.at(name).given; }
 

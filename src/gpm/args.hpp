@@ -29,6 +29,9 @@ class Args {
   void parse(int argc, char** argv, int first = 1);
 
   std::string str(const std::string& name) const;
+  // The value of an option the program cannot run without (an output path, say):
+  // InputError "--NAME PATH is required (see --help)" when it is empty.
+  std::string required(const std::string& name) const;
   double num(const std::string& name) const;        // finite, else InputError
   double positive(const std::string& name) const;   // finite and > 0
   // Decimal integers ("0x10", "1e1", "5.5" refused); out of [lo, hi] refused naming both.

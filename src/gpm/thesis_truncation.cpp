@@ -153,8 +153,7 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
   add_cache_options(args);
   args.parse(argc, argv);
   const CacheMode mode = cache_mode(args);
-  const std::string out = args.str("out");
-  if (out.empty()) throw InputError("--out PATH is required (see --help)");
+  const std::string out = args.required("out");
   const Profile profile = parse_profile(args.str("profile"));
   const uint64_t seed = args.seed();
   std::vector<HReading> readings = spec.readings;
