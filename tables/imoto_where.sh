@@ -4,7 +4,7 @@
 # test function sin 2π(x+y), h = 2.6·2^(5/m−5)·Δx^(1/m) as in imoto §5).  The error must
 # equal the stored Table 1 row of the same (level, seed); the location is what the study's
 # data file does not record.  Levels 2^-9..2^-11 for seeds 1-3 and the plain grid, 2^-12 for
-# seed 1 and the plain grid (a few minutes each there).  Resumable: finished rows are kept.
+# seed 1 (a quarter of an hour each there).  Resumable: finished rows are kept.
 # usage: imoto_where.sh BUILD_DIR OUT
 set -euo pipefail
 build=$1 out=$2
@@ -35,4 +35,5 @@ run() {  # run WEIGHT VARIANT LEVEL
 for k in 9 10 11; do
   for v in seed1 seed2 seed3 plain; do for w in Lap1 Lap2; do run $w $v $k; done; done
 done
-for v in seed1 plain; do for w in Lap1 Lap2; do run $w $v 12; done; done
+# At 2^-12 seed 1 only: the plain grid's maximum sits on whole lines (its place says nothing).
+for w in Lap1 Lap2; do run $w seed1 12; done
