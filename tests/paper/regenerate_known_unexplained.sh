@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Rewrites tests/paper/known_unexplained.tsv from the store's current verdicts: one row per
+# counted paper-scale rate that differs without a checked reason, with a note per group of
+# what is known about it (edit the notes below when a diagnostic lands).  Run by hand after
+# new rows enter the store; check_verdicts.sh (ctest paper_verdicts) then passes again.
+# usage: regenerate_known_unexplained.sh BUILD_DIR
+set -euo pipefail
+build=${1:-build}
+cd "$(dirname "$0")/../.."
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+bash tables/checked_reasons.sh results/paper "$tmp/c.tsv"
+bash tables/store_rates.sh "$build" results/paper "$tmp/r.tsv" "$tmp/s.tsv" "$tmp/sc.tsv" "$tmp/c.tsv"
+awk -F'\t' '
+function note(t, s, k) {
+  if (t == "imoto_table1" && k ~ / 3$/) return "m = 3: seed 1 differs and the published rate lies outside the band of seeds 1-3 at 2^-11/2^-12 (seed_band column); no diagnostic for this row yet"
+  if (t == "imoto_table1" && k ~ /Lap[12] 5$/) return "m = 5: the plain-grid error equals |(1+delta)(1-eps)-1| (decisions: imoto Lap m = 5, eps alone gives 2.00); the particle part of the seeds falls steeply between 2^-11 and 2^-12 and steepens the rate; the largest jittered error sits inside Omega for Lap1 (2.2-6.6 h from the boundary, imoto_m5_where.tsv), for Lap2 once on the boundary; why the document did not see the particle part is open"
+  if (t == "imoto_table1" && k ~ /(Pi3|Grad3) 5$/) return "m = 5, weight of order n = 3: seeds 1-3 give 9.1-10.4, above the published rate (about 7.5); the plain grid steeper still (12.5-13.1); no diagnostic yet"
+  if (t == "imoto_table1" && k ~ / 5$/) return "m = 5: seeds 1-3 give 1.6-1.8 against about 2.0, the plain grid 1.2-1.6 (flatter): consistent with the volume mismatch of |Omega_H|/N seen for Lap1/Lap2, no checked diagnostic yet"
+  if (t == "thesis_table4_3" && k ~ /grad case2/) return "gradient of sin 2pi(x+y): reproduced 1.98-2.04 under both readings of h; published 2.16-2.52; no diagnostic yet"
+  if (t == "thesis_table4_7") return "dt = 0.5h, T = 0.1: K steps, the dt reading and the volume mismatch of (A.10) (as for Table 4.4) are candidates; no checked diagnostic yet (runs: thesis_table4_7_dtexact, _cellvol)"
+  if (t == "thesis_table4_2") return "Table 4.2 at 2^-11/2^-12: no diagnostic for this row yet"
+  return "open: no diagnostic yet" }
+BEGIN { print "# Paper-scale rates that differ from the published ones without a checked reason (tests/paper/check_verdicts.sh)."
+        print "# One row per rate of the counted reading: remove a row when its rate agrees, enters the seed band or gets a checked reason; the suite fails on a stale row."
+        print "# Written by tests/paper/regenerate_known_unexplained.sh (edit the notes there)."
+        printf "table\tslice\tkey\topen\n" }
+/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
+$c["setup"] == "document" && $c["counted"] == "yes" && $c["verdict"] == "differs, unexplained" {
+  printf "%s\t%s\t%s\t%s\n", $c["table"], $c["slice"], $c["key"], note($c["table"], $c["slice"], $c["key"]) }' \
+  "$tmp/r.tsv" > tests/paper/known_unexplained.tsv
+bash tests/paper/check_verdicts.sh "$build" . | tail -2
