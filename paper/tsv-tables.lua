@@ -102,7 +102,10 @@ function provenance(path_or_list, meta_or_nil, make_cmd)
     for _, x in ipairs(describe(it.path, it.meta)) do table.insert(inl, x) end
   end
   table.insert(inl, pandoc.Str("."))
-  return pandoc.Div({pandoc.Para(inl)}, pandoc.Attr("", {"provenance"}))
+  local paths = {}
+  for _, it in ipairs(items) do table.insert(paths, it.path) end
+  return pandoc.Div({pandoc.Para(inl)},
+                    pandoc.Attr("", {"provenance"}, {files = table.concat(paths, ",")}))
 end
 
 -- Data files a figure plots: explicit data= attribute, else the names its gnuplot script
@@ -197,6 +200,50 @@ local function tsv_block(el)
   return {pandoc.utils.from_simple_table(simple), prov}
 end
 
+-- The reader's order: one short line per chapter naming its data files, and every table's
+-- and figure's full provenance (regenerate command; program, command, profile, seed, git
+-- revision, date and wall time of each data file) in a last appendix, grouped by chapter.
+local function gather_provenance(doc)
+  local out, appendix = {}, {}
+  local chapter, files, seen, pending = nil, {}, {}, nil
+  local function flush()
+    if #files > 0 then
+      local inl = {pandoc.Str("Data of this chapter: ")}
+      for i, f in ipairs(files) do
+        if i > 1 then table.insert(inl, pandoc.Str(", ")) end
+        table.insert(inl, pandoc.Code(f))
+      end
+      table.insert(inl, pandoc.Str(". How each file was made (program, command, profile, seed, " ..
+        "git revision, date, wall time) and the command that regenerates each table and figure: " ..
+        "the last appendix, under this chapter's title."))
+      table.insert(out, pandoc.Div({pandoc.Para(inl)}, pandoc.Attr("", {"provenance"})))
+    end
+    files, seen = {}, {}
+  end
+  for _, b in ipairs(doc.blocks) do
+    if b.t == "Header" and b.level == 1 then
+      flush()
+      chapter = b
+      pending = pandoc.Header(2, b.content)
+      table.insert(out, b)
+    elseif b.t == "Div" and b.classes:includes("provenance") then
+      for f in (b.attributes["files"] or ""):gmatch("[^,]+") do
+        if not seen[f] then seen[f] = true; table.insert(files, f) end
+      end
+      if pending then table.insert(appendix, pending); pending = nil end
+      table.insert(appendix, b)
+    else
+      table.insert(out, b)
+    end
+  end
+  flush()
+  if #appendix > 0 then
+    table.insert(out, pandoc.Header(1, "Appendix E. Provenance of every table and figure"))
+    for _, b in ipairs(appendix) do table.insert(out, b) end
+  end
+  return pandoc.Pandoc(out, doc.meta)
+end
+
 return {
   {
     Meta = function(m)
@@ -218,5 +265,6 @@ return {
         if prov then return {el, prov} end
       end
     end
-  }
+  },
+  { Pandoc = gather_provenance }
 }
