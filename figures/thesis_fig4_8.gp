@@ -11,11 +11,27 @@ set key outside right top  # never over the data or the triangle
 w1 = 'quartic_polynomial'; w2 = 'piecewise_cubic_polynomial'; w3 = 'piecewise_quintic_polynomial'
 sel(r, w) = rows_named(f, sprintf('$c["h_rule"]=="%s" && $c["weight"]=="%s"', r, w))
 ANCHOR = sel('h10', w1); eval anchored_triangle(2, 'slope 2')
-xlo = 0.025; xhi = 0.25; eval pow2_xtics
+# The published rate of each (reading, weight), as a grey segment from the finest point of
+# its series over the last interval (on the data where the rate agrees).
+P = 'tables/published/thesis_table4_4_long.tsv'
+pub(r, w) = real(system(sprintf("awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next } $c[\"h_rule\"]==\"%s\" && $c[\"weight\"]==\"%s\" { print $c[\"numerical\"]; f=1; exit } END { if (!f) print \"NaN\" }' '%s'", r, w, P)))
+do for [r in "h10 h15"] {
+  do for [w in w1.' '.w2.' '.w3] {
+    ANCHOR = sel(r, w)
+    stats ANCHOR using (column('h')) name 'PX' nooutput
+    stats ANCHOR using (column('h') > PX_min ? column('h') : NaN) name 'PX2' nooutput
+    stats ANCHOR using (column('h') == PX_min ? column('rel_error') : NaN) name 'PY' nooutput
+    p = pub(r, w)
+    if (p == p) { set arrow from PX_min, PY_min to PX2_min, PY_min * (PX2_min / PX_min)**p nohead lw 6 lc rgb '#bbbbbb' back }
+  }
+}
+stats f using (column("h")) nooutput
+xlo = STATS_min * 0.8; xhi = STATS_max * 1.25; eval pow2_xtics
 H = 'using (column("h")):(column("rel_error")) with linespoints'
 plot sel('h10', w1) @H lt 1 title 'quartic, printed h', \
      sel('h10', w2) @H lt 2 title 'pw. cubic, printed h', \
      sel('h10', w3) @H lt 3 title 'pw. quintic, printed h', \
      sel('h15', w1) @H lt 4 title 'quartic, 2^{-15} reading', \
      sel('h15', w2) @H lt 5 title 'pw. cubic, 2^{-15} reading', \
-     sel('h15', w3) @H lt 6 title 'pw. quintic, 2^{-15} reading'
+     sel('h15', w3) @H lt 6 title 'pw. quintic, 2^{-15} reading', \
+     NaN with lines lw 6 lc rgb '#bbbbbb' title 'published rate'

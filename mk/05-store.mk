@@ -46,3 +46,14 @@ $(DATA)/verdicts.tsv: tables/verdicts.sh tables/items.tsv $(DATA)/store_score.ts
     $(DATA)/imoto_figs_particles.tsv $(DATA)/core_voronoi.tsv $(DATA)/core_weights.tsv
 	@mkdir -p $(DATA)
 	bash $< tables/items.tsv $(DATA)/store_score.tsv $(DATA) $@
+
+# The documents' figures drawn from the store where it holds their levels (the same gnuplot
+# scripts, datadir = the store): figures/out/store_<figure>.svg.
+STORE_FIGS := thesis_fig4_8 thesis_fig4_11 imoto_fig5
+FIGFILES += $(foreach f,$(STORE_FIGS),$(FIGOUT)/store_$(f).svg)
+$(FIGOUT)/store_thesis_fig4_8.svg: $(STORE)/thesis_table4_4.tsv tables/published/thesis_table4_4_long.tsv
+$(FIGOUT)/store_thesis_fig4_11.svg: $(STORE)/thesis_table4_7.tsv figures/thesis_heat.gp tables/published/thesis_table4_7_long.tsv
+$(FIGOUT)/store_imoto_fig5.svg: $(STORE)/imoto_fig5_table1.tsv tables/published/imoto_table1.tsv
+$(FIGOUT)/store_%.svg: figures/%.gp figures/style.gp
+	@mkdir -p $(FIGOUT)
+	gnuplot -e "datadir='$(STORE)'; out='$@.tmp'" $< && mv $@.tmp $@

@@ -41,7 +41,7 @@ $(DATA)/thesis_table%_h15_rates.tsv: $(BUILD)/rate_table $(DATA)/thesis_table%_h
 	$< --data $(DATA)/thesis_table$*_h15_finite.tsv --published tables/published/thesis_table$*_long.tsv \
 	  --key weight,theta --out $@
 
-$(FIGOUT)/thesis_fig4_8.svg: figures/thesis_fig4_8.gp figures/style.gp $(DATA)/thesis_table4_4.tsv
+$(FIGOUT)/thesis_fig4_8.svg: figures/thesis_fig4_8.gp figures/style.gp $(DATA)/thesis_table4_4.tsv tables/published/thesis_table4_4_long.tsv
 $(FIGOUT)/thesis_fig4_9.svg: figures/thesis_fig4_9.gp figures/thesis_heat.gp figures/style.gp $(DATA)/thesis_table4_5.tsv tables/published/thesis_table4_5_long.tsv
 $(FIGOUT)/thesis_fig4_10.svg: figures/thesis_fig4_10.gp figures/thesis_heat.gp figures/style.gp $(DATA)/thesis_table4_6.tsv tables/published/thesis_table4_6_long.tsv
 $(FIGOUT)/thesis_fig4_11.svg: figures/thesis_fig4_11.gp figures/thesis_heat.gp figures/style.gp $(DATA)/thesis_table4_7.tsv tables/published/thesis_table4_7_long.tsv

@@ -137,11 +137,12 @@ local function figure_provenance(img)
   if not base then return nil end
   local items = {}
   for _, n in ipairs(figure_data(img)) do
-    local path = datadir .. "/" .. n
+    -- data="results/paper/x.tsv": a figure drawn from the result store, whatever the profile.
+    local path = n:match("^results/") and n or (datadir .. "/" .. n)
     local meta = read_tsv(path)
     table.insert(items, {path = path, meta = meta})
   end
-  local cmd = "make " .. img.src .. " PROFILE=" .. profile
+  local cmd = "make " .. img.src .. (img.src:match("/store_") and "" or (" PROFILE=" .. profile))
   if #items == 0 then
     return pandoc.Div({pandoc.Para({pandoc.Str("Regenerate: "), pandoc.Code(cmd),
       pandoc.Str(" (data files: see figures/" .. base .. ".gp).")})}, pandoc.Attr("", {"provenance"}))
