@@ -225,7 +225,7 @@ local function gather_provenance(doc)
     if b.t == "Header" and b.level == 1 then
       flush()
       chapter = b
-      pending = pandoc.Header(2, b.content)
+      pending = pandoc.Header(2, b.content, pandoc.Attr("provenance-" .. (b.identifier or "")))
       table.insert(out, b)
     elseif b.t == "Div" and b.classes:includes("provenance") then
       for f in (b.attributes["files"] or ""):gmatch("[^,]+") do
@@ -239,7 +239,8 @@ local function gather_provenance(doc)
   end
   flush()
   if #appendix > 0 then
-    table.insert(out, pandoc.Header(1, "Appendix E. Provenance of every table and figure"))
+    table.insert(out, pandoc.Header(1, "Appendix E. Provenance of every table and figure",
+                                    pandoc.Attr("appendix-e-provenance")))
     for _, b in ipairs(appendix) do table.insert(out, b) end
   end
   return pandoc.Pandoc(out, doc.meta)
