@@ -23,7 +23,7 @@ sym = "Π ∇ Δ"
 # Theorem 3 rates per operator at m = 3 and m = 5 (n = 1 weights; the n = 3 weight at m = 5).
 s3 = "2 2 1"; s5 = "2 2 2"; s5h = "4 4 3"
 sel(m, w) = rows_named(f, sprintf('$c["m"]==%s && $c["weight"]=="%s"', m, w))
-pub(w, m) = real(system(sprintf("awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next } $c[\"weight\"]==\"%s\" && $c[\"m\"]==%s { print $c[\"numerical\"]; f=1; exit } END { if (!f) print \"NaN\" }' '%s'", w, m, P)))
+pub(w, m) = published_rate(P, sprintf('$c["weight"]=="%s" && $c["m"]==%s', w, m))
 weight_of(j, k) = word(j == 1 ? w1 : j == 2 ? w2 : w3, k)
 do for [m in "1 3 5"] {
   do for [k=1:3] {
@@ -34,13 +34,8 @@ do for [m in "1 3 5"] {
     # Published rates, from the finest point of each curve.
     do for [j=1:3] {
       ANCHOR = sel(m, weight_of(j, k))
-      stats ANCHOR using (column('h')) name 'PX' nooutput
-      stats ANCHOR using (column('h') > PX_min ? column('h') : NaN) name 'PX2' nooutput
-      stats ANCHOR using (column('h') == PX_min ? column('rel_error') : NaN) name 'PY' nooutput
       p = pub(weight_of(j, k), m)
-      if (p == p) {
-        set arrow from PX_min, PY_min to PX2_min, PY_min * (PX2_min / PX_min)**p nohead lw 6 lc rgb '#bbbbbb' back
-      }
+      if (p == p) { eval published_segment(p) }
     }
     # Theorem 3's rates (none at m = 1, where the document claims no convergence).
     if (m ne "1") {

@@ -36,8 +36,19 @@ rows_named(f, cond) = sprintf("< awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF
 # A slope-s triangle under the two finest points (smallest h) of the series in the string
 # variable ANCHOR (a rows_named(...) source; needs `set datafile columnheaders`; call before any
 # xrange/yrange is set, which stats would apply):   ANCHOR = sel(1, 1); eval anchored_triangle(2, 'slope 2')
-anchored_triangle(s, lab) = "stats ANCHOR using (column('h')) name 'AX' nooutput; " . \
+# The two finest points of ANCHOR: AX_min (smallest h), AX2_min (the next), AY_min (its error).
+finest_points = "stats ANCHOR using (column('h')) name 'AX' nooutput; " . \
   "stats ANCHOR using (column('h') > AX_min ? column('h') : NaN) name 'AX2' nooutput; " . \
-  "stats ANCHOR using (column('h') == AX_min ? column('rel_error') : NaN) name 'AY' nooutput; " . \
+  "stats ANCHOR using (column('h') == AX_min ? column('rel_error') : NaN) name 'AY' nooutput; "
+anchored_triangle(s, lab) = finest_points . \
   sprintf("eval triangle(AX_min, AY_min * ANCHOR_DROP, AX2_min / AX_min, %g, '%s')", s, lab)
+# A published rate p drawn on the series in ANCHOR: a thick grey segment from its finest point
+# rising with slope p over the last interval (it lies on the data where the rate agrees).
+# Legend entry: NaN with lines lw 6 lc rgb '#bbbbbb' title 'published rate'.
+#   ANCHOR = sel(...); p = published_rate(P, '$c["weight"]=="Pi1"'); if (p == p) { eval published_segment(p) }
+published_segment(p) = finest_points . \
+  sprintf("set arrow from AX_min, AY_min to AX2_min, AY_min * (AX2_min / AX_min)**%.17g nohead lw 6 lc rgb '#bbbbbb' back", p)
+# The `numerical` column of the first row of a published long-format table P that satisfies an
+# awk condition on its named columns (as rows_named); NaN when no row does.
+published_rate(P, cond) = real(system(sprintf("awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next } (%s) { print $c[\"numerical\"]; f=1; exit } END { if (!f) print \"NaN\" }' '%s'", cond, P)))
 ANCHOR_DROP = 0.7  # how far below the finest point the triangle sits (factor in y)

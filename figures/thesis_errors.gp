@@ -36,8 +36,8 @@ reading(s) = s[1:strstrt(s, ':') - 1]
 volumes(s) = s[strstrt(s, ':') + 1:]
 setting_name(s) = sprintf('%s h, %s', reading(s), volumes(s) eq 'voronoi' ? 'Voronoi volumes' : 'volumes |Ω_H|/N (beyond the thesis)')
 sel(r, v, w, c) = rows_named(f, sprintf('$c["h_reading"]=="%s" && $c["volumes"]=="%s" && $c["weight"]=="%s" && $c["operator"]=="%s" && $c["function"]=="%s"', r, v, w, OP, c))
-# The published rate of (weight, case) from P (NaN if the table has none).
-pub(w, c) = real(system(sprintf("awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next } $c[\"weight\"]==\"%s\" && $c[\"function\"]==\"%s\" && (!(\"operator\" in c) || $c[\"operator\"]==\"%s\") { print $c[\"numerical\"]; f=1; exit } END { if (!f) print \"NaN\" }' '%s'", w, c, OP, P)))
+# The published rate of (weight, case) from P.
+pub(w, c) = published_rate(P, sprintf('$c["weight"]=="%s" && $c["function"]=="%s" && (!("operator" in c) || $c["operator"]=="%s")', w, c, OP))
 set multiplot layout nrow,2 title T
 do for [s in settings] {
   do for [c in "case1 case2"] {
@@ -47,13 +47,8 @@ do for [s in settings] {
     if (v eq 'voronoi') {
       do for [i=1:words(W)] {
         ANCHOR = sel(r, v, word(W,i), c)
-        stats ANCHOR using (column('h')) name 'PX' nooutput
-        stats ANCHOR using (column('h') > PX_min ? column('h') : NaN) name 'PX2' nooutput
-        stats ANCHOR using (column('h') == PX_min ? column('rel_error') : NaN) name 'PY' nooutput
         p = pub(word(W,i), c)
-        if (p == p) {
-          set arrow from PX_min, PY_min to PX2_min, PY_min * (PX2_min / PX_min)**p nohead lw 6 lc rgb '#bbbbbb' back
-        }
+        if (p == p) { eval published_segment(p) }
       }
     }
     do for [k=1:words(S)] {

@@ -14,15 +14,12 @@ ANCHOR = sel('h10', w1); eval anchored_triangle(2, 'slope 2')
 # The published rate of each (reading, weight), as a grey segment from the finest point of
 # its series over the last interval (on the data where the rate agrees).
 P = 'tables/published/thesis_table4_4_long.tsv'
-pub(r, w) = real(system(sprintf("awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next } $c[\"h_rule\"]==\"%s\" && $c[\"weight\"]==\"%s\" { print $c[\"numerical\"]; f=1; exit } END { if (!f) print \"NaN\" }' '%s'", r, w, P)))
+pub(r, w) = published_rate(P, sprintf('$c["h_rule"]=="%s" && $c["weight"]=="%s"', r, w))
 do for [r in "h10 h15"] {
   do for [w in w1.' '.w2.' '.w3] {
     ANCHOR = sel(r, w)
-    stats ANCHOR using (column('h')) name 'PX' nooutput
-    stats ANCHOR using (column('h') > PX_min ? column('h') : NaN) name 'PX2' nooutput
-    stats ANCHOR using (column('h') == PX_min ? column('rel_error') : NaN) name 'PY' nooutput
     p = pub(r, w)
-    if (p == p) { set arrow from PX_min, PY_min to PX2_min, PY_min * (PX2_min / PX_min)**p nohead lw 6 lc rgb '#bbbbbb' back }
+    if (p == p) { eval published_segment(p) }
   }
 }
 stats f using (column("h")) nooutput

@@ -19,18 +19,13 @@ sel(i, j) = rows_named(f, sprintf('$c["weight"]=="%s" && $c["theta"]=="%s" && $c
 # Slope triangles (`slopes`: one per theta, space-separated) under the two finest points of
 # the quartic series of each theta.
 do for [j=1:words(thetas)] { ANCHOR = sel(1, j); eval anchored_triangle(word(slopes, j) + 0, 'slope '.word(slopes, j)) }
-pub(w, t) = real(system(sprintf("awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next } $c[\"weight\"]==\"%s\" && $c[\"theta\"]+0==%s { print $c[\"numerical\"]; f=1; exit } END { if (!f) print \"NaN\" }' '%s'", w, t, P)))
+pub(w, t) = published_rate(P, sprintf('$c["weight"]=="%s" && $c["theta"]+0==%s', w, t))
 do for [j=1:words(thetas)] {
   do for [i=1:3] {
     ANCHOR = sel(i, j)
-    stats ANCHOR using (column('h')) name 'PX' nooutput
-    stats ANCHOR using (column('h') > PX_min ? column('h') : NaN) name 'PX2' nooutput
-    stats ANCHOR using (column('h') == PX_min ? column('rel_error') : NaN) name 'PY' nooutput
     p = pub(wl(i), th(j))
     # A rate far from any data (Table 4.6's -281 for the explicit step) is not drawn.
-    if (p == p && abs(p) < 20) {
-      set arrow from PX_min, PY_min to PX2_min, PY_min * (PX2_min / PX_min)**p nohead lw 6 lc rgb '#bbbbbb' back
-    }
+    if (p == p && abs(p) < 20) { eval published_segment(p) }
   }
 }
 thn(t) = t eq '0.5' ? '1/2' : t
