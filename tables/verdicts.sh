@@ -27,12 +27,13 @@ items=$1 score=$2 data=$3 out=$4
   echo "# written_utc = $(date -u +%Y-%m-%dT%H:%M:%SZ)"
   printf 'document\titem\tshows\tverdict\tevidence\tsection\n'
   awk -F'\t' -v score="$score" -v data="$data" '
-    function hdr(file, c,   line, f, i, k) {  # column index of a TSV file by name; the next
-      delete c                                # getline from the file reads its first row
-      close(file)
+    function load(file, T,   line, f, c, i, k, n) {  # the rows of a TSV file as T[row, column name]
+      delete T; n = 0; close(file)
       while ((getline line < file) > 0) { if (line ~ /^#/) continue
-        k = split(line, f, "\t"); for (i = 1; i <= k; i++) c[f[i]] = i; return 1 }
-      return 0 }
+        k = split(line, f, "\t")
+        if (!("h" in c)) { for (i = 1; i <= k; i++) c[i] = f[i]; c["h"] = 1; continue }
+        n++; for (i = 1; i <= k; i++) T[n, c[i]] = f[i] }
+      close(file); return n }
     function rates(t,   v) {
       if (!(t in total)) return "not yet computed\tthe result store has no rows for this table"
       if (nc[t] == total[t]) return "not yet computed\tnone of its " total[t] " rates is in the result store at the documents'"'"' levels yet"
@@ -40,42 +41,36 @@ items=$1 score=$2 data=$3 out=$4
       return v "\t" sprintf("%d of %d rates reproduced at the documents'"'"' levels (%d agree, %d non-convergence, %d in seed band); %d differ with a checked reason, %d unexplained, %d not yet computed",
                             good[t], total[t], ag[t], ncv[t], sb[t], cr[t], un[t], nc[t]) }
     BEGIN {
-      if (hdr(score, c))
-        while ((getline line < score) > 0) { if (line ~ /^#/) continue; split(line, f, "\t")
-          if (f[c["table"]] == "table" || f[c["counted"]] != "yes" || f[c["table"]] == "total") continue
-          t = f[c["table"]]; total[t] = f[c["rates"]]; ag[t] = f[c["agrees"]]; ncv[t] = f[c["non_convergence"]]
-          sb[t] = f[c["in_seed_band"]]; cr[t] = f[c["checked_reason"]]; un[t] = f[c["unexplained"]]; nc[t] = f[c["not_computed"]]
-          good[t] = ag[t] + ncv[t] + sb[t] } }
+      n = load(score, S)
+      for (i = 1; i <= n; i++) {
+        t = S[i, "table"]; if (S[i, "counted"] != "yes" || t == "total") continue
+        total[t] = S[i, "rates"]; ag[t] = S[i, "agrees"]; ncv[t] = S[i, "non_convergence"]
+        sb[t] = S[i, "in_seed_band"]; cr[t] = S[i, "checked_reason"]; un[t] = S[i, "unexplained"]; nc[t] = S[i, "not_computed"]
+        good[t] = ag[t] + ncv[t] + sb[t] } }
     /^#/ || $1 == "document" { next }
     { split($4, r, " "); kind = r[1]; arg = r[2]; res = "" }
     kind == "rates" { res = rates(arg) }
     kind == "as" { split(rates(arg), q, "\t"); res = q[1] "\tdrawn from the rows of the table: " q[2] }
-    kind == "cor71" { file = data "/koba_sato_cor71.tsv"; n = h = 0
-      if (hdr(file, c)) while ((getline line < file) > 0) { if (line ~ /^#/) continue; split(line, f, "\t")
-        if (f[c["holds"]] == "holds") continue; n++; h += (f[c["holds"]] == 1) }
+    kind == "cor71" { n = load(data "/koba_sato_cor71.tsv", T); h = 0
+      for (i = 1; i <= n; i++) h += (T[i, "holds"] == 1)
       res = (n == 0 ? "not yet computed\t-" : ((h == n ? "reproduced" : "published value wrong") "\t" sprintf("%d of %d printed coefficients hold", h, n))) }
-    kind == "bounds" { file = data "/koba_sato_bounds_summary.tsv"; n = v = 0; m = 1e300
-      if (hdr(file, c)) while ((getline line < file) > 0) { if (line ~ /^#/) continue; split(line, f, "\t")
-        if (f[c["cases"]] == "cases") continue; n += f[c["cases"]]; v += f[c["violations"]]; if (f[c["min_ratio"]] + 0 < m) m = f[c["min_ratio"]] + 0 }
+    kind == "bounds" { rows = load(data "/koba_sato_bounds_summary.tsv", T); n = v = 0; m = 1e300
+      for (i = 1; i <= rows; i++) { n += T[i, "cases"]; v += T[i, "violations"]; if (T[i, "min_ratio"] + 0 < m) m = T[i, "min_ratio"] + 0 }
       res = (n == 0 ? "not yet computed\t-" : ((v == 0 ? "reproduced" : "published value wrong") "\t" sprintf("bound below the measured error in %d of %d cases (smallest bound/error %.3g)", v, n, m))) }
-    kind == "covering" { file = data "/imoto_regularity_cover.tsv"; n = h = 0
-      if (hdr(file, c)) while ((getline line < file) > 0) { if (line ~ /^#/) continue; split(line, f, "\t")
-        if (f[c["claim_holds"]] == "claim_holds") continue; n++; h += f[c["claim_holds"]] }
+    kind == "covering" { n = load(data "/imoto_regularity_cover.tsv", T); h = 0
+      for (i = 1; i <= n; i++) h += T[i, "claim_holds"]
       res = (n == 0 ? "not yet computed\t-" : ((h == n ? "reproduced" : "published value wrong") "\t" sprintf("the bound holds on %d of %d (level, seed) distributions", h, n))) }
-    kind == "fig3" { file = data "/imoto_figs_fig3_discs.tsv"; delete rn
-      if (hdr(file, c)) while ((getline line < file) > 0) { if (line ~ /^#/) continue; split(line, f, "\t"); rn[f[c["distribution"]]] = f[c["r_N"]] }
+    kind == "fig3" { n = load(data "/imoto_figs_fig3_discs.tsv", T); delete rn
+      for (i = 1; i <= n; i++) rn[T[i, "distribution"]] = T[i, "r_N"]
       res = (!("uniform" in rn) ? "not yet computed\t-" : ((rn["uniform"] < rn["non-uniform"] ? "reproduced" : "not reproduced") "\t" sprintf("r_N = %.4g (uniform) against %.4g (non-uniform), same N", rn["uniform"], rn["non-uniform"]))) }
-    kind == "count" { file = data "/core_voronoi.tsv"; N = ""
-      if (hdr(file, c)) while ((getline line < file) > 0) { if (line ~ /^#/) continue; split(line, f, "\t")
-        if (f[c["level"]] == 5 && f[c["distribution"]] == "jittered") N = f[c["N"]] }
+    kind == "count" { n = load(data "/core_voronoi.tsv", T); N = ""
+      for (i = 1; i <= n; i++) if (T[i, "level"] == 5 && T[i, "distribution"] == "jittered") N = T[i, "N"]
       res = (N == "" ? "not yet computed\t-" : ((N == 1521 ? "reproduced" : "not reproduced") "\t" sprintf("N = %s at Δx = 2^-5 (printed: 1,521)", N))) }
     kind == "weights" { nw = split(arg, w, ","); wrong = ""; ok = ""
-      file = data "/core_weights_errata.tsv"; delete bad
-      if (hdr(file, c)) while ((getline line < file) > 0) { if (line ~ /^#/) continue; split(line, f, "\t")
-        if (f[c["name"]] != "name") bad[f[c["name"]]] = f[c["printed_norm"]] }
-      file = data "/core_weights.tsv"; delete nrm
-      if (hdr(file, c)) while ((getline line < file) > 0) { if (line ~ /^#/) continue; split(line, f, "\t")
-        if (f[c["name"]] != "name") nrm[f[c["name"]]] = f[c["norm"]] }
+      n = load(data "/core_weights_errata.tsv", T); delete bad
+      for (i = 1; i <= n; i++) bad[T[i, "name"]] = T[i, "printed_norm"]
+      n = load(data "/core_weights.tsv", T); delete nrm
+      for (i = 1; i <= n; i++) nrm[T[i, "name"]] = T[i, "norm"]
       for (i = 1; i <= nw; i++) {
         if (w[i] in bad) wrong = wrong sprintf("%s%s printed integrates to %.4g", wrong == "" ? "" : "; ", w[i], bad[w[i]])
         if (w[i] in nrm) ok = ok sprintf("%s%s %.6g", ok == "" ? "" : ", ", w[i], nrm[w[i]]) }
