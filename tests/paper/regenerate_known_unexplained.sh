@@ -20,6 +20,7 @@ function note(t, s, k) {
   if (t == "thesis_table4_3" && k ~ /grad case2/) return "gradient of sin 2pi(x+y): reproduced 1.98-2.04 under both readings of h; published 2.16-2.52; no diagnostic yet"
   if (t == "thesis_table4_7") return "dt = 0.5h, T = 0.1: K steps, the dt reading and the volume mismatch of (A.10) (as for Table 4.4) are candidates; no checked diagnostic yet (runs: thesis_table4_7_dtexact, _cellvol)"
   if (t == "thesis_table4_2" && k ~ /cubic_spike case1/) return "cubic spike, Case 1 (the quartic): the error falls about fivefold per level from 2^-9 to 2^-12 (as dx^2.3, about 12 in h = c dx^(1/5)) while Case 2 gives the published 4.27; the plain grid with Voronoi volumes falls the same way (gpm trunc: 2.4e-4, 4.3e-5, 7.8e-6 at 2^-9..2^-11, largest at a corner of Omega), so the Case 1 error there is a corner error, not the h^4 smoothing part; no checked diagnostic yet"
+  if (t == "thesis_table4_6" && k ~ / 0.5$/) return "dt = 0.5h^2, theta = 1/2: the error grows from 2^-8 to 2^-9 (K = 16 to 22 steps); the volume mismatch of (A.10), which changes sign between 2^-8 and 2^-9 (Table 4.4), is the first candidate; no checked diagnostic yet"
   if (t == "thesis_table4_2") return "Table 4.2 at 2^-11/2^-12: no diagnostic for this row yet"
   return "open: no diagnostic yet" }
 BEGIN { print "# Paper-scale rates that differ from the published ones without a checked reason (tests/paper/check_verdicts.sh)."
