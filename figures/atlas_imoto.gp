@@ -2,10 +2,11 @@
 # Left: wall time of the (level, m) unit — one fused pass computes all nine weights and the
 # three operators, so all weights of a unit share one time (not apportioned).  Right: the
 # unit's neighbour pairs.  Dash pattern = weight, point type = regular order m.
-# Columns of atlas_imoto.tsv: 3 level, 4 rel_error, 5 time_s, 6 pairs, 7 operator, 8 weight, 9 m.
+# Columns are addressed by name (rel_error, time_s, pairs, operator, weight, m of atlas_imoto.tsv).
 load 'figures/style.gp'
 set terminal svg size 1100,1150 dynamic enhanced font 'Helvetica,11' background rgb 'white'
 set output out
+set datafile columnheaders
 f = datadir.'/atlas_imoto.tsv'
 ops = "interpolant gradient laplacian"
 sym = "Π ∇ Δ"
@@ -22,8 +23,8 @@ do for [k=1:3] {
     set xlabel (c == 1 ? 'wall time of the (level, m) unit [s]' : 'neighbour pairs of the unit')
     if (c == 1) { unset key } else { set key }
     plot for [j=1:3] for [m in "1 3 5"] \
-         rows(f, sprintf('$7=="%s" && $8=="%s%d" && $9==%s', word(ops, k), word(pre, k), j, m)) \
-         using (c == 1 ? $5 : $6):4 with linespoints lt j pt mpt(m + 0) \
+         rows_named(f, sprintf('$c["operator"]=="%s" && $c["weight"]=="%s%d" && $c["m"]==%s', word(ops, k), word(pre, k), j, m)) \
+         using (column(c == 1 ? "time_s" : "pairs")):(column("rel_error")) with linespoints lt j pt mpt(m + 0) \
          title sprintf('%s%d, m = %s', word(sym, k), j, m)
   }
 }

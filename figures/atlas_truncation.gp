@@ -3,12 +3,12 @@
 # fused pass of the (h reading, volumes, level) slice — shared by every weight of the slice,
 # not apportioned — plus the Voronoi volumes where they are used.  Point type = weight,
 # dash pattern = volume choice and h reading.  Set `table` (e.g. '4_1') before loading.
-# Columns of atlas_thesis_table<t>.tsv: 3 level, 4 rel_error, 5 time_s, 6 pairs,
-# 7 operator, 8 function, 9 volumes, 10 h_reading, 11 weight.
+# Columns are addressed by name (rel_error, time_s, pairs, operator, function, volumes,
+# h_reading, weight of atlas_thesis_table<t>.tsv).
 load 'figures/style.gp'
 f = datadir.'/atlas_thesis_table'.table.'.tsv'
-uniq(c) = system(sprintf("awk -F'\t' '!/^#/ && $1!=\"task\" && $8==\"case2\" {print $%d}' '%s' | sort -u | tr '\n' ' '", c, f))
-ops = uniq(7); ws = uniq(11); vols = uniq(9); hs = uniq(10)
+uniq(c) = system(sprintf("awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next } $c[\"function\"]==\"case2\" { print $c[\"%s\"] }' '%s' | sort -u | tr '\n' ' '", c, f))
+ops = uniq('operator'); ws = uniq('weight'); vols = uniq('volumes'); hs = uniq('h_reading')
 nrow = words(ops)
 nw = words(ws); nv = words(vols); nh = words(hs)
 # One flat index over (weight, volumes, h reading): nested plot-for loops are kept shallow.
@@ -16,6 +16,7 @@ J(i) = i / (nv * nh) + 1; V(i) = (i / nh) % nv + 1; R(i) = i % nh + 1
 D(i) = (V(i) - 1) * nh + R(i)  # dash pattern (a bare "dt (" would read as a custom pattern)
 set terminal svg size 1050,(nrow * 400 + 60) dynamic enhanced font 'Helvetica,11' background rgb 'white'
 set output out
+set datafile columnheaders
 set format x '10^{%T}'
 set format y '10^{%T}'
 set ylabel 'relative ℓ^∞(Ω) error, Case 2'
@@ -32,9 +33,9 @@ do for [k=1:nrow] {
     set xlabel (c == 1 ? 'wall time of the slice [s] (pass + Voronoi)' : 'neighbour pairs of the level')
     if (c == 1) { unset key } else { set key }
     plot for [i=0:nw*nv*nh-1] \
-         rows(f, sprintf('$7=="%s" && $8=="case2" && $11=="%s" && $9=="%s" && $10=="%s"', \
-                         word(ops, k), word(ws, J(i)), word(vols, V(i)), word(hs, R(i)))) \
-         using (c == 1 ? $5 : $6):4 with linespoints lt J(i) dt D(i) \
+         rows_named(f, sprintf('$c["operator"]=="%s" && $c["function"]=="case2" && $c["weight"]=="%s" && $c["volumes"]=="%s" && $c["h_reading"]=="%s"', \
+                               word(ops, k), word(ws, J(i)), word(vols, V(i)), word(hs, R(i)))) \
+         using (column(c == 1 ? "time_s" : "pairs")):(column("rel_error")) with linespoints lt J(i) dt D(i) \
          title sprintf('%s, %s, h %s', sh(word(ws, J(i))), vname(word(vols, V(i))), word(hs, R(i)))
   }
 }

@@ -22,16 +22,13 @@ set datafile commentschars "#"
 # share label space.
 triangle(x0, y0, f, s, lab) = sprintf("set object polygon from %g,%g to %g,%g to %g,%g to %g,%g fs empty border lc rgb '#000000'; set label '%s' at %g,%g right font ',10'", \
   x0, y0, x0*f, y0, x0*f, y0*f**s, x0, y0, lab, x0/1.06, y0)
-# Rows of a data file that satisfy an awk condition on its tab-separated columns, e.g.
-#   plot rows(f, '$4=="grid"') using 2:10
-# (filtering outside gnuplot keeps lines unbroken where other rows are interleaved).
-rows(f, cond) = sprintf("< awk -F'\t' '!/^#/ && (%s)' '%s'", cond, f)
 # A log-2 x axis labelled with powers of 2 in half steps, for abscissae (such as h) that span
 # less than a decade, where '10^{%L}' would leave a single label.  Set the range first:
 #   xlo = 0.09; xhi = 0.22; eval pow2_xtics
 pow2_xtics = "set logscale x 2; set xrange [xlo:xhi]; set xtics ('' xlo); do for [k=ceil(2*log(xlo)/log(2)):floor(2*log(xhi)/log(2))] { set xtics add (sprintf('2^{%g}', k/2.0) 2**(k/2.0)) }"
 # Data rows chosen by column NAME, header kept, for `set datafile columnheaders` and
 # column("name") in `using`:   plot rows_named(f, '$c["variant"]=="seed1"') using (column("h")):(column("rel_error"))
+# (filtering outside gnuplot keeps lines unbroken where other rows are interleaved).
 rows_named(f, cond) = sprintf("< awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; print; next } (%s)' '%s'", cond, f)
 # A slope-s triangle under the two finest points (smallest h) of the series in the string
 # variable ANCHOR (a rows_named(...) source; needs `set datafile columnheaders`; call before any

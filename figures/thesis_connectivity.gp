@@ -4,6 +4,7 @@
 load 'figures/style.gp'
 set terminal svg size 600,640 dynamic enhanced font 'Helvetica,12' background rgb 'white'
 set output out
+set datafile columnheaders
 unset logscale; set format x '%g'; set format y '%g'
 set size ratio -1; set xrange [-0.1:1.1]; set yrange [-0.1:1.1]
 set object 1 rect from 0,0 to 1,1 fc rgb '#eeeeee' fs solid noborder behind
@@ -15,13 +16,13 @@ set title sprintf('%s, h = %.4g: h-connectivity %s', T, H+0, OK eq 'yes' ? 'hold
 # The connected case has no unconnected group: plot only the series that have points
 # (an empty series makes gnuplot warn).
 if (OK eq 'yes') {
-plot rows(e, sprintf('$1=="%s" && $6==0', C)) using 2:3:($4-$2):($5-$3) with vectors nohead lt 7 dt 1 lw 0.4 title 'edges of G', \
-     rows(p, sprintf('$1=="%s" && $4==0', C)) using 2:3 with points lt 2 pt 4 ps 0.5 title 'particles on Γ ∪ Γ_H (BFS sources)', \
-     rows(p, sprintf('$1=="%s" && $4==1 && $6==0', C)) using 2:3 with points lt 1 pt 7 ps 0.4 title 'particles in Ω reached'
+plot rows_named(e, sprintf('$c["case"]=="%s" && $c["unconnected"]==0', C)) using (column("x1")):(column("y1")):(column("x2")-column("x1")):(column("y2")-column("y1")) with vectors nohead lt 7 dt 1 lw 0.4 title 'edges of G', \
+     rows_named(p, sprintf('$c["case"]=="%s" && $c["in_omega"]==0', C)) using (column("x")):(column("y")) with points lt 2 pt 4 ps 0.5 title 'particles on Γ ∪ Γ_H (BFS sources)', \
+     rows_named(p, sprintf('$c["case"]=="%s" && $c["in_omega"]==1 && $c["unconnected"]==0', C)) using (column("x")):(column("y")) with points lt 1 pt 7 ps 0.4 title 'particles in Ω reached'
 } else {
-plot rows(e, sprintf('$1=="%s" && $6==0', C)) using 2:3:($4-$2):($5-$3) with vectors nohead lt 7 dt 1 lw 0.4 title 'edges of G', \
-     rows(e, sprintf('$1=="%s" && $6==1', C)) using 2:3:($4-$2):($5-$3) with vectors nohead lt 3 dt 1 lw 1.5 title 'edges of the unconnected group', \
-     rows(p, sprintf('$1=="%s" && $4==0', C)) using 2:3 with points lt 2 pt 4 ps 0.5 title 'particles on Γ ∪ Γ_H (BFS sources)', \
-     rows(p, sprintf('$1=="%s" && $4==1 && $6==0', C)) using 2:3 with points lt 1 pt 7 ps 0.4 title 'particles in Ω reached', \
-     rows(p, sprintf('$1=="%s" && $6==1', C)) using 2:3 with points lt 3 pt 9 ps 1.0 title 'particles in Ω not reached'
+plot rows_named(e, sprintf('$c["case"]=="%s" && $c["unconnected"]==0', C)) using (column("x1")):(column("y1")):(column("x2")-column("x1")):(column("y2")-column("y1")) with vectors nohead lt 7 dt 1 lw 0.4 title 'edges of G', \
+     rows_named(e, sprintf('$c["case"]=="%s" && $c["unconnected"]==1', C)) using (column("x1")):(column("y1")):(column("x2")-column("x1")):(column("y2")-column("y1")) with vectors nohead lt 3 dt 1 lw 1.5 title 'edges of the unconnected group', \
+     rows_named(p, sprintf('$c["case"]=="%s" && $c["in_omega"]==0', C)) using (column("x")):(column("y")) with points lt 2 pt 4 ps 0.5 title 'particles on Γ ∪ Γ_H (BFS sources)', \
+     rows_named(p, sprintf('$c["case"]=="%s" && $c["in_omega"]==1 && $c["unconnected"]==0', C)) using (column("x")):(column("y")) with points lt 1 pt 7 ps 0.4 title 'particles in Ω reached', \
+     rows_named(p, sprintf('$c["case"]=="%s" && $c["unconnected"]==1', C)) using (column("x")):(column("y")) with points lt 3 pt 9 ps 1.0 title 'particles in Ω not reached'
 }

@@ -11,6 +11,7 @@
 load 'figures/style.gp'
 set terminal svg size 1000,460 dynamic enhanced font 'Helvetica,12' background rgb 'white'
 set output out
+set datafile columnheaders
 fa = datadir.'/thesis_poisson_failure.tsv'
 fb = datadir.'/thesis_poisson_failure_h.tsv'
 set multiplot layout 1,2
@@ -29,13 +30,13 @@ set ytics nomirror
 set key at graph 0.98, graph 0.62 right top box opaque font ',10'
 set format y '10^{%L}'
 set ytics 1e-2, 1e4
-ok(s) = rows(fb, sprintf('$1=="5" && $2=="%d" && $8=="yes"', s))
-plot ok(1) using 3:15 smooth unique with linespoints lt 1 title 'seed 1', \
-     ok(2) using 3:15 smooth unique with linespoints lt 2 title 'seed 2', \
-     ok(3) using 3:15 smooth unique with linespoints lt 3 title 'seed 3', \
-     ok(4) using 3:15 smooth unique with linespoints lt 4 title 'seed 4', \
-     rows(fb, '$1=="5" && $13!="ok"') using 3:(1e17) with points lt 1 pt 2 ps 1.2 title 'unchecked CG throws', \
-     rows(fb, '$1=="5" && $2=="1"') using 3:($9/$6) axes x1y2 smooth unique with lines lt 7 lw 1 title 'cut off, seed 1'
+ok(s) = rows_named(fb, sprintf('$c["level"]=="5" && $c["seed"]=="%d" && $c["connected"]=="yes"', s))
+plot ok(1) using (column("h_over_dx")):(column("rel_error")) smooth unique with linespoints lt 1 title 'seed 1', \
+     ok(2) using (column("h_over_dx")):(column("rel_error")) smooth unique with linespoints lt 2 title 'seed 2', \
+     ok(3) using (column("h_over_dx")):(column("rel_error")) smooth unique with linespoints lt 3 title 'seed 3', \
+     ok(4) using (column("h_over_dx")):(column("rel_error")) smooth unique with linespoints lt 4 title 'seed 4', \
+     rows_named(fb, '$c["level"]=="5" && $c["unchecked_status"]!="ok"') using (column("h_over_dx")):(1e17) with points lt 1 pt 2 ps 1.2 title 'unchecked CG throws', \
+     rows_named(fb, '$c["level"]=="5" && $c["seed"]=="1"') using (column("h_over_dx")):(column("unconnected")/column("N_omega")) axes x1y2 smooth unique with lines lt 7 lw 1 title 'cut off, seed 1'
 
 # --- right panel: maximum principle -------------------------------------------------------
 set title 'maximum principle, data ≤ 0 outside Ω'
@@ -54,10 +55,10 @@ set yrange [-0.15:1.15]
 set xlabel 'Δx'
 set ylabel 'max_Ω U / max_Ω |U|   (> 0: violated)'
 set key at graph 0.98, graph 0.6 right top box opaque font ',10'
-sel(r, w) = rows(fa, sprintf('$1=="%s" && $2=="%s"', r, w))
-plot sel('h10', 'cubic_spike') using 4:17 with linespoints lt 3 title 'cubic spike, printed h', \
-     sel('h15', 'cubic_spike') using 4:17 with linespoints lt 5 title 'cubic spike, 2^{-15} reading', \
-     sel('h10', 'quartic_polynomial') using 4:17 with linespoints lt 1 title 'quartic, printed h', \
-     sel('h15', 'quartic_polynomial') using 4:17 with linespoints lt 2 title 'quartic, 2^{-15} reading', \
+sel(r, w) = rows_named(fa, sprintf('$c["h_rule"]=="%s" && $c["weight"]=="%s"', r, w))
+plot sel('h10', 'cubic_spike') using (column("dx")):(column("mp_boundary")) with linespoints lt 3 title 'cubic spike, printed h', \
+     sel('h15', 'cubic_spike') using (column("dx")):(column("mp_boundary")) with linespoints lt 5 title 'cubic spike, 2^{-15} reading', \
+     sel('h10', 'quartic_polynomial') using (column("dx")):(column("mp_boundary")) with linespoints lt 1 title 'quartic, printed h', \
+     sel('h15', 'quartic_polynomial') using (column("dx")):(column("mp_boundary")) with linespoints lt 2 title 'quartic, 2^{-15} reading', \
      0 with lines lt 7 lw 1 notitle
 unset multiplot

@@ -40,7 +40,7 @@ $(DATA)/thesis_table%_rates_printed_uniform.tsv $(DATA)/thesis_table%_rates_scal
     $(DATA)/thesis_table%.tsv $(BUILD)/rate_table tables/published/thesis_table%_long.tsv
 	@for s in printed_voronoi scaled_voronoi printed_uniform scaled_uniform; do \
 	  r=$${s%_*}; v=$${s#*_}; out=$(DATA)/thesis_table$*_rates_$$s.tsv; \
-	  awk -F'\t' -v r=$$r -v v=$$v '/^#/ || $$1=="h_reading" || ($$1==r && $$2==v)' $< > $$out.slice; \
+	  awk -F'\t' -v r=$$r -v v=$$v '/^#/ { print; next } !h++ { for (i=1;i<=NF;i++) c[$$i]=i; print; next } $$c["h_reading"]==r && $$c["volumes"]==v' $< > $$out.slice; \
 	  if [ $$(grep -vc '^#' $$out.slice) -le 1 ]; then rm -f $$out.slice; continue; fi; \
 	  $(BUILD)/rate_table --data $$out.slice --published tables/published/thesis_table$*_long.tsv \
 	    --key $(call thesis_key,$*) --out $$out || exit 1; \
