@@ -40,14 +40,14 @@
 #include <string>
 #include <vector>
 
-#include "gpm/args.hpp"
+#include "gpm/io/args.hpp"
 #include "limit_table.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/kernel.hpp"
-#include "gpm/testfunctions.hpp"
-#include "gpm/tsv.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/kernel/kernel.hpp"
+#include "gpm/operators/testfunctions.hpp"
+#include "gpm/weights/weights.hpp"
 
 namespace {
 

@@ -23,15 +23,15 @@
 #include <string>
 #include <vector>
 
-#include "gpm/args.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/influence_radius.hpp"
-#include "gpm/kernel.hpp"
-#include "gpm/laplacian_matrix.hpp"
-#include "gpm/profile.hpp"
-#include "gpm/tsv.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/influence_radius.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/kernel/kernel.hpp"
+#include "gpm/solvers/laplacian_matrix.hpp"
+#include "gpm/studies/profile.hpp"
+#include "gpm/weights/weights.hpp"
 #include "limit_table.hpp"
 
 namespace {

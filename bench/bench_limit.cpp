@@ -30,16 +30,16 @@
 #include <string>
 #include <vector>
 
-#include "gpm/args.hpp"
 #include "gpm/error.hpp"
-#include "gpm/simd.hpp"
-#include "gpm/tsv.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/kernel/simd.hpp"
+#include "gpm/weights/weights.hpp"
 #include "limit_table.hpp"
 
 namespace {
 
-// Vectors exactly as in the kernel (gpm/simd.hpp): the same helpers, the same instructions.
+// Vectors exactly as in the kernel (gpm/kernel/simd.hpp): the same helpers, the same instructions.
 using namespace gpm::simd;
 
 using Clock = std::chrono::steady_clock;

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "gpm/tsv.hpp"
+#include "gpm/io/tsv.hpp"
 
 namespace bench {
 

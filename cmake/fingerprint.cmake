@@ -5,7 +5,7 @@
 # numerics source of the core (src/gpm, without the files that only parse options, print
 # progress, plan costs or keep the store), of the compiler and its flags (FLAGS) and of the
 # program's own source.
-# A data row carries the fingerprint of the program that computed it (see src/gpm/store.hpp):
+# A data row carries the fingerprint of the program that computed it (see src/gpm/studies/store.hpp):
 # a row is reused as current only under the same fingerprint, otherwise after a recorded
 # re-check.  OUT is rewritten only when its content changes, so an unchanged tree recompiles
 # nothing.
@@ -13,7 +13,7 @@
 # Inputs: -DSRC=<source dir> -DOUT=<generated .cpp> -DFLAGS=<compiler, version, flags>
 cmake_minimum_required(VERSION 3.22)
 set(io_only args command_line error progress profile cost_model study_plan provenance store)
-file(GLOB core ${SRC}/src/gpm/*.cpp ${SRC}/src/gpm/*.hpp)
+file(GLOB_RECURSE core ${SRC}/src/gpm/*.cpp ${SRC}/src/gpm/*.hpp)
 list(SORT core)
 set(core_text "")
 foreach(f IN LISTS core)

@@ -22,9 +22,9 @@
 #include <string>
 #include <vector>
 
-#include "gpm/args.hpp"
 #include "gpm/error.hpp"
-#include "gpm/tsv.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
 
 using namespace gpm;
 

@@ -1,5 +1,5 @@
 // core_operator_errata: the evidence, as numbers, for four printed operator formulas that do
-// not hold as printed (the report's errata; src/gpm/operators.hpp derives each).  On one
+// not hold as printed (the report's errata; src/gpm/operators/operators.hpp derives each).  On one
 // particle set — the plain grid at Δx = 2^-6 (no jitter, so that the corrected forms show
 // only their small consistency error), V_i = |Ω_H|/N, h = imoto's for m = 3 — each
 // row gives the relative ℓ∞(Ω) error of an operator applied to v = sin 2π(x+y) in its
@@ -21,18 +21,18 @@
 #include <string>
 #include <vector>
 
-#include "gpm/args.hpp"
-#include "gpm/cells.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/influence_radius.hpp"
-#include "gpm/kernel.hpp"
-#include "gpm/operators.hpp"
-#include "gpm/profile.hpp"
-#include "gpm/study.hpp"
-#include "gpm/testfunctions.hpp"
-#include "gpm/tsv.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/cells.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/influence_radius.hpp"
+#include "gpm/geometry/volumes.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/kernel/kernel.hpp"
+#include "gpm/operators/operators.hpp"
+#include "gpm/operators/testfunctions.hpp"
+#include "gpm/studies/profile.hpp"
+#include "gpm/weights/weights.hpp"
 
 using namespace gpm;
 

@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "gpm/args.hpp"
 #include "gpm/error.hpp"
-#include "gpm/profile.hpp"
-#include "gpm/tsv.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/studies/profile.hpp"
+#include "gpm/weights/weights.hpp"
 
 namespace {
 

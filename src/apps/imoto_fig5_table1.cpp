@@ -21,18 +21,21 @@
 #include <string>
 #include <vector>
 
-#include "gpm/args.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/kernel.hpp"
-#include "gpm/norms.hpp"
-#include "gpm/profile.hpp"
-#include "gpm/progress.hpp"
-#include "gpm/study.hpp"
-#include "gpm/testfunctions.hpp"
-#include "gpm/truncation.hpp"
-#include "gpm/tsv.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/influence_radius.hpp"
+#include "gpm/geometry/volumes.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/progress.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/kernel/kernel.hpp"
+#include "gpm/operators/fused_errors.hpp"
+#include "gpm/operators/norms.hpp"
+#include "gpm/operators/testfunctions.hpp"
+#include "gpm/operators/truncation.hpp"
+#include "gpm/studies/profile.hpp"
+#include "gpm/studies/store.hpp"
+#include "gpm/weights/weights.hpp"
 
 using namespace gpm;
 

@@ -12,11 +12,11 @@
 #include <cstdio>
 #include <string>
 
-#include "gpm/args.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/tsv.hpp"
-#include "gpm/voronoi.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/voronoi.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
 
 using namespace gpm;
 

@@ -28,15 +28,16 @@
 #include <string>
 #include <vector>
 
-#include "gpm/args.hpp"
-#include "gpm/cells.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/profile.hpp"
-#include "gpm/study.hpp"
-#include "gpm/truncation.hpp"
-#include "gpm/tsv.hpp"
-#include "gpm/voronoi.hpp"
+#include "gpm/geometry/cells.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/influence_radius.hpp"
+#include "gpm/geometry/volumes.hpp"
+#include "gpm/geometry/voronoi.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/operators/truncation.hpp"
+#include "gpm/studies/profile.hpp"
 
 using namespace gpm;
 

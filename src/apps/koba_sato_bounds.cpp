@@ -6,7 +6,7 @@
 // Lipschitz weights from the registry, the program measures the error of Π̃_h, ∇̃_h, Δ̃_h
 // and □̃_h at a_k for test functions with known seminorms, and evaluates each theorem's
 // right-hand side with the constants c₁ … c₁₂ computed from the cells (exact
-// polygon–annulus integrals, src/gpm/koba_sato.hpp).  δ = r_σ/2 as in Section 7 where
+// polygon–annulus integrals, src/gpm/theory/koba_sato.hpp).  δ = r_σ/2 as in Section 7 where
 // B_{r_σ/2}(a_k) ⊂ σ_k, else the largest admissible δ = dist(a_k, ∂σ_k).
 //
 // Output: one row per (level, seed, site, C*, weight, λ, function) with error and bound
@@ -22,15 +22,15 @@
 #include <map>
 #include <string>
 
-#include "gpm/args.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/koba_sato.hpp"
-#include "gpm/koba_sato_cor71.hpp"
-#include "gpm/profile.hpp"
-#include "gpm/progress.hpp"
-#include "gpm/tsv.hpp"
-#include "gpm/voronoi.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/voronoi.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/progress.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/studies/profile.hpp"
+#include "gpm/theory/koba_sato.hpp"
+#include "gpm/theory/koba_sato_cor71.hpp"
 
 using namespace gpm;
 

@@ -12,11 +12,11 @@
 #include <map>
 #include <string>
 
-#include "gpm/args.hpp"
 #include "gpm/error.hpp"
-#include "gpm/koba_sato_cor71.hpp"
-#include "gpm/profile.hpp"
-#include "gpm/tsv.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/studies/profile.hpp"
+#include "gpm/theory/koba_sato_cor71.hpp"
 
 using namespace gpm;
 

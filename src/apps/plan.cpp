@@ -18,11 +18,11 @@
 #include <set>
 #include <string>
 
-#include "gpm/args.hpp"
 #include "gpm/error.hpp"
-#include "gpm/profile.hpp"
-#include "gpm/study_plan.hpp"
-#include "gpm/tsv.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/studies/profile.hpp"
+#include "gpm/studies/study_plan.hpp"
 
 using namespace gpm;
 
@@ -59,7 +59,7 @@ struct Agg {
 int body(int argc, char** argv) {
   Args a("plan",
          "Predicted pair interactions, time and peak memory of every modelled study and level\n"
-         "of a profile, printed before anything runs (see src/gpm/study_plan.hpp).");
+         "of a profile, printed before anything runs (see src/gpm/studies/study_plan.hpp).");
   a.opt("profile", "quick", "quick or paper")
       .output("out", "", "TSV: one row per unit of work (required)")
       .output("summary", "", "TSV: per (study, level), per study and total (optional)")

@@ -16,10 +16,10 @@
 #include <map>
 #include <string>
 
-#include "gpm/args.hpp"
 #include "gpm/error.hpp"
-#include "gpm/study_plan.hpp"
-#include "gpm/tsv.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/studies/study_plan.hpp"
 
 using namespace gpm;
 

@@ -23,10 +23,10 @@
 #include <string>
 #include <vector>
 
-#include "gpm/args.hpp"
 #include "gpm/error.hpp"
-#include "gpm/norms.hpp"
-#include "gpm/tsv.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/operators/norms.hpp"
 
 using namespace gpm;
 

@@ -6,9 +6,9 @@
 #include <map>
 #include <string>
 
-#include "gpm/args.hpp"
 #include "gpm/error.hpp"
-#include "gpm/tsv.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
 
 using namespace gpm;
 

@@ -8,12 +8,12 @@
 #include <chrono>
 #include <cmath>
 
-#include "gpm/args.hpp"
-#include "gpm/connectivity.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/profile.hpp"
-#include "gpm/tsv.hpp"
+#include "gpm/geometry/connectivity.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/studies/profile.hpp"
 
 using namespace gpm;
 

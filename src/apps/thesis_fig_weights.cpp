@@ -5,10 +5,10 @@
 #include <chrono>
 #include <cmath>
 
-#include "gpm/args.hpp"
 #include "gpm/error.hpp"
-#include "gpm/tsv.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/weights/weights.hpp"
 
 using namespace gpm;
 

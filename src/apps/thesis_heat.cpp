@@ -24,24 +24,25 @@
 #include <string>
 #include <vector>
 
-#include "gpm/args.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/heat.hpp"
-#include "gpm/heat_tables.hpp"
-#include "gpm/influence_radius.hpp"
-#include "gpm/laplacian_matrix.hpp"
-#include "gpm/poisson.hpp"
-#include "gpm/profile.hpp"
-#include "gpm/study.hpp"
-#include "gpm/tsv.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/influence_radius.hpp"
+#include "gpm/geometry/volumes.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/solvers/heat.hpp"
+#include "gpm/solvers/laplacian_matrix.hpp"
+#include "gpm/solvers/poisson.hpp"
+#include "gpm/studies/heat_tables.hpp"
+#include "gpm/studies/profile.hpp"
+#include "gpm/studies/store.hpp"
+#include "gpm/weights/weights.hpp"
 
 using namespace gpm;
 
 namespace {
 
-// --- Parameters: the tables, weights, κ and T are the catalog's (gpm/heat_tables.hpp). ---
+// --- Parameters: the tables, weights, κ and T are the catalog's (gpm/studies/heat_tables.hpp). ---
 
 // The rows of series (weight, θ) that never blew up: the input of rate_table.
 void write_rates_input(LevelCache& cache, const std::string& path) {

@@ -10,7 +10,7 @@
 //   * the operator's consistency on u itself, measured and predicted.  For the Fourier mode
 //     u = sin 2π(x+y) the discrete Laplacian is, before any particle effect,
 //         Δ_h u ≈ (V_i/Δx²)(1 − ε(kh)) Δu,
-//     ε the smoothing error (smoothing.hpp) and V_i/Δx² − 1 the volume mismatch (study.hpp):
+//     ε the smoothing error (smoothing.hpp) and V_i/Δx² − 1 the volume mismatch (volumes.hpp):
 //     tau_predicted = (V/Δx²)(1 − ε) − 1.  Measured: tau_fit = Σ τ_i Δu_i / Σ Δu_i² (signed,
 //     τ_i = Δ_h u(x_i) − Δu(x_i) over Ω) and tau_max = max|τ_i| / max|Δu_i|.
 // If the error follows |tau_predicted| at a constant ratio, the rates follow the volume
@@ -22,18 +22,20 @@
 #include <string>
 #include <vector>
 
-#include "gpm/args.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/influence_radius.hpp"
-#include "gpm/laplacian_matrix.hpp"
-#include "gpm/poisson.hpp"
-#include "gpm/poisson_probes.hpp"
-#include "gpm/profile.hpp"
-#include "gpm/smoothing.hpp"
-#include "gpm/study.hpp"
-#include "gpm/testfunctions.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/influence_radius.hpp"
+#include "gpm/geometry/volumes.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/operators/testfunctions.hpp"
+#include "gpm/solvers/laplacian_matrix.hpp"
+#include "gpm/solvers/poisson.hpp"
+#include "gpm/solvers/poisson_probes.hpp"
+#include "gpm/studies/profile.hpp"
+#include "gpm/studies/store.hpp"
+#include "gpm/theory/smoothing.hpp"
+#include "gpm/weights/weights.hpp"
 
 using namespace gpm;
 
@@ -44,7 +46,7 @@ const std::vector<int> kPaperLevels = {7, 8, 9};  // the thesis' rate levels are
 const std::vector<std::string> kWeights = {"quartic_polynomial", "piecewise_cubic_polynomial",
                                            "piecewise_quintic_polynomial"};
 // The particle sets: three realizations of the jitter and the plain grid, with the volumes
-// of (A.10); then seed 1 and the plain grid with V_i = Δx² (pde_volumes, study.hpp).
+// of (A.10); then seed 1 and the plain grid with V_i = Δx² (pde_volumes, volumes.hpp).
 struct Variant {
   std::string name;
   uint64_t seed;

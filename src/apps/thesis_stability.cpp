@@ -23,16 +23,18 @@
 #include <string>
 #include <vector>
 
-#include "gpm/args.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/heat.hpp"
-#include "gpm/laplacian_matrix.hpp"
-#include "gpm/profile.hpp"
-#include "gpm/stability.hpp"
-#include "gpm/study.hpp"
-#include "gpm/tsv.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/influence_radius.hpp"
+#include "gpm/geometry/volumes.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/solvers/heat.hpp"
+#include "gpm/solvers/laplacian_matrix.hpp"
+#include "gpm/solvers/stability.hpp"
+#include "gpm/studies/profile.hpp"
+#include "gpm/studies/store.hpp"
+#include "gpm/weights/weights.hpp"
 
 using namespace gpm;
 

@@ -24,14 +24,14 @@
 #include <vector>
 
 #include "cuda/kernel_cuda.hpp"
-#include "gpm/args.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/kernel.hpp"
-#include "gpm/laplacian_matrix.hpp"
-#include "gpm/testfunctions.hpp"
-#include "gpm/tsv.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/kernel/kernel.hpp"
+#include "gpm/operators/testfunctions.hpp"
+#include "gpm/solvers/laplacian_matrix.hpp"
+#include "gpm/weights/weights.hpp"
 
 namespace {
 

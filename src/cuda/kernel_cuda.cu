@@ -10,8 +10,8 @@
 #include <utility>
 
 #include "cuda/kernel_cuda_body.hpp"
-#include "gpm/cells.hpp"
 #include "gpm/error.hpp"
+#include "gpm/geometry/cells.hpp"
 
 namespace gpm::cuda {
 

@@ -2,8 +2,8 @@
 // one field, and the matrix-free Laplacian of the Poisson/heat solvers, on an NVIDIA GPU.
 // Built only with -DGPM_CUDA=ON (cmake/cuda.cmake); nothing else in the project needs it.
 //
-// Same definitions as gpm::FusedKernel (gpm/kernel.hpp) and gpm::DiscreteLaplacian
-// (gpm/laplacian_matrix.hpp); the per-target arithmetic is kernel_cuda_body.hpp, which the
+// Same definitions as gpm::FusedKernel (gpm/kernel/kernel.hpp) and gpm::DiscreteLaplacian
+// (gpm/solvers/laplacian_matrix.hpp); the per-target arithmetic is kernel_cuda_body.hpp, which the
 // unit tests also run on the CPU.  Layout: the particles sorted by a uniform grid of cells
 // of size h/cells_per_h on the host (gpm::CellList), uploaded once with the cell offsets;
 // one GPU thread per target, targets processed in cell order (neighbouring threads read
@@ -22,8 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "gpm/domain.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/weights/weights.hpp"
 
 namespace gpm::cuda {
 
@@ -71,7 +71,7 @@ class CudaKernel {
   std::unique_ptr<Impl> impl_;
 };
 
-// y = M_ΩΩ x (gpm/laplacian_matrix.hpp): Δ_h of the field equal to x in Ω and 0 outside,
+// y = M_ΩΩ x (gpm/solvers/laplacian_matrix.hpp): Δ_h of the field equal to x in Ω and 0 outside,
 // at the particles of Ω (unknowns numbered in increasing particle index, as in
 // DiscreteLaplacian).  The field lives on the device; each apply moves x and y only.
 class CudaLaplacian {

@@ -7,7 +7,7 @@
 // (tests/unit/cuda_body.cpp does).  What the CPU cannot check is only the CUDA plumbing
 // around it: uploads, launches, the device's own rounding (FMA contraction by nvcc).
 //
-// Definitions as in gpm/kernel.hpp (d = 2, q = r/h, G(q) = w(q)/q²):
+// Definitions as in gpm/kernel/kernel.hpp (d = 2, q = r/h, G(q) = w(q)/q²):
 //   Π_h v(x_j) = h^-2     Σ_{r<h}   V_i v_i w(q)
 //   ∇_h v(x_j) = d h^-4   Σ_{0<r<h} V_i (v_i − v_j)(x_i − x_j) G(q)
 //   Δ_h v(x_j) = 2d h^-4  Σ_{0<r<h} V_i (v_i − v_j) G(q)
@@ -24,9 +24,9 @@
 #include <string>
 #include <vector>
 
-#include "gpm/cells.hpp"
 #include "gpm/error.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/cells.hpp"
+#include "gpm/weights/weights.hpp"
 
 #if defined(__CUDACC__)
 #define GPM_HD __host__ __device__

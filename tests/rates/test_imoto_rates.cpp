@@ -35,10 +35,12 @@
 #include <map>
 #include <string>
 
-#include "gpm/domain.hpp"
-#include "gpm/norms.hpp"
-#include "gpm/study.hpp"
-#include "gpm/truncation.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/influence_radius.hpp"
+#include "gpm/geometry/volumes.hpp"
+#include "gpm/operators/fused_errors.hpp"
+#include "gpm/operators/norms.hpp"
+#include "gpm/operators/truncation.hpp"
 
 using namespace gpm;
 

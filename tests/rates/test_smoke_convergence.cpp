@@ -7,7 +7,8 @@
 #include <cmath>
 
 #include "gpm/error.hpp"
-#include "gpm/truncation.hpp"
+#include "gpm/geometry/influence_radius.hpp"
+#include "gpm/operators/truncation.hpp"
 
 using namespace gpm;
 

@@ -16,17 +16,17 @@
 #include <cmath>
 #include <string>
 
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/heat.hpp"
-#include "gpm/heat_tables.hpp"
-#include "gpm/influence_radius.hpp"
-#include "gpm/laplacian_matrix.hpp"
-#include "gpm/norms.hpp"
-#include "gpm/poisson.hpp"
-#include "gpm/study.hpp"
-#include "gpm/testfunctions.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/influence_radius.hpp"
+#include "gpm/geometry/volumes.hpp"
+#include "gpm/operators/norms.hpp"
+#include "gpm/operators/testfunctions.hpp"
+#include "gpm/solvers/heat.hpp"
+#include "gpm/solvers/laplacian_matrix.hpp"
+#include "gpm/solvers/poisson.hpp"
+#include "gpm/studies/heat_tables.hpp"
+#include "gpm/weights/weights.hpp"
 
 using namespace gpm;
 

@@ -33,16 +33,16 @@
 #include <cmath>
 #include <string>
 
-#include "gpm/connectivity.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/influence_radius.hpp"
-#include "gpm/laplacian_matrix.hpp"
-#include "gpm/poisson.hpp"
-#include "gpm/poisson_probes.hpp"
-#include "gpm/study.hpp"
-#include "gpm/testfunctions.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/connectivity.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/influence_radius.hpp"
+#include "gpm/geometry/volumes.hpp"
+#include "gpm/operators/testfunctions.hpp"
+#include "gpm/solvers/laplacian_matrix.hpp"
+#include "gpm/solvers/poisson.hpp"
+#include "gpm/solvers/poisson_probes.hpp"
+#include "gpm/weights/weights.hpp"
 
 using namespace gpm;
 

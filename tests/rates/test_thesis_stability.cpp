@@ -18,13 +18,13 @@
 #include <cmath>
 #include <string>
 
-#include "gpm/domain.hpp"
-#include "gpm/heat.hpp"
-#include "gpm/influence_radius.hpp"
-#include "gpm/laplacian_matrix.hpp"
-#include "gpm/stability.hpp"
-#include "gpm/study.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/influence_radius.hpp"
+#include "gpm/geometry/volumes.hpp"
+#include "gpm/solvers/heat.hpp"
+#include "gpm/solvers/laplacian_matrix.hpp"
+#include "gpm/solvers/stability.hpp"
+#include "gpm/weights/weights.hpp"
 
 using namespace gpm;
 

@@ -16,11 +16,11 @@
 #include <cmath>
 #include <map>
 
-#include "gpm/domain.hpp"
-#include "gpm/norms.hpp"
-#include "gpm/study.hpp"
-#include "gpm/thesis_truncation.hpp"
-#include "gpm/voronoi.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/voronoi.hpp"
+#include "gpm/operators/fused_errors.hpp"
+#include "gpm/operators/norms.hpp"
+#include "gpm/studies/thesis_truncation.hpp"
 
 using namespace gpm;
 

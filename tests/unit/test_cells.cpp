@@ -6,9 +6,9 @@
 #include <random>
 #include <vector>
 
-#include "gpm/cells.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
+#include "gpm/geometry/cells.hpp"
+#include "gpm/geometry/domain.hpp"
 
 using namespace gpm;
 

@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "gpm/connectivity.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
+#include "gpm/geometry/connectivity.hpp"
+#include "gpm/geometry/domain.hpp"
 
 using namespace gpm;
 

@@ -3,11 +3,11 @@
 #include <cmath>
 #include <filesystem>
 
-#include "gpm/args.hpp"
 #include "gpm/error.hpp"
-#include "gpm/norms.hpp"
-#include "gpm/profile.hpp"
-#include "gpm/tsv.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/operators/norms.hpp"
+#include "gpm/studies/profile.hpp"
 
 using namespace gpm;
 

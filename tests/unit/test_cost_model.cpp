@@ -7,14 +7,14 @@
 #include <cmath>
 #include <cstdio>
 
-#include "gpm/cost_model.hpp"
-#include "gpm/domain.hpp"
-#include "gpm/influence_radius.hpp"
-#include "gpm/kernel.hpp"
-#include "gpm/study.hpp"
-#include "gpm/thesis_truncation.hpp"
-#include "gpm/truncation.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/influence_radius.hpp"
+#include "gpm/geometry/volumes.hpp"
+#include "gpm/kernel/kernel.hpp"
+#include "gpm/operators/truncation.hpp"
+#include "gpm/studies/cost_model.hpp"
+#include "gpm/studies/thesis_truncation.hpp"
+#include "gpm/weights/weights.hpp"
 
 using namespace gpm;
 

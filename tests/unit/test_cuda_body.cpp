@@ -19,13 +19,13 @@
 #include <vector>
 
 #include "cuda/kernel_cuda_body.hpp"
-#include "gpm/cells.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/kernel.hpp"
-#include "gpm/laplacian_matrix.hpp"
-#include "gpm/testfunctions.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/cells.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/kernel/kernel.hpp"
+#include "gpm/operators/testfunctions.hpp"
+#include "gpm/solvers/laplacian_matrix.hpp"
+#include "gpm/weights/weights.hpp"
 
 using namespace gpm;
 

@@ -4,8 +4,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
+#include "gpm/geometry/domain.hpp"
 
 using namespace gpm;
 

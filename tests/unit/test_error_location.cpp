@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "gpm/domain.hpp"
-#include "gpm/poisson.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/solvers/poisson.hpp"
 
 using namespace gpm;
 

@@ -9,13 +9,14 @@
 #include <cmath>
 #include <numbers>
 
-#include "gpm/cells.hpp"
-#include "gpm/domain.hpp"
-#include "gpm/kernel.hpp"
-#include "gpm/operators.hpp"
-#include "gpm/study.hpp"
-#include "gpm/testfunctions.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/cells.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/volumes.hpp"
+#include "gpm/kernel/kernel.hpp"
+#include "gpm/operators/fused_errors.hpp"
+#include "gpm/operators/operators.hpp"
+#include "gpm/operators/testfunctions.hpp"
+#include "gpm/weights/weights.hpp"
 
 using namespace gpm;
 

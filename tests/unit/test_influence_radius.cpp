@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "gpm/error.hpp"
-#include "gpm/influence_radius.hpp"
+#include "gpm/geometry/influence_radius.hpp"
 
 using namespace gpm;
 
@@ -30,8 +30,8 @@ TEST_CASE("influence radius rules", "[unit][radius]") {
   REQUIRE_THROWS_AS(pde_h("h10", -1), InputError);
 }
 
-#include "gpm/smoothing.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/theory/smoothing.hpp"
+#include "gpm/weights/weights.hpp"
 #include <numbers>
 
 TEST_CASE("Laplacian smoothing error: small-kh limit and the quartic at the thesis' radii",

@@ -10,11 +10,11 @@
 #include <fstream>
 #include <string>
 
-#include "gpm/args.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/truncation.hpp"
-#include "gpm/tsv.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/operators/truncation.hpp"
 #include "../temp_dir.hpp"
 
 using namespace gpm;

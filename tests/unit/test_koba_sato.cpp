@@ -7,11 +7,11 @@
 #include <cmath>
 #include <random>
 
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/koba_sato.hpp"
-#include "gpm/koba_sato_cor71.hpp"
-#include "gpm/voronoi.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/voronoi.hpp"
+#include "gpm/theory/koba_sato.hpp"
+#include "gpm/theory/koba_sato_cor71.hpp"
 
 using namespace gpm;
 

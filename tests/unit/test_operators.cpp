@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "gpm/cells.hpp"
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/kernel.hpp"
-#include "gpm/operators.hpp"
-#include "gpm/testfunctions.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/geometry/cells.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/kernel/kernel.hpp"
+#include "gpm/operators/operators.hpp"
+#include "gpm/operators/testfunctions.hpp"
+#include "gpm/weights/weights.hpp"
 
 using namespace gpm;
 

@@ -1,4 +1,4 @@
-// The result store's rules (src/gpm/store.hpp), on small files written here: a unit is
+// The result store's rules (src/gpm/studies/store.hpp), on small files written here: a unit is
 // reused only when complete and computed by the current code; malformed and partial units
 // are recomputed; a second writer is refused; --verify catches a changed number; --recheck
 // carries rows of older code over only when the recomputed units agree.
@@ -10,9 +10,9 @@
 #include <unistd.h>
 
 #include "gpm/error.hpp"
-#include "gpm/provenance.hpp"
-#include "gpm/store.hpp"
-#include "gpm/tsv.hpp"
+#include "gpm/io/provenance.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/studies/store.hpp"
 #include "../temp_dir.hpp"
 
 using namespace gpm;

@@ -8,9 +8,9 @@
 #include <cmath>
 #include <random>
 
-#include "gpm/domain.hpp"
 #include "gpm/error.hpp"
-#include "gpm/voronoi.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/voronoi.hpp"
 
 using namespace gpm;
 using Catch::Matchers::Contains;

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "gpm/error.hpp"
-#include "gpm/weights.hpp"
+#include "gpm/weights/weights.hpp"
 
 using gpm::compute_properties;
 using gpm::weight;

@@ -1,0 +1,31 @@
+#include "gpm/geometry/volumes.hpp"
+
+#include "gpm/error.hpp"
+
+namespace gpm {
+
+std::vector<double> uniform_volumes(const Particles& p, const Domain& dom) {
+  return std::vector<double>(p.size(), dom.area_H() / static_cast<double>(p.size()));
+}
+
+std::vector<double> cell_volumes(const Particles& p, double dx) {
+  return std::vector<double>(p.size(), dx * dx);
+}
+
+double volume_mismatch(const Particles& p, double dx, const Domain& dom) {
+  return dom.area_H() / (static_cast<double>(p.size()) * dx * dx) - 1;
+}
+
+std::string pde_volumes_description(const std::string& choice) {
+  if (choice == "lattice") return "uniform |Omega_H|/N";  // the text older files carry
+  if (choice == "cell") return "cell dx^2 (diagnostic; sum over Omega_H is N dx^2, not |Omega_H|)";
+  throw InputError("--volumes: '" + choice + "' is not lattice (|Omega_H|/N, thesis (A.10)) or cell (dx^2)");
+}
+
+std::vector<double> pde_volumes(const std::string& choice, const Particles& p, double dx,
+                                const Domain& dom) {
+  pde_volumes_description(choice);  // InputError for an unknown choice
+  return choice == "cell" ? cell_volumes(p, dx) : uniform_volumes(p, dom);
+}
+
+}  // namespace gpm

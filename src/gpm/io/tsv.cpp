@@ -1,0 +1,298 @@
+#include "gpm/io/tsv.hpp"
+
+#include <omp.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "gpm/error.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/command_line.hpp"
+#include "gpm/io/provenance.hpp"
+
+namespace gpm {
+
+void TsvTable::set(const std::string& key, const std::string& value) {
+  for (auto& kv : meta)
+    if (kv.first == key) {
+      kv.second = value;
+      return;
+    }
+  meta.emplace_back(key, value);
+}
+
+void TsvTable::set(const std::string& key, double value) { set(key, fmt(value)); }
+
+std::optional<std::string> TsvTable::get(const std::string& key) const {
+  for (auto& kv : meta)
+    if (kv.first == key) return kv.second;
+  return std::nullopt;
+}
+
+void TsvTable::add_row(std::vector<std::string> row) { rows.push_back(std::move(row)); }
+
+int TsvTable::column(const std::string& name) const {
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    if (columns[c] == name) return static_cast<int>(c);
+  return -1;
+}
+
+void TsvTable::write(std::ostream& out) const {
+  for (auto& [k, v] : meta) out << "# " << k << " = " << v << '\n';
+  for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "\t" : "") << columns[c];
+  out << '\n';
+  for (auto& r : rows) {
+    for (std::size_t c = 0; c < r.size(); ++c) out << (c ? "\t" : "") << r[c];
+    out << '\n';
+  }
+}
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// "FILE line L (data row R), column 'NAME'" for messages about one cell.
+std::string cell_where(const TsvTable& t, std::size_t row, int col) {
+  std::string s = t.source.empty() ? std::string("table") : t.source;
+  if (row < t.row_lines.size()) s += " line " + std::to_string(t.row_lines[row]);
+  s += " (data row " + std::to_string(row + 1) + ")";
+  s += ", column ";
+  s += col >= 0 && static_cast<std::size_t>(col) < t.columns.size()
+           ? "'" + t.columns[col] + "'"
+           : std::to_string(col + 1);
+  return s;
+}
+
+// Leftovers of save() in processes that died between writing and renaming: `NAME.tmp.PID`
+// beside the output, PID no longer running.  A live writer's temp file is left alone (a
+// reused pid only delays a removal).
+void remove_stale_temps(const fs::path& p) {
+  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  const std::string prefix = p.filename().string() + ".tmp.";
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string n = it->path().filename().string();
+    if (n.size() <= prefix.size() || n.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string pid_text = n.substr(prefix.size());
+    if (pid_text.size() > 9 || pid_text.find_first_not_of("0123456789") != std::string::npos)
+      continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(pid_text));
+    const bool dead = ::kill(pid, 0) != 0 && errno == ESRCH;
+    if (!dead) continue;
+    std::error_code e2;
+    if (fs::is_regular_file(fs::symlink_status(it->path(), e2))) fs::remove(it->path(), e2);
+  }
+}
+
+}  // namespace
+
+const std::string& TsvTable::text(std::size_t row, int col) const {
+  if (row >= rows.size() || col < 0)
+    throw std::logic_error("TsvTable: no cell (" + std::to_string(row) + ", " +
+                           std::to_string(col) + ")");
+  const auto& r = rows[row];
+  if (static_cast<std::size_t>(col) >= r.size())
+    throw InputError(cell_where(*this, row, col) + ": the row has only " +
+                     std::to_string(r.size()) + " cells");
+  return r[col];
+}
+
+double TsvTable::number(std::size_t row, int col) const {
+  const std::string& c = text(row, col);
+  double v = 0;
+  if (read_decimal(c, v)) return v;
+  if (c == "nan") return std::numeric_limits<double>::quiet_NaN();
+  if (c == "inf" || c == "-inf") return c[0] == '-' ? -HUGE_VAL : HUGE_VAL;
+  throw InputError(cell_where(*this, row, col) + ": '" + c + "' is not a number");
+}
+
+long long TsvTable::integer(std::size_t row, int col) const {
+  const std::string& c = text(row, col);
+  try {
+    return parse_integer(c, "integer");
+  } catch (const InputError&) {  // parse_integer's message names no file: say it here
+    throw InputError(cell_where(*this, row, col) + ": '" + c + "' is not an integer");
+  }
+}
+
+void check_output_path(const std::string& option, const std::string& path) {
+  if (path.empty()) return;
+  const std::string what = option + " " + path;
+  std::error_code ec;
+  const auto st = fs::symlink_status(path, ec);
+  if (fs::exists(st)) {
+    // rename() would replace a link by a file (its target untouched) and fails on a
+    // directory; a device would first be read as a cache by some programs.
+    if (fs::is_symlink(st))
+      throw InputError(what + " is a symbolic link: outputs replace only regular files "
+                              "(give the file it points to, or a new path)");
+    if (fs::is_directory(st)) throw InputError(what + " is a directory, not a file");
+    if (!fs::is_regular_file(st))
+      throw InputError(what + " is not a regular file (a device, pipe or socket): outputs "
+                              "replace only regular files");
+  }
+  // The nearest existing ancestor must be a directory this process can create files in.
+  fs::path dir = fs::path(path).parent_path();
+  while (!dir.empty() && !fs::exists(fs::status(dir, ec))) dir = dir.parent_path();
+  if (dir.empty()) dir = ".";
+  if (!fs::is_directory(fs::status(dir, ec)))
+    throw InputError(what + ": " + dir.string() + " is not a directory");
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    throw InputError(what + ": cannot create files in " + dir.string() + " (" +
+                     std::strerror(errno) + ")");
+}
+
+void TsvTable::save(const std::string& path) const {
+  check_output_path("output", path);
+  const fs::path p(path);
+  if (p.has_parent_path()) fs::create_directories(p.parent_path());
+  remove_stale_temps(p);
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  try {
+    // Our own name, but whatever stands there (a link planted to redirect the write) goes.
+    std::error_code gone;
+    fs::remove(tmp, gone);
+    std::ofstream out(tmp, std::ios::trunc);
+    if (!out) throw std::runtime_error("cannot create " + tmp + ": " + std::strerror(errno));
+    write(out);
+    out.close();  // flushes: a full disk shows here
+    if (!out) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+    std::error_code ec;
+    fs::rename(tmp, p, ec);
+    if (ec) throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + ec.message());
+  } catch (...) {
+    std::error_code ec;
+    fs::remove(tmp, ec);
+    throw;
+  }
+}
+
+TsvTable TsvTable::load(const std::string& path) {
+  // A device (/dev/zero) would be read without end; a pipe has an end and may stay.
+  std::error_code ec;
+  const auto st = fs::status(path, ec);
+  if (fs::exists(st) && !fs::is_regular_file(st) && !fs::is_fifo(st))
+    throw InputError("data file " + path + " is not a regular file");
+  std::ifstream in(path);
+  if (!in) throw InputError("cannot read data file " + path);
+  TsvTable t;
+  t.source = path;
+  std::size_t line_no = 0;
+  std::string line;
+  bool have_header = false;
+  auto split = [](const std::string& s) {
+    std::vector<std::string> out;
+    std::string cell;
+    std::istringstream ss(s);
+    while (std::getline(ss, cell, '\t')) out.push_back(cell);
+    return out;
+  };
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (line.empty()) continue;
+    if (line.rfind("# ", 0) == 0) {
+      const auto eq = line.find(" = ");
+      if (eq != std::string::npos) t.meta.emplace_back(line.substr(2, eq - 2), line.substr(eq + 3));
+      continue;
+    }
+    if (!have_header) {
+      t.columns = split(line);
+      have_header = true;
+    } else {
+      t.rows.push_back(split(line));
+      t.row_lines.push_back(line_no);
+    }
+  }
+  if (!have_header) throw InputError("data file " + path + " has no column header");
+  return t;
+}
+
+std::vector<std::vector<std::string>> TsvTable::load_matching(
+    const std::string& path, const std::vector<std::pair<std::string, std::string>>& params) {
+  if (!std::filesystem::exists(path)) return {};
+  TsvTable t;
+  try {
+    t = load(path);
+  } catch (const InputError&) {
+    return {};
+  }
+  for (auto& [k, v] : params) {
+    auto have = t.get(k);
+    if (!have || *have != v) return {};
+  }
+  return t.rows;
+}
+
+std::string fmt(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[64];
+  auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+std::string fmt(long long v) { return std::to_string(v); }
+
+namespace {
+std::string g_command_line;
+}
+
+void set_command_line(int argc, char** argv) {
+  std::string out;
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    const bool plain = !a.empty() && a.find_first_not_of(
+        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_./=,:+^%@") ==
+        std::string::npos;
+    if (i) out += ' ';
+    if (plain) {
+      out += a;
+    } else {
+      out += '\'';
+      for (char c : a) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+      out += '\'';
+    }
+  }
+  g_command_line = out;
+}
+
+const std::string& command_line() { return g_command_line; }
+
+void add_provenance(TsvTable& t) {
+  if (!g_command_line.empty()) t.set("command", g_command_line);
+  t.set("git_revision", git_revision());
+  char host[256] = {0};
+  ::gethostname(host, sizeof host - 1);
+  t.set("host", host);
+  std::time_t now = std::time(nullptr);
+  char date[64];
+  std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  t.set("written_utc", date);
+  t.set("omp_threads", fmt(static_cast<long long>(omp_get_max_threads())));
+}
+
+void require_distinct_paths(const std::vector<std::pair<std::string, std::string>>& paths) {
+  std::map<std::string, std::string> seen;
+  for (auto& [opt, p] : paths) {
+    if (p.empty()) continue;
+    const std::string norm = fs::weakly_canonical(fs::absolute(p)).string();
+    auto [it, fresh] = seen.emplace(norm, opt);
+    if (!fresh)
+      throw InputError(opt + " " + p + " is the same file as " + it->second +
+                       ": each output needs its own path");
+  }
+}
+
+}  // namespace gpm

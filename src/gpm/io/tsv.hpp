@@ -1,0 +1,75 @@
+// Self-describing TSV data files.
+//
+// Every data file starts with `# key = value` lines naming every parameter, the seed,
+// the git revision, the profile and the wall time, then one header row of column names,
+// then data rows.  Files are written to `<path>.tmp.<pid>` and renamed, so a reader never
+// sees half a file; the temp file is removed on every error, and the leftovers of a killed
+// run are removed by the next save of the same file.  A study that runs level by level rewrites the file after each
+// level (`TsvTable::save`), and on a rerun with the same parameters reads back the
+// levels it already has (`TsvTable::load_matching`) instead of recomputing them.
+#pragma once
+#include <iosfwd>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gpm {
+
+struct TsvTable {
+  std::vector<std::pair<std::string, std::string>> meta;  // ordered `# key = value`
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows;
+  // Set by load(): the file, and the line of each row in it (for messages naming a cell).
+  std::string source;
+  std::vector<std::size_t> row_lines;
+
+  void set(const std::string& key, const std::string& value);
+  void set(const std::string& key, double value);
+  std::optional<std::string> get(const std::string& key) const;
+  void add_row(std::vector<std::string> row);
+  int column(const std::string& name) const;  // -1 if absent
+  // The cell (row, col); a row too short for it is an InputError naming file, line and column.
+  const std::string& text(std::size_t row, int col) const;
+  // The cell (row, col) as a number: a decimal, or nan / inf / -inf as fmt() writes them.
+  // Anything else is an InputError naming the file, line, data row and
+  // column, e.g. "data.tsv line 12 (data row 3), column 'rel_error': 'abc' is not a number".
+  double number(std::size_t row, int col) const;
+  // The same for a decimal integer.
+  long long integer(std::size_t row, int col) const;
+
+  // The `# key = value` lines, the header row and the rows, as they go to a file.
+  void write(std::ostream& out) const;
+  // Atomic write (tmp + rename); creates parent directories.  Refuses a path that
+  // check_output_path refuses; removes stale `<path>.tmp.<pid>` files of dead processes.
+  void save(const std::string& path) const;
+  // Throws InputError if the file is missing, not a regular file or malformed.
+  static TsvTable load(const std::string& path);
+  // The rows of an existing file whose `# key = value` lines agree with `params` on every
+  // key of `params`: the cache of a previous run with the same parameters.  Empty if the
+  // file is absent or any parameter differs.
+  static std::vector<std::vector<std::string>> load_matching(
+      const std::string& path, const std::vector<std::pair<std::string, std::string>>& params);
+};
+
+// Throws InputError (naming `option` and `path`) unless `path` names a regular file or
+// nothing yet, in a directory that exists or can be created and that this process may
+// write: a directory, a device (/dev/null, /dev/full), a pipe or a symbolic link is never
+// replaced.  An empty path passes (the caller decides whether the output is required).
+void check_output_path(const std::string& option, const std::string& path);
+
+// Throws InputError unless every named path is distinct from the others (after resolving
+// "." and ".."), e.g. {{"--out", out}, {"--cost", cost}}; empty paths are ignored.
+void require_distinct_paths(const std::vector<std::pair<std::string, std::string>>& paths);
+
+// Number formatting used in every data file: shortest round-trip representation.
+std::string fmt(double v);
+std::string fmt(long long v);
+inline std::string fmt(int v) { return fmt(static_cast<long long>(v)); }
+inline std::string fmt(unsigned long v) { return fmt(static_cast<long long>(v)); }
+inline std::string fmt(unsigned long long v) { return fmt(static_cast<long long>(v)); }
+
+// Provenance every data file carries: git revision, build, host, date, threads.
+void add_provenance(TsvTable& t);
+
+}  // namespace gpm

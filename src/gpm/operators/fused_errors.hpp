@@ -1,0 +1,49 @@
+// The relative errors of many (weight, operator, test function) combinations from ONE
+// fused kernel pass per level: what every convergence study computes per level.
+//
+// A study program reads like the documents' "numerical results" paragraph:
+//
+//   LevelCache cache(out, params, columns, /*key columns*/ 2);   // store.hpp
+//   for (int k : levels) for (double m : orders) {
+//     if (cache.has({fmt(k), fmt(m)})) continue;            // done in an earlier run
+//     ... build particles, volumes, h ...
+//     auto e = fused_errors(p, V, h, requests, functions);  // one pass, all weights
+//     cache.add(rows...); cache.save();                     // after every level
+//   }
+#pragma once
+#include <string>
+#include <vector>
+
+#include "gpm/geometry/domain.hpp"
+#include "gpm/operators/truncation.hpp"
+
+namespace gpm {
+
+// One requested operator of one weight.
+struct ErrorRequest {
+  std::string weight;  // registry name
+  Operator op;
+};
+
+struct ErrorResult {
+  std::string weight, function;
+  Operator op;
+  double rel_error = 0;
+  int32_t worst = -1;  // the particle where |error| is largest (the first such, in target order)
+};
+
+struct FusedErrors {
+  std::vector<ErrorResult> errors;  // requests × functions, in request order
+  double pairs = 0;                 // pairs with r < h summed over the targets (self included)
+  double kernel_seconds = 0;        // wall time of the fused pass alone
+};
+
+// Relative ℓ∞ errors over the particles in Ω (see truncation.hpp for the definitions) of
+// every request for every test function, from one fused kernel pass.  Weights requested
+// for several operators are evaluated once.  Throws NumericalError naming the particle on
+// a non-finite result.
+FusedErrors fused_errors(const Particles& p, const std::vector<double>& V, double h,
+                         const std::vector<ErrorRequest>& requests,
+                         const std::vector<std::string>& functions, bool count_pairs = true);
+
+}  // namespace gpm

@@ -1,0 +1,71 @@
+// The discrete heat problem of the thesis, (3.2), with the θ-method in time:
+//
+//   (U_i^{k+1} − U_i^k)/Δt − κ Δ_h U_i^{k+θ} = f_i^{k+θ}   for x_i ∈ Ω, k = 0 … K−1,
+//   U_i^k = g̃_i^k outside Ω,   U_i^0 = ã_i,
+//
+// for the thesis' example (§4.3): f = 0, ũ(x, y, t) = exp(−2κπ²t) sin(πx) sin(πy) on all of
+// Ω_H, so g̃ = ũ outside Ω and ã = ũ(·, 0).  Because g̃ is a fixed profile s(x) times
+// e(t) = exp(−2κπ²t), the boundary contribution M_ΩB g̃^k = e(t^k)·c with c = (M ŝ)_Ω
+// computed once.  One step is then
+//   (I − θκΔt M_ΩΩ) U^{k+1} = U^k + (1−θ)κΔt (M_ΩΩ U^k + e^k c) + θκΔt e^{k+1} c,
+// explicit for θ = 0, otherwise conjugate gradients on the symmetric form
+// (D − θκΔt D M_ΩΩ), warm-started from U^k.  The Laplacian (assembled or matrix-free) is
+// built once and reused by every step.
+//
+// Time steps: the thesis defines Δt = T/K (§3.1) but prescribes Δt = 0.0025h², 0.5h², 0.5h
+// (§4.3), which rarely divide T.  Two readings:
+//   fit   (default) K = ⌈T/Δt₀⌉ (with a 1e-12 relative slack) and Δt = T/K ≤ Δt₀;
+//   exact Δt = Δt₀ as prescribed, K = ⌈T/Δt₀⌉ steps, so the last t^K = KΔt₀ ≥ T.
+// They differ most for Δt₀ = 0.5h at T = 0.1, where K is 2 or 3: under `fit` Δt jumps by 1.5
+// from 2^-8 to 2^-9 while h falls by 1.19, under `exact` Δt falls with h.
+//
+// Error (4.2): ‖ũ − U‖_{ℓ∞([0,T]; ℓ²(Ω_H))} / ‖ũ‖_{ℓ∞([0,T]; ℓ²(Ω_H))} with the discrete norm
+// of §3.3, ‖v‖_{ℓ²(S)} = (Σ_{x_i ∈ S} V_i v_i²)^{1/2}, over ALL particles (S = Ω_H), the
+// maxima over t^k, k = 0 … K.  Outside Ω the error is zero (boundary values are exact).
+//
+// Blow-up: if ‖U^k‖_{ℓ²(Ω_H)} exceeds blowup_factor·‖U^0‖ or any value is not finite, the run
+// stops and reports the step, the growth ‖U^k‖/‖U^0‖ and the last one-step amplification.
+#pragma once
+#include <string>
+
+#include "gpm/geometry/domain.hpp"
+#include "gpm/solvers/laplacian_matrix.hpp"
+
+namespace gpm {
+
+struct HeatSetting {
+  double kappa = 0.5, T = 0.1;
+  double theta = 1;          // θ ∈ [0, 1]
+  double dt_nominal = 0;     // Δt₀; K = ⌈T/Δt₀⌉ and Δt = T/K (fit_T) or Δt₀ (!fit_T)
+  bool fit_T = true;         // the reading of the time step (above)
+  double tol = 1e-10;        // CG relative residual per implicit step
+  int max_iter = 20000;
+  double blowup_factor = 1e6;
+};
+
+struct HeatResult {
+  long K = 0;                // steps of the full run
+  double dt = 0;             // T/K (fit_T) or Δt₀
+  long steps_done = 0;       // K unless blown up
+  bool blew_up = false;
+  long blowup_step = -1;     // k with ‖U^k‖ > factor·‖U^0‖ or non-finite
+  double growth = 0;         // ‖U^k‖/‖U^0‖ at that step (inf if non-finite)
+  double amplification = 0;  // ‖U^k‖/‖U^{k−1}‖ at that step
+  double growth_max = 0;     // max_k ‖U^k‖/‖U^0‖ over the steps done: > 1 means unstable
+                             // (the exact ℓ² norm decays by exp(−2κπ²t))
+  double rel_error = 0;      // (4.2); NaN if blown up
+  double rel_error_max = 0;  // the same with ℓ∞(Ω) in space (Theorem 3.1's norm), relative
+  double seconds = 0, seconds_per_step = 0;
+  double mean_cg_iterations = 0;
+  double max_rel_residual = 0;  // largest final CG residual over the implicit steps
+};
+
+// K = ⌈T/Δt₀⌉ with a relative slack of 1e-12 (so Δt₀ = T/10 gives K = 10, not 11).
+long heat_steps(double T, double dt_nominal);
+
+// The exact solution of the example.
+double heat_exact(double x, double y, double t, double kappa);
+
+HeatResult solve_heat(const Particles& p, const DiscreteLaplacian& L, const HeatSetting& s);
+
+}  // namespace gpm

@@ -1,0 +1,38 @@
+#include "gpm/studies/heat_tables.hpp"
+
+#include "gpm/error.hpp"
+
+namespace gpm {
+
+const std::vector<HeatTable>& heat_tables() {
+  // Quick levels: each table in a few minutes here; paper levels: the thesis' own.
+  static const std::vector<HeatTable> t = {
+      {"4.5", "0.0025 h^2", 0.0025, 2, {0, 0.5, 1}, {5, 6}, {5, 6, 7, 8}, "7,8", 7},
+      {"4.6", "0.5 h^2", 0.5, 2, {0, 0.5, 1}, {5, 6, 7}, {5, 6, 7, 8, 9}, "8,9", 8},
+      // 4.7's finest h15 level is cheap (about 10 min here) and already stored: no trim.
+      {"4.7", "0.5 h", 0.5, 1, {0.5, 1}, {5, 6, 7}, {5, 6, 7, 8, 9}, "8,9", 99},
+  };
+  return t;
+}
+
+const HeatTable& heat_table(const std::string& table) {
+  for (auto& t : heat_tables())
+    if (t.table == table) return t;
+  throw InputError("unknown --table '" + table + "'; valid: 4.5, 4.6, 4.7");
+}
+
+std::vector<int> heat_levels(const HeatTable& t, bool paper, const std::string& h_rule) {
+  if (!paper) return t.quick;
+  std::vector<int> lv;
+  for (int k : t.paper)
+    if (h_rule != "h15" || k <= t.paper_h15_max_level) lv.push_back(k);
+  return lv;
+}
+
+const std::vector<std::string>& heat_weights() {
+  static const std::vector<std::string> w = {"quartic_polynomial", "piecewise_cubic_polynomial",
+                                             "piecewise_quintic_polynomial"};
+  return w;
+}
+
+}  // namespace gpm

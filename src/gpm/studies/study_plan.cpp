@@ -1,0 +1,542 @@
+#include "gpm/studies/study_plan.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <functional>
+#include <limits>
+
+#include "gpm/error.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/volumes.hpp"
+#include "gpm/geometry/voronoi.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/operators/fused_errors.hpp"
+#include "gpm/operators/testfunctions.hpp"
+#include "gpm/operators/truncation.hpp"
+#include "gpm/solvers/heat.hpp"
+#include "gpm/solvers/laplacian_matrix.hpp"
+#include "gpm/solvers/poisson.hpp"
+#include "gpm/studies/heat_tables.hpp"
+#include "gpm/studies/thesis_truncation.hpp"
+#include "gpm/weights/weights.hpp"
+
+namespace gpm {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+constexpr double kMiB = 1024.0 * 1024.0;
+
+// --- The studies' parameters (mirrors of src/apps/<study>.cpp) ---------------------------
+
+// A fused-pass study: one weight mix, the functions it samples, its variants' h rules.
+struct FusedMix {
+  std::string name;
+  std::vector<ErrorRequest> requests;
+  std::vector<std::string> functions;
+  int columns() const {  // result columns of the pass: Π 1, ∇ 2, Δ 1, per field
+    int c = 0;
+    for (auto& r : requests) c += r.op == Operator::grad ? 2 : 1;
+    return c * static_cast<int>(functions.size());
+  }
+};
+
+// The thesis' truncation tables: levels, readings and h from thesis_table_specs() (the
+// programs' own definitions); here only the calibration mix each table's pass is timed with.
+std::string thesis_mix(const std::string& program) {  // "thesis_table4_1" -> "thesis4_1"
+  return "thesis" + program.substr(std::string("thesis_table").size());
+}
+
+const std::vector<FusedMix>& fused_mixes() {
+  static const std::vector<FusedMix> m = [] {
+    std::vector<FusedMix> v;
+    FusedMix im{"imoto9", {}, {"sin2pi"}};
+    for (const char* w : {"Pi1", "Pi2", "Pi3"}) im.requests.push_back({w, Operator::interp});
+    for (const char* w : {"Grad1", "Grad2", "Grad3"}) im.requests.push_back({w, Operator::grad});
+    for (const char* w : {"Lap1", "Lap2", "Lap3"}) im.requests.push_back({w, Operator::lap});
+    v.push_back(im);
+    // The thesis tables' mixes are their programs' own requests (thesis_table_specs()).
+    std::vector<std::string> cases;
+    for (auto& c : thesis_cases()) cases.push_back(c.function);
+    for (auto& t : thesis_table_specs()) v.push_back({thesis_mix(t.program), t.requests, cases});
+    return v;
+  }();
+  return m;
+}
+
+const FusedMix& mix(const std::string& name) {
+  for (auto& m : fused_mixes())
+    if (m.name == name) return m;
+  throw InputError("unknown weight mix '" + name + "'");
+}
+
+const std::vector<int> kImotoQuick = {5, 6, 7, 8, 9, 10}, kImotoPaper = {5, 6, 7, 8, 9, 10, 11, 12};
+const std::vector<double> kImotoOrders = {1, 3, 5};
+
+// The discrete Poisson and heat problems (thesis_table4_4.cpp, thesis_heat.cpp).
+const std::vector<std::string> kPdeWeights = {"quartic_polynomial", "piecewise_cubic_polynomial",
+                                              "piecewise_quintic_polynomial"};
+const std::vector<int> kPoissonQuick = {5, 6, 7}, kPoissonPaper = {5, 6, 7, 8, 9};
+constexpr double kMaxAssembledBytes = 8e9;  // the programs' default --max-gb 8
+
+// core_voronoi.cpp: levels per profile, seeds 1, 2, 3, the plain grid once per level.
+const std::vector<int> kVoronoiQuick = {5, 6, 7, 8, 9}, kVoronoiPaper = {5, 6, 7, 8, 9, 10, 11, 12};
+
+double dx_of(int k) { return std::ldexp(1.0, -k); }
+
+// --- Calibration helpers ------------------------------------------------------------------
+
+// Wall time of fused_errors as the studies call it (pairs counted), best of three: the
+// machine is shared, and the least disturbed repeat is the closest to what it can do.
+std::pair<double, double> time_fused(const Particles& p, const std::vector<double>& V, double h,
+                                     const FusedMix& m) {
+  std::vector<double> t;
+  double pairs = 0;
+  for (int r = 0; r < 3; ++r) {
+    const auto t0 = Clock::now();
+    pairs = fused_errors(p, V, h, m.requests, m.functions, true).pairs;
+    t.push_back(since(t0));
+  }
+  return {pairs, *std::min_element(t.begin(), t.end())};
+}
+
+// Best of `n` timed calls.
+double best_of(int n, const std::function<void()>& f) {
+  double best = 1e300;
+  for (int r = 0; r < n; ++r) {
+    const auto t0 = Clock::now();
+    f();
+    best = std::min(best, since(t0));
+  }
+  return best;
+}
+
+double load_average() {
+  double l = -1;
+  if (FILE* f = std::fopen("/proc/loadavg", "r")) {
+    if (std::fscanf(f, "%lf", &l) != 1) l = -1;
+    std::fclose(f);
+  }
+  return l;
+}
+
+}  // namespace
+
+std::vector<std::string> planned_studies() {
+  std::vector<std::string> s = {"imoto_fig5_table1"};
+  for (auto& t : thesis_table_specs()) s.push_back(t.program);
+  s.push_back("thesis_table4_4");
+  for (auto& hp : heat_tables())
+    for (const char* suffix : {"", "_h15"}) {
+      std::string name = "thesis_table" + hp.table + suffix;
+      std::replace(name.begin(), name.end(), '.', '_');
+      s.push_back(name);
+    }
+  s.push_back("core_voronoi");
+  return s;
+}
+
+Calibration calibrate() {
+  Calibration c;
+  const auto t_start = Clock::now();
+  const std::clock_t cpu_start = std::clock();
+  c.load_before = load_average();
+  c.base_mib = peak_rss_mib();
+  const Domain dom;
+  auto log = [](const char* what, double v) { std::fprintf(stderr, "[plan] calibration %s: %.4g\n", what, v); };
+
+  // Fused passes: two h at Δx = 2^-8 per weight mix, h = 3Δx (per-target work dominates)
+  // and 40Δx (~5,000 neighbours: the pair rate rises with the neighbour count, and the
+  // expensive units have thousands to tens of thousands).  At 2^-7 with 30Δx the large pass
+  // took only ~0.1 s, so a few ms of noise in the small pass moved the fitted per-target
+  // cost enough to overstate the nine-weight pair rate six-fold; 2^-8 makes both passes
+  // long enough (the large one ~0.5 s) that the fit is stable.
+  {
+    const double dx = dx_of(8);
+    const Particles p = jittered_grid(dx, 1, 0.25, dom);
+    const auto V = uniform_volumes(p, dom);
+    const double targets = static_cast<double>(p.count_in_omega());
+    for (auto& m : fused_mixes()) {
+      const auto [pa, ta] = time_fused(p, V, 3 * dx, m);
+      const auto [pb, tb] = time_fused(p, V, 40 * dx, m);
+      c.fused[m.name] = PassCost::fit(targets, pa, ta, pb, tb);
+      std::fprintf(stderr, "[plan] calibration fused %s: %.3g s/target, %.3g pairs/s\n",
+                   m.name.c_str(), c.fused[m.name].per_target_s, 1 / c.fused[m.name].per_pair_s);
+    }
+  }
+  // Voronoi volumes at Δx = 2^-8.
+  {
+    const Particles p = jittered_grid(dx_of(8), 1, 0.25, dom);
+    const auto t0 = Clock::now();
+    (void)voronoi_cells(p, dom, false);
+    c.voronoi_s_per_particle = since(t0) / static_cast<double>(p.size());
+    log("Voronoi s/particle", c.voronoi_s_per_particle);
+  }
+
+  // The Laplacian: a Poisson solve at Δx = 2^-6 (printed h), piecewise cubic polynomial.
+  const TestFunction& u = test_function("sin2pi");
+  auto poisson_data = [&](const Particles& p, std::vector<double>& f, std::vector<double>& g) {
+    f.resize(p.size()), g.resize(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) g[i] = u.v(p.x[i], p.y[i]), f[i] = -u.lap(p.x[i], p.y[i]);
+  };
+  {
+    const double dx = dx_of(6), h = pde_h("h10", dx);
+    const Particles p = jittered_grid(dx, 1);
+    const auto V = uniform_volumes(p, dom);
+    std::vector<double> f, g;
+    poisson_data(p, f, g);
+    // Set-up = the Poisson unit's time minus its CG products: assembly, connectivity
+    // check, right-hand side, error.
+    const auto t0 = Clock::now();
+    const DiscreteLaplacian L(p, V, weight("piecewise_cubic_polynomial"), h,
+                              LaplacianStorage::assembled);
+    const PoissonResult r = solve_poisson(p, L, f, g, 1e-10);
+    const double total = since(t0), nnz = static_cast<double>(L.nnz());
+    const Eigen::VectorXd x = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(L.n_unknowns()));
+    Eigen::VectorXd y;
+    c.spmv_s_per_nnz = best_of(5, [&] { L.apply(x, y); }) / nnz;
+    c.setup_s_per_nnz = std::max(0.0, total - (r.cg.iterations + 2) * c.spmv_s_per_nnz * nnz) / nnz;
+    log("Laplacian set-up s/nnz", c.setup_s_per_nnz);
+    log("assembled product s/nnz", c.spmv_s_per_nnz);
+  }
+  // The matrix-free product on a larger level (Δx = 2^-7, ~1.6e7 pairs): on 2^-6 one product
+  // is a few milliseconds, and on a loaded machine the threads' barrier makes that unstable.
+  {
+    const double dx = dx_of(7), h = pde_h("h10", dx);
+    const Particles p = jittered_grid(dx, 1);
+    const auto V = uniform_volumes(p, dom);
+    const DiscreteLaplacian M(p, V, weight("piecewise_cubic_polynomial"), h,
+                              LaplacianStorage::matrix_free);
+    const Eigen::VectorXd x = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(M.n_unknowns()));
+    Eigen::VectorXd y;
+    M.apply(x, y);  // warm-up
+    c.matrix_free_s_per_pair = best_of(3, [&] { M.apply(x, y); }) / predicted_pairs(dx, h, dom);
+    log("matrix-free product s/pair", c.matrix_free_s_per_pair);
+  }
+
+  // CG iterations at Δx = 2^-5: Poisson per (h rule, weight); heat per step per
+  // (table, h rule, weight, θ > 0) over the first (at most) 40 steps.
+  {
+    const double dx = dx_of(5);
+    const Particles p = jittered_grid(dx, 1);
+    const auto V = uniform_volumes(p, dom);
+    std::vector<double> f, g;
+    poisson_data(p, f, g);
+    for (const char* rule : {"h10", "h15"})
+      for (auto& w : kPdeWeights) {
+        const double h = pde_h(rule, dx);
+        const DiscreteLaplacian L(p, V, weight(w), h);
+        c.poisson_its[std::string(rule) + "/" + w] = solve_poisson(p, L, f, g, 1e-10).cg.iterations;
+        for (auto& hp : heat_tables())
+          for (double th : hp.thetas) {
+            if (th == 0) continue;
+            HeatSetting hs;
+            hs.kappa = kHeatKappa;
+            hs.theta = th;
+            hs.dt_nominal = hp.c * std::pow(h, hp.p);
+            hs.T = std::min(kHeatT, 40 * hs.dt_nominal);
+            c.heat_its[hp.table + "/" + rule + "/" + w + "/" + fmt(th)] =
+                solve_heat(p, L, hs).mean_cg_iterations;
+          }
+      }
+  }
+  c.seconds = since(t_start);
+  c.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  c.load_after = load_average();
+  log("seconds", c.seconds);
+  return c;
+}
+
+void Calibration::write(TsvTable& t) const {
+  t.set("calibration_source", source);
+  t.set("calibration_seconds", seconds);
+  t.set("calibration_cpu_seconds", cpu_seconds);
+  t.set("calibration_load_before", load_before);
+  t.set("calibration_load_after", load_after);
+  t.set("cal.base_mib", base_mib);
+  for (auto& [k, v] : fused) {
+    t.set("cal.fused." + k + ".per_target_s", v.per_target_s);
+    t.set("cal.fused." + k + ".per_pair_s", v.per_pair_s);
+  }
+  t.set("cal.voronoi_s_per_particle", voronoi_s_per_particle);
+  t.set("cal.setup_s_per_nnz", setup_s_per_nnz);
+  t.set("cal.spmv_s_per_nnz", spmv_s_per_nnz);
+  t.set("cal.matrix_free_s_per_pair", matrix_free_s_per_pair);
+  for (auto& [k, v] : poisson_its) t.set("cal.poisson_its." + k, v);
+  for (auto& [k, v] : heat_its) t.set("cal.heat_its." + k, v);
+}
+
+Calibration Calibration::read(const TsvTable& t) {
+  Calibration c;
+  auto num = [&](const std::string& key) {
+    auto v = t.get(key);
+    if (!v) throw InputError("calibration: header key '" + key + "' missing");
+    return parse_number(*v, key);
+  };
+  c.source = "read from an earlier calibration (" + t.get("calibration_source").value_or("?") + ")";
+  c.seconds = num("calibration_seconds");
+  c.cpu_seconds = num("calibration_cpu_seconds");
+  c.load_before = num("calibration_load_before");
+  c.load_after = num("calibration_load_after");
+  c.base_mib = num("cal.base_mib");
+  for (auto& m : fused_mixes())
+    c.fused[m.name] = {num("cal.fused." + m.name + ".per_target_s"),
+                       num("cal.fused." + m.name + ".per_pair_s")};
+  c.voronoi_s_per_particle = num("cal.voronoi_s_per_particle");
+  c.setup_s_per_nnz = num("cal.setup_s_per_nnz");
+  c.spmv_s_per_nnz = num("cal.spmv_s_per_nnz");
+  c.matrix_free_s_per_pair = num("cal.matrix_free_s_per_pair");
+  for (auto& [k, v] : t.meta) {
+    if (k.rfind("cal.poisson_its.", 0) == 0) c.poisson_its[k.substr(16)] = parse_number(v, k);
+    if (k.rfind("cal.heat_its.", 0) == 0) c.heat_its[k.substr(13)] = parse_number(v, k);
+  }
+  if (c.poisson_its.empty() || c.heat_its.empty())
+    throw InputError("calibration: no CG iteration counts in the header");
+  return c;
+}
+
+std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
+  std::vector<PlanUnit> out;
+  const Domain dom;
+  const bool paper = profile == Profile::paper;
+  auto base = [&](const std::string& study, const std::string& variant, int k, double h) {
+    PlanUnit u;
+    u.study = study, u.variant = variant, u.level = k, u.dx = dx_of(k), u.h = h;
+    u.N = grid_particle_count(u.dx, dom);
+    u.targets = omega_target_estimate(u.dx);
+    u.pairs = h > 0 ? predicted_pairs(u.dx, h, dom) : 0;
+    return u;
+  };
+  // Memory of a fused pass: particles (x, y, flag) 17 B, volumes 8 B, the kernel's sorted
+  // copies (x, y, V, index) 28 B and cell heads ~4 B, per field the values and exact
+  // values/derivatives (original and sorted order) ~48 B, per result column 8 B per target.
+  auto fused_mib = [&](const PlanUnit& u, const FusedMix& m) {
+    const double nf = static_cast<double>(m.functions.size());
+    return c.base_mib + (u.N * (57 + 48 * nf) + u.targets * 8.0 * m.columns()) / kMiB;
+  };
+  auto add_fused = [&](const std::string& study, const std::string& variant, int k, double h,
+                       const std::string& mix_name) {
+    PlanUnit u = base(study, variant, k, h);
+    const FusedMix& m = mix(mix_name);
+    u.method = "fused";
+    u.time_s = c.fused.at(mix_name).seconds(u.targets, u.pairs);
+    u.mem_mib = fused_mib(u, m);
+    u.basis = "a*N_omega + b*pairs, mix " + mix_name;
+    out.push_back(u);
+  };
+  auto add_voronoi = [&](const std::string& study, const std::string& variant, int k) {
+    PlanUnit u = base(study, variant, k, 0);
+    u.method = "voronoi";
+    u.time_s = c.voronoi_s_per_particle * u.N;
+    u.mem_mib = c.base_mib + 190.0 * u.N / kMiB;
+    u.basis = "s/particle * N";
+    out.push_back(u);
+  };
+
+  // imoto §5: one pass per (level, m), nine weights.
+  for (int k : paper ? kImotoPaper : kImotoQuick)
+    for (double m : kImotoOrders) add_fused("imoto_fig5_table1", "m=" + fmt(m), k, imoto_h(m, dx_of(k)), "imoto9");
+
+  // Thesis Tables 4.1–4.3: per (reading, volumes, level); Voronoi once per level.
+  for (auto& t : thesis_table_specs()) {
+    std::vector<int> all;
+    for (HReading r : t.readings) {
+      const auto& lv = paper ? t.paper_levels : (r == HReading::printed ? t.quick_printed : t.quick_scaled);
+      all.insert(all.end(), lv.begin(), lv.end());
+      for (int k : lv)
+        for (const char* vol : {"voronoi", "uniform"})
+          if (!(paper && std::string(vol) == "uniform" && k > t.paper_uniform_max_level)) {
+            add_fused(t.program, h_reading_name(r) + "/" + vol, k,
+                      thesis_h(r, t.c, t.p, dx_of(k)), thesis_mix(t.program));
+            if (paper && r == HReading::printed && k > t.paper_printed_max_level)
+              out.back().trimmed = "printed reading stops at 2^-" + fmt(t.paper_printed_max_level);
+          }
+    }
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    for (int k : all) add_voronoi(t.program, "voronoi", k);
+  }
+
+  // The Laplacian products: assembled (12 B per non-zero) unless over the programs' memory
+  // budget, then matrix-free.  `pairs` is the non-zero count (self included = diagonal).
+  auto product_s = [&](const PlanUnit& u, bool assembled) {
+    return assembled ? u.pairs * c.spmv_s_per_nnz : u.pairs * c.matrix_free_s_per_pair;
+  };
+  auto is_assembled = [&](const PlanUnit& u) {
+    return 12.0 * estimated_laplacian_nnz(static_cast<std::size_t>(u.N),
+                                          static_cast<std::size_t>(u.targets), u.h, dom) <=
+           kMaxAssembledBytes;
+  };
+  // Memory: particles and volumes 25 B, ~8 vectors over the particles (data, solution,
+  // right-hand side) 64 B, CG's 6 vectors over Ω 48 B, the matrix 12 B per non-zero (or the
+  // kernel's sorted copies ~40 B per particle).
+  auto pde_mib = [&](const PlanUnit& u, bool assembled) {
+    return c.base_mib + (u.N * (25 + 64) + u.targets * 48 +
+                         (assembled ? 12 * u.pairs + 8 * u.targets : 40 * u.N)) / kMiB;
+  };
+
+  // Poisson (Table 4.4): set-up + (CG iterations + 2) products; iterations ∝ 1/h.
+  for (int k : paper ? kPoissonPaper : kPoissonQuick)
+    for (const char* rule : {"h10", "h15"})
+      for (auto& w : kPdeWeights) {
+        PlanUnit u = base("thesis_table4_4", std::string(rule) + "/" + w, k, pde_h(rule, dx_of(k)));
+        const bool as = is_assembled(u);
+        const double its = c.poisson_its.at(std::string(rule) + "/" + w) * pde_h(rule, dx_of(5)) / u.h;
+        u.products = its + 2;
+        u.method = as ? "assembled" : "matrix_free";
+        const double setup = as ? u.pairs * c.setup_s_per_nnz : u.pairs * c.matrix_free_s_per_pair * 2;
+        u.time_s = setup + u.products * product_s(u, as);
+        u.mem_mib = pde_mib(u, as);
+        u.basis = "setup + (CG its " + fmt(std::round(its)) + " + 2) products";
+        out.push_back(u);
+      }
+
+  // Heat (Tables 4.5–4.7, both h rules): K = ⌈T/Δt₀⌉ steps, one product per step (M·U^k,
+  // which also serves the CG's initial and true residuals) plus (θ > 0) the CG iterations;
+  // the Laplacian's set-up once per (level, weight), not in the per-row seconds.
+  for (auto& hp : heat_tables())
+    for (const char* rule : {"h10", "h15"}) {
+      std::string study = "thesis_table" + hp.table + (std::string(rule) == "h15" ? "_h15" : "");
+      std::replace(study.begin(), study.end(), '.', '_');
+      const double h5 = pde_h(rule, dx_of(5));
+      const double r5 = hp.c * std::pow(h5, hp.p) / (h5 * h5);
+      const std::vector<int> run = heat_levels(hp, paper, rule);
+      for (int k : paper ? hp.paper : hp.quick)
+        for (auto& w : heat_weights()) {
+          const std::string trimmed =
+              std::find(run.begin(), run.end(), k) == run.end()
+                  ? "h15 reading stops at 2^-" + fmt(hp.paper_h15_max_level) + " (Table 4.4 settles h10)"
+                  : "";
+          const double h = pde_h(rule, dx_of(k));
+          PlanUnit a = base(study, "setup/" + w, k, h);
+          const bool as = is_assembled(a);
+          a.method = as ? "assembled" : "matrix_free";
+          a.time_s = as ? a.pairs * c.setup_s_per_nnz : a.pairs * c.matrix_free_s_per_pair * 2;
+          a.mem_mib = pde_mib(a, as);
+          a.recorded = false;
+          a.basis = "Laplacian set-up (not in the rows' seconds)";
+          a.trimmed = trimmed;
+          out.push_back(a);
+          const double dt0 = hp.c * std::pow(h, hp.p);
+          const double K = std::ceil(kHeatT / dt0 - 1e-9);
+          for (double th : hp.thetas) {
+            PlanUnit u = base(study, w + "/theta=" + fmt(th), k, h);
+            double its = 0;
+            if (th > 0)
+              its = c.heat_its.at(hp.table + "/" + rule + "/" + w + "/" + fmt(th)) *
+                    std::sqrt((dt0 / (h * h)) / r5);
+            u.products = K * (1 + its);
+            u.method = a.method;
+            u.time_s = u.products * product_s(u, as);
+            u.mem_mib = a.mem_mib;
+            u.basis = "K=" + fmt(K) + " steps, " + fmt(std::round(its * 10) / 10) + " CG its/step";
+            u.trimmed = trimmed;
+            out.push_back(u);
+          }
+        }
+    }
+
+  // core_voronoi: the plain grid once per level, the jittered grid per seed.
+  for (int k : paper ? kVoronoiPaper : kVoronoiQuick) {
+    add_voronoi("core_voronoi", "grid", k);
+    for (int s = 1; s <= 3; ++s) add_voronoi("core_voronoi", "jittered/seed=" + fmt(s), k);
+  }
+  return out;
+}
+
+// --- What the data files record -----------------------------------------------------------
+
+namespace {
+int col(const TsvTable& t, const std::string& name, const std::string& study) {
+  const int c = t.column(name);
+  if (c < 0) throw InputError(study + ": data file has no column '" + name + "'");
+  return c;
+}
+double num_or_nan(const std::string& s) {
+  try {
+    return parse_number(s, "value");
+  } catch (const InputError&) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+}
+}  // namespace
+
+std::map<std::pair<std::string, int>, RecordedUnit> recorded_units(
+    const std::string& study, const TsvTable& d,
+    const std::map<std::pair<std::string, int>, double>& planned_pairs) {
+  std::map<std::pair<std::string, int>, RecordedUnit> out;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  auto level = [&](const std::vector<std::string>& r) {
+    return static_cast<int>(parse_number(r[col(d, "level", study)], "level"));
+  };
+  auto v = [&](const std::vector<std::string>& r, const char* name) {
+    return num_or_nan(r[col(d, name, study)]);
+  };
+  // A unit's time is repeated on each of its rows: keep the first.
+  auto put = [&](const std::string& var, int k, double s, double work) {
+    out.emplace(std::make_pair(var, k), RecordedUnit{s, work});
+  };
+  if (study == "imoto_fig5_table1") {
+    for (auto& r : d.rows) put("m=" + r[col(d, "m", study)], level(r), v(r, "time_s"), v(r, "pairs"));
+  } else if (std::any_of(thesis_table_specs().begin(), thesis_table_specs().end(),
+                         [&](const ThesisTableSpec& t) { return t.program == study; })) {
+    for (auto& r : d.rows) {
+      const int k = level(r);
+      put(r[col(d, "h_reading", study)] + "/" + r[col(d, "volumes", study)], k, v(r, "time_s"),
+          v(r, "pairs"));
+      const double vs = v(r, "voronoi_s");  // the level's Voronoi time, on each of its rows
+      if (vs > 0) {
+        auto& slot = out[{"voronoi", k}];
+        slot.seconds = std::max(slot.seconds, vs);
+        slot.pair_interactions = nan;
+      }
+    }
+  } else if (study == "thesis_table4_4") {
+    for (auto& r : d.rows)
+      put(r[col(d, "h_rule", study)] + "/" + r[col(d, "weight", study)], level(r), v(r, "seconds"),
+          v(r, "nnz") * (v(r, "cg_iterations") + 2));
+  } else if (study.rfind("thesis_table4_", 0) == 0) {  // heat tables
+    for (auto& r : d.rows) {
+      const std::string var = r[col(d, "weight", study)] + "/theta=" + r[col(d, "theta", study)];
+      const int k = level(r);
+      const double th = v(r, "theta");
+      const double per_step = (th < 1 ? 1 : 0) + (th > 0 ? v(r, "cg_mean_iterations") + 1 : 0);
+      auto it = planned_pairs.find({var, k});
+      put(var, k, v(r, "seconds"),
+          it == planned_pairs.end() ? nan : it->second * v(r, "steps_done") * per_step);
+    }
+  } else if (study == "core_voronoi") {
+    for (auto& r : d.rows) {
+      const std::string dist = r[col(d, "distribution", study)];
+      put(dist == "grid" ? std::string("grid") : dist + "/seed=" + r[col(d, "seed", study)],
+          level(r), v(r, "time_s"), nan);
+    }
+  } else {
+    throw InputError("recorded_units: study '" + study + "' is not modelled");
+  }
+  return out;
+}
+
+double recorded_peak_mib(const std::string& study, const TsvTable& d) {
+  double peak = std::numeric_limits<double>::quiet_NaN();
+  for (const char* c : {"peak_rss_mib", "peak_rss_mb"}) {
+    const int ci = d.column(c);
+    if (ci >= 0)
+      for (auto& r : d.rows) {
+        const double v = num_or_nan(r[ci]);
+        if (std::isfinite(v)) peak = std::isfinite(peak) ? std::max(peak, v) : v;
+      }
+  }
+  if (!std::isfinite(peak))
+    if (auto v = d.get("peak_rss_mib")) peak = num_or_nan(*v);
+  (void)study;
+  return peak;
+}
+
+}  // namespace gpm

@@ -1,0 +1,104 @@
+// The plan of a profile: every unit of work of every modelled study (a fused pass, a
+// Voronoi decomposition, a Poisson solve, a heat run), with its predicted pairs, time and
+// peak memory, before anything runs; and, after a run, the time each study recorded for
+// the same unit, so that prediction and measurement can be compared.
+//
+// Modelled studies (the data file's base name is the study's name):
+//   imoto_fig5_table1           one fused pass (nine weights, one field) per (level, m)
+//   thesis_table4_1, 4_2, 4_3   one fused pass per (h reading, volumes, level), plus the
+//                               Voronoi volumes once per level
+//   thesis_table4_4             per (h rule, weight, level): Laplacian set-up + CG solve
+//   thesis_table4_5/6/7[_h15]   per (weight, θ, level): K steps of operator products
+//   core_voronoi                per (level, distribution, seed): one Voronoi decomposition
+// Not modelled (their cost is small or not neighbour sums): imoto_regularity (covering
+// radius and LPs), koba_sato_*, the figure programs.
+//
+// The levels, h rules, weight mixes and time-step rules below mirror the study programs
+// (src/apps/<study>.cpp); h comes from the same library functions (imoto_h, thesis_h).  A
+// level or unit in a data file that the plan lacks is reported by the comparison
+// (plan_vs_actual), so a drift between the two shows up in the report.
+//
+// Times come from a calibration run on the spot (calibrate(): a few seconds), on small
+// levels of the studies' own code paths:
+//   * fused pass: t = a·N_Ω + b·pairs per weight mix, fitted from two passes at Δx = 2^-7
+//     (h = 3Δx and 30Δx), each the best of three;
+//   * Voronoi: seconds per particle at Δx = 2^-8;
+//   * Laplacian (piecewise cubic polynomial, printed h): seconds per non-zero of one
+//     assembled product (Δx = 2^-6, best of five) and per pair of one matrix-free product
+//     (Δx = 2^-7, best of three, over the predicted pairs); set-up seconds per non-zero
+//     = a Poisson unit's time at 2^-6 less its (iterations + 2) products;
+//   * CG iterations at Δx = 2^-5 per (h rule, weight) for Poisson, per (table, h rule,
+//     weight, θ) per heat step (mean over the first ≤ 40 steps), carried to finer levels by
+//     the condition number:
+//     Poisson ∝ 1/h (κ(Δ_h) ∝ h⁻²), heat ∝ √(Δt₀/h²) (κ(I − θκΔtΔ_h) ≈ θκΔt·λ_max ∝ Δt/h²).
+// The machine is shared: the calibration records its CPU time and the load average, so a
+// calibration made under load (wall ≫ CPU/threads) can be recognised.
+// Memory: a per-particle byte count of each phase's arrays (see plan_units), plus the
+// calibration run's own resident size as the base; Voronoi 190 B per particle (core_voronoi's
+// measured peak, voronoi.hpp).
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gpm/io/tsv.hpp"
+#include "gpm/studies/cost_model.hpp"
+#include "gpm/studies/profile.hpp"
+
+namespace gpm {
+
+struct Calibration {
+  double base_mib = 0;                    // resident size of a study program before work
+  std::map<std::string, PassCost> fused;  // per weight mix (imoto9, thesis4_1, …)
+  double voronoi_s_per_particle = 0;
+  double setup_s_per_nnz = 0;             // Laplacian assembly + solver set-up, per non-zero
+  double spmv_s_per_nnz = 0;              // one assembled product, per non-zero
+  double matrix_free_s_per_pair = 0;      // one matrix-free product, per pair
+  std::map<std::string, double> poisson_its;  // "h10/<weight>" → CG iterations at Δx = 2^-5
+  std::map<std::string, double> heat_its;     // "4.5/h10/<weight>/<θ>" → mean per step, 2^-5
+  double seconds = 0;                     // wall time of the calibration
+  double cpu_seconds = 0;                 // its process CPU time (all threads)
+  double load_before = -1, load_after = -1;  // 1-minute load average (/proc/loadavg)
+  std::string source = "calibrated on the spot";
+
+  // As `# key = value` header lines of a TSV table, and back (InputError if incomplete).
+  void write(TsvTable& t) const;
+  static Calibration read(const TsvTable& t);
+};
+
+// Runs the calibration (a few seconds on 2 cores); progress lines on stderr.
+Calibration calibrate();
+
+struct PlanUnit {
+  std::string study, variant;
+  int level = 0;
+  double dx = 0, h = 0, N = 0, targets = 0;
+  double pairs = 0;     // neighbour pairs of one pass / non-zeros of the Laplacian
+  double products = 0;  // operator applications (Poisson, heat), else 0
+  std::string method;   // fused, voronoi, assembled, matrix_free
+  double time_s = 0, mem_mib = 0;
+  bool recorded = true;  // the study's data file records this unit's time (else plan only)
+  std::string basis;     // how the time was predicted
+  std::string trimmed;   // why the profile skips this unit (a trim of the catalog); empty: it runs
+};
+
+std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c);
+
+// The names of the modelled studies, in plan order.
+std::vector<std::string> planned_studies();
+
+// What a study's data file records for one unit, keyed like PlanUnit (variant, level):
+// its seconds and its pair interactions (the plan's pairs × max(1, products)): counted
+// pairs of a fused pass; non-zeros × (CG iterations + 2) of a Poisson solve; for a heat run,
+// which does not record its non-zeros, the steps done × products per step from its mean CG
+// iterations, times the plan's non-zeros (`planned_pairs`); NaN for a Voronoi unit.
+struct RecordedUnit {
+  double seconds = 0, pair_interactions = 0;
+};
+std::map<std::pair<std::string, int>, RecordedUnit> recorded_units(
+    const std::string& study, const TsvTable& data,
+    const std::map<std::pair<std::string, int>, double>& planned_pairs);
+// Largest peak resident size the data file records (MiB); NaN where it records none.
+double recorded_peak_mib(const std::string& study, const TsvTable& data);
+
+}  // namespace gpm

@@ -1,0 +1,375 @@
+#include "gpm/studies/thesis_truncation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "gpm/error.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/volumes.hpp"
+#include "gpm/geometry/voronoi.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/io/progress.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/studies/profile.hpp"
+#include "gpm/studies/store.hpp"
+#include "gpm/weights/weights.hpp"
+
+namespace gpm {
+
+const std::vector<ThesisCase>& thesis_cases() {
+  static const std::vector<ThesisCase> c = {{"case1", "quartic"}, {"case2", "sin2pi"}};
+  return c;
+}
+
+// Levels: the quick profile's are chosen so each program runs in about a minute here (pairs
+// grow ≈ 10x per level for p = 3, ≈ 12x for p = 5; the printed reading of Table 4.2 has ~6x
+// the pairs of the scaled one); the paper profile's are the thesis' own.
+const std::vector<ThesisTableSpec>& thesis_table_specs() {
+  static const std::vector<ThesisTableSpec> specs = [] {
+    std::vector<ThesisTableSpec> v(3);
+    ThesisTableSpec& t1 = v[0];
+    t1.program = "thesis_table4_1";
+    t1.summary =
+        "Thesis Figure 4.3 / Table 4.1: interpolant errors for the quadratic spike, cubic and\n"
+        "quintic B-splines, h = (3.1^3 2^-10 dx)^(1/3), Voronoi (and uniform) volumes.";
+    t1.table = "Table 4.1 (Section 4.1.1)";
+    t1.c = 3, t1.p = 3;
+    t1.requests = {{"quadratic_spike", Operator::interp},
+                   {"cubic_bspline", Operator::interp},
+                   {"quintic_bspline", Operator::interp}};
+    t1.readings = {HReading::printed};  // the scaled reading is the same formula for p = 3
+    t1.quick_printed = t1.quick_scaled = {5, 6, 7, 8, 9, 10};
+    t1.paper_levels = {5, 6, 7, 8, 9, 10, 11};
+    t1.rate_levels = "10,11";
+
+    ThesisTableSpec& t2 = v[1];
+    t2.program = "thesis_table4_2";
+    t2.summary =
+        "Thesis Figure 4.5 / Table 4.2: interpolant errors incl. the cubic spike,\n"
+        "h = (3.1^3 2^-10 dx)^(1/5) (printed) and 3.1*2^(5/5-5) dx^(1/5) (scaled).";
+    t2.table = "Table 4.2 (Section 4.1.1)";
+    t2.c = 3, t2.p = 5;
+    t2.requests = {{"cubic_bspline", Operator::interp},
+                   {"quintic_bspline", Operator::interp},
+                   {"quadratic_spike", Operator::interp},
+                   {"cubic_spike", Operator::interp}};
+    t2.readings = {HReading::printed, HReading::scaled};
+    t2.quick_printed = {5, 6, 7, 8};
+    t2.quick_scaled = {5, 6, 7, 8, 9};
+    t2.paper_levels = {5, 6, 7, 8, 9, 10, 11, 12};
+    t2.rate_levels = "11,12";
+    // Trim: the printed h = (3.1³·2^-10·Δx)^{1/5} falls so slowly that its pass at 2^-12
+    // has ~6.5x the pairs of the scaled one (h = 0.093 against 0.037) and costs most of the
+    // table (make plan PROFILE=paper).  The printed reading stops at 2^-11: its rates at
+    // 2^-10/2^-11 and the scaled reading at the documents' 2^-11/2^-12 decide the reading
+    // (report: decisions), and the skipped pass is listed with its predicted cost.
+    t2.paper_printed_max_level = 11;
+
+    ThesisTableSpec& t3 = v[2];
+    t3.program = "thesis_table4_3";
+    t3.summary =
+        "Thesis Figures 4.6-4.7 / Table 4.3: gradient and Laplacian errors, quartic and\n"
+        "piecewise cubic/quintic polynomials, h = (3.1^4 2^-10 dx)^(1/4) and the scaled reading.";
+    t3.table = "Table 4.3 (Section 4.1.2)";
+    t3.c = 4, t3.p = 4;
+    for (const char* w : {"quartic_polynomial", "piecewise_cubic_polynomial",
+                          "piecewise_quintic_polynomial"}) {
+      t3.requests.push_back({w, Operator::grad});
+      t3.requests.push_back({w, Operator::lap});
+    }
+    t3.readings = {HReading::printed, HReading::scaled};
+    t3.quick_printed = {5, 6, 7, 8};
+    t3.quick_scaled = {5, 6, 7, 8, 9};
+    t3.paper_levels = {5, 6, 7, 8, 9, 10, 11};
+    t3.rate_levels = "10,11";
+    return v;
+  }();
+  return specs;
+}
+
+const ThesisTableSpec& thesis_table_spec(const std::string& program) {
+  for (auto& s : thesis_table_specs())
+    if (s.program == program) return s;
+  throw InputError("unknown thesis table program '" + program +
+                   "'; valid: thesis_table4_1, thesis_table4_2, thesis_table4_3");
+}
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Pairs (r < h) of a pass, estimated: targets ≈ (1/Δx)² particles in Ω, each with about
+// π h²/Δx² neighbours (an over-estimate where h > H cuts the disc at the edge of Ω_H).
+double predicted_pairs(double dx, double h) {
+  const double pi = std::acos(-1.0);
+  return (1.0 / (dx * dx)) * (pi * h * h / (dx * dx) + 1.0);
+}
+
+// Particles of a level and, computed only when a pass needs them, their Voronoi volumes.
+struct LevelData {
+  Particles p;
+  std::optional<std::vector<double>> voronoi;
+  double voronoi_s = 0;
+  const std::vector<double>& voronoi_volumes(const Domain& dom) {
+    if (!voronoi) {
+      const auto t0 = std::chrono::steady_clock::now();
+      voronoi = voronoi_cells(p, dom, false).area;
+      voronoi_s = seconds_since(t0);
+    }
+    return *voronoi;
+  }
+};
+
+// The relative error as the header states it; the gradient clause only where a gradient
+// is measured (Table 4.3).
+std::string rel_error_definition(const std::vector<ErrorRequest>& requests) {
+  std::string d = "max over particles in Omega of |exact - approx| / max over particles in "
+                  "Omega of |exact|";
+  for (auto& r : requests)
+    if (r.op == Operator::grad) return d + " (gradient: |.| the Euclidean length of the vector)";
+  return d;
+}
+
+}  // namespace
+
+int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
+  Args args(spec.program, spec.summary);
+  args.output("out", "", "output TSV file (required)")
+      .output("cost", "", "optional TSV: paper-profile time and peak memory per pass, "
+                       "measured where run, else extrapolated")
+      .opt("profile", "quick", "quick or paper (the thesis' levels)")
+      .opt("readings", "", "comma-separated h readings: printed, scaled (default: the table's)")
+      .opt("volumes", "voronoi,uniform", "comma-separated volume choices: voronoi, uniform")
+      .opt("max-level", "", "drop levels above this one (e.g. to bound a paper run)")
+      .opt("levels", "", "comma-separated levels k (dx = 2^-k), 3..13, for every reading;\n"
+                         "  default: by profile")
+      .opt("seed", "1", "jitter seed (non-negative integer)");
+  add_cache_options(args);
+  args.parse(argc, argv);
+  const CacheMode mode = cache_mode(args);
+  const std::string out = args.required("out");
+  const Profile profile = parse_profile(args.str("profile"));
+  const uint64_t seed = args.seed();
+  std::vector<HReading> readings = spec.readings;
+  if (!args.str("readings").empty()) {
+    readings.clear();
+    for (auto& s : args.list("readings")) readings.push_back(parse_h_reading(s));
+  }
+  std::vector<Volumes> volumes;
+  for (auto& s : args.list("volumes")) volumes.push_back(parse_volumes(s));
+  if (readings.empty() || volumes.empty())
+    throw InputError("--readings and --volumes must name at least one choice each");
+  int max_level = 99;
+  if (!args.str("max-level").empty()) {
+    max_level = static_cast<int>(args.integer("max-level", 2, 13));
+  }
+  const std::vector<int> given = args.str("levels").empty()
+                                    ? std::vector<int>{}
+                                    : levels_option(args, profile, {}, {}, 3, 13);
+  auto levels_of = [&](HReading r) {
+    std::vector<int> lv;
+    const auto& src = !given.empty() ? given
+                      : profile == Profile::paper
+                          ? spec.paper_levels
+                          : (r == HReading::printed ? spec.quick_printed : spec.quick_scaled);
+    const int trim = given.empty() && profile == Profile::paper && r == HReading::printed
+                         ? spec.paper_printed_max_level
+                         : 99;
+    for (int k : src)
+      if (k <= max_level && k <= trim) lv.push_back(k);
+    return lv;
+  };
+
+  // The data file: its parameters decide whether an earlier run's rows are reused.
+  const Domain dom;
+  std::vector<std::pair<std::string, std::string>> params = {
+      {"program", spec.program},
+      {"table", spec.table},
+      {"seed", fmt(static_cast<long long>(seed))},
+      {"H", fmt(dom.H)},
+      {"jitter_amplitude", "0.25"},
+      {"h_printed", "(3.1^" + fmt(spec.c) + " * 2^-10 * dx)^(1/" + fmt(spec.p) + ")"},
+      {"h_scaled", "3.1 * 2^(5/" + fmt(spec.p) + " - 5) * dx^(1/" + fmt(spec.p) + ")"},
+      {"cases", "case1 = (x-1/2)^4 + (y-1/2)^4, case2 = sin(2 pi (x+y))"},
+      {"rel_error", rel_error_definition(spec.requests)},
+      {"rate_levels_thesis", spec.rate_levels},
+  };
+  std::string wnames;
+  for (auto& r : spec.requests) wnames += (wnames.empty() ? "" : ",") + r.weight + ":" + operator_name(r.op);
+  params.push_back({"requests", wnames});
+  const std::vector<std::string> columns = {
+      "h_reading", "volumes", "level", "weight", "operator", "function", "dx", "h", "h_over_H",
+      "N", "N_omega", "pairs", "rel_error", "time_s", "voronoi_s", "peak_rss_mib"};
+  LevelCache cache(out, params, columns, 3, mode);
+  const std::size_t rows_per_unit = spec.requests.size() * thesis_cases().size();
+  cache.table().set("profile", profile_name(profile));
+  cache.table().set("paper_uniform_max_level", fmt(spec.paper_uniform_max_level));
+  if (spec.paper_printed_max_level < 99)
+    cache.table().set("paper_printed_max_level", fmt(spec.paper_printed_max_level));
+  cache.table().set("time_s", "wall time of the fused pass (all weights, operators, cases)");
+  cache.table().set("voronoi_s", "wall time of the Voronoi volumes of the level (0: uniform)");
+  if (cache.reused() > 0)
+    std::fprintf(stderr, "[%s] reusing %zu cached rows from %s\n", spec.program.c_str(),
+                 cache.reused(), out.c_str());
+
+  // What is left to do, for the progress line's ETA.
+  std::vector<int> all_levels;
+  for (HReading r : readings)
+    for (int k : levels_of(r)) all_levels.push_back(k);
+  std::sort(all_levels.begin(), all_levels.end());
+  all_levels.erase(std::unique(all_levels.begin(), all_levels.end()), all_levels.end());
+  auto todo = [&](HReading r, Volumes v, int k) {
+    const auto lv = levels_of(r);
+    if (profile == Profile::paper && v == Volumes::uniform && given.empty() &&
+        k > spec.paper_uniform_max_level)
+      return false;
+    return std::find(lv.begin(), lv.end(), k) != lv.end() &&
+           !cache.has({h_reading_name(r), volumes_name(v), fmt(k)}, rows_per_unit);
+  };
+  double total = 0;
+  for (int k : all_levels)
+    for (HReading r : readings)
+      for (Volumes v : volumes)
+        if (todo(r, v, k)) {
+          const double dx = std::ldexp(1.0, -k);
+          total += predicted_pairs(dx, thesis_h(r, spec.c, spec.p, dx));
+        }
+  Progress progress(spec.program, total, "pairs", 0.0);
+  double done = 0;
+
+  std::vector<std::string> functions;
+  for (auto& c : thesis_cases()) functions.push_back(c.function);
+  const auto t_start = std::chrono::steady_clock::now();
+  for (int k : all_levels) {
+    const double dx = std::ldexp(1.0, -k);
+    std::unique_ptr<LevelData> level;  // built on the first pass of this level that runs
+    for (HReading r : readings)
+      for (Volumes v : volumes) {
+        if (!todo(r, v, k)) continue;
+        if (!level) {
+          level = std::make_unique<LevelData>();
+          level->p = jittered_grid(dx, seed, 0.25, dom);
+        }
+        const Particles& p = level->p;
+        const double h = thesis_h(r, spec.c, spec.p, dx);
+        std::vector<double> uniform;
+        double vor_s = 0;
+        const std::vector<double>* V = nullptr;
+        if (v == Volumes::voronoi) {
+          V = &level->voronoi_volumes(dom);
+          vor_s = level->voronoi_s;
+        } else {
+          uniform = uniform_volumes(p, dom);
+          V = &uniform;
+        }
+        const auto t0 = std::chrono::steady_clock::now();
+        const FusedErrors e = fused_errors(p, *V, h, spec.requests, functions, true);
+        const double pass_s = seconds_since(t0);
+        const double rss = peak_rss_mib();
+        for (auto& er : e.errors) {
+          std::string label;
+          for (auto& c : thesis_cases())
+            if (c.function == er.function) label = c.label;
+          cache.add({h_reading_name(r), volumes_name(v), fmt(k), er.weight,
+                     operator_name(er.op), label, fmt(dx), fmt(h), fmt(h / dom.H),
+                     fmt(p.size()), fmt(p.count_in_omega()), fmt(e.pairs), fmt(er.rel_error),
+                     fmt(pass_s), fmt(vor_s), fmt(rss)});
+        }
+        cache.table().set("wall_time_s", seconds_since(t_start));
+        cache.save();
+        done += predicted_pairs(dx, h);
+        std::fprintf(stderr,
+                     "[%s] level %d %s/%s h=%.5g%s N=%zu pairs=%.3g pass %.2fs voronoi %.2fs "
+                     "peak %.0f MiB\n",
+                     spec.program.c_str(), k, h_reading_name(r).c_str(), volumes_name(v).c_str(),
+                     h, h > dom.H ? " (h > H)" : "", p.size(), e.pairs, pass_s, vor_s, rss);
+        progress.update(done);
+      }
+  }
+  progress.finish();
+  cache.finish();
+  if (!cache.writes()) return 0;
+  if (cache.rows().empty()) throw InputError("no level selected (check --max-level)");
+  cache.table().set("wall_time_s", seconds_since(t_start));
+  cache.save();
+
+  // Paper-profile cost: measured passes as they are; the others extrapolated from the finest
+  // measured pass of the same reading and volumes (pairs per second, Voronoi seconds and peak
+  // memory per particle), with the pair count predicted from h and Δx and calibrated by the
+  // ratio measured/predicted of that pass.
+  if (!args.str("cost").empty()) {
+    TsvTable cost;
+    cost.set("program", spec.program);
+    cost.set("table", spec.table);
+    cost.set("data", out);
+    cost.set("method", "extrapolated rows: time = pairs / (pairs per second of the finest "
+                       "measured pass) + N * (Voronoi s per particle); memory = N * (peak MiB "
+                       "per particle of the finest measured pass)");
+    add_provenance(cost);
+    cost.columns = {"h_reading", "volumes", "level", "dx", "h", "N", "pairs", "time_s",
+                    "voronoi_s", "peak_rss_mib", "source"};
+    const int cr = 0, cv = 1, cl = 2, cn = 9, cp = 11, ct = 13, cvo = 14, cm = 15;
+    double total_s = 0, peak = 0;
+    for (HReading r : readings)
+      for (Volumes v : volumes) {
+        // Finest measured pass of (r, v): one row per request × case; take the first.  Rows
+        // by index, so that a malformed cell is named by file, row and column.
+        const TsvTable& st = cache.table();
+        std::map<int, std::size_t> measured;
+        for (std::size_t i = 0; i < st.rows.size(); ++i)
+          if (st.rows[i][cr] == h_reading_name(r) && st.rows[i][cv] == volumes_name(v))
+            measured.emplace(static_cast<int>(st.integer(i, cl)), i);
+        if (measured.empty()) continue;
+        const std::size_t ref = measured.rbegin()->second;
+        const int kref = measured.rbegin()->first;
+        const double dxr = std::ldexp(1.0, -kref);
+        const double Nr = st.number(ref, cn);
+        const double calib = st.number(ref, cp) / predicted_pairs(dxr, thesis_h(r, spec.c, spec.p, dxr));
+        const double pps = st.number(ref, cp) / std::max(1e-9, st.number(ref, ct));
+        const double vps = st.number(ref, cvo) / Nr;
+        const double mpp = st.number(ref, cm) / Nr;
+        for (int k : spec.paper_levels) {
+          if (v == Volumes::uniform && k > spec.paper_uniform_max_level) continue;
+          const double dx = std::ldexp(1.0, -k);
+          const double h = thesis_h(r, spec.c, spec.p, dx);
+          const int64_t n1 = grid_last(dx, dom) - grid_first(dx, dom) + 1;
+          const double N = static_cast<double>(n1) * static_cast<double>(n1);
+          std::vector<std::string> row;
+          auto it = measured.find(k);
+          double ts, vs, mem, pairs;
+          std::string src;
+          if (it != measured.end()) {
+            const std::size_t m = it->second;
+            pairs = st.number(m, cp);
+            ts = st.number(m, ct);
+            vs = st.number(m, cvo);
+            mem = st.number(m, cm);
+            src = "measured";
+          } else {
+            pairs = calib * predicted_pairs(dx, h);
+            ts = pairs / pps;
+            vs = v == Volumes::voronoi ? vps * N : 0;
+            mem = mpp * N;
+            src = "extrapolated from level " + std::to_string(kref);
+          }
+          total_s += ts + vs;
+          peak = std::max(peak, mem);
+          cost.add_row({h_reading_name(r), volumes_name(v), fmt(k), fmt(dx), fmt(h), fmt(N),
+                        fmt(pairs), fmt(ts), fmt(vs), fmt(mem), src});
+        }
+      }
+    cost.set("paper_total_time_s", total_s);
+    cost.set("paper_peak_rss_mib", peak);
+    cost.save(args.str("cost"));
+  }
+  return 0;
+}
+
+}  // namespace gpm
