@@ -45,12 +45,6 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return out;
 }
 
-std::string join(const std::vector<std::string>& v, const char* sep) {
-  std::string s;
-  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? sep : "") + v[i];
-  return s;
-}
-
 int col(const TsvTable& t, const std::string& name, const std::string& file) {
   const int c = t.column(name);
   if (c < 0) throw InputError("column '" + name + "' not found in " + file);

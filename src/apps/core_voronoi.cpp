@@ -23,16 +23,15 @@
 #include "gpm/geometry/voronoi.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
+#include "gpm/studies/catalog.hpp"
 #include "gpm/studies/profile.hpp"
 
 using namespace gpm;
 
 namespace {
 
-// Levels k (Δx = 2^-k) per profile.  Level 12 (Δx = 2^-12, 2.4e7 particles) needs about
-// 4 GB and a few minutes per distribution on one core.
-const std::vector<int> kQuickLevels = {5, 6, 7, 8, 9};
-const std::vector<int> kPaperLevels = {5, 6, 7, 8, 9, 10, 11, 12};
+// Levels per profile and the default seeds: voronoi_study() (catalog.hpp).
+const VoronoiStudy& kStudy = voronoi_study();
 
 // Resets the peak-RSS mark (VmHWM) to the current RSS so that the next reading is the
 // peak of the next computation only (Linux ≥ 4.0).  Returns false where unsupported.
@@ -76,13 +75,13 @@ int body(int argc, char** argv) {
             "radius r_c vs the grid formula and the documents' claims, time and peak memory.");
   args.output("out", "", "output TSV file (required)")
       .opt("levels", "", "comma-separated levels k, dx = 2^-k, 2..13 (default: by profile)")
-      .opt("seeds", "1,2,3", "comma-separated jitter seeds (non-negative integers)")
+      .opt("seeds", kStudy.seeds_option(), "comma-separated jitter seeds (non-negative integers)")
       .opt("profile", "quick",
-           "quick (levels 5-9) or paper (levels 5-12; level 12 needs ~4 GB)");
+           kStudy.levels.help() + " (level 12 needs ~4 GB)");
   args.parse(argc, argv);
   const std::string out = args.required("out");
   const Profile profile = parse_profile(args.str("profile"));
-  const std::vector<int> levels = levels_option(args, profile, kQuickLevels, kPaperLevels, 2, 13);
+  const std::vector<int> levels = levels_option(args, profile, kStudy.levels.quick, kStudy.levels.paper, 2, 13);
   const std::vector<uint64_t> seeds = args.seeds("seeds");
 
   const Domain dom;

@@ -33,6 +33,7 @@
 #include "gpm/operators/norms.hpp"
 #include "gpm/operators/testfunctions.hpp"
 #include "gpm/operators/truncation.hpp"
+#include "gpm/studies/catalog.hpp"
 #include "gpm/studies/profile.hpp"
 #include "gpm/studies/store.hpp"
 #include "gpm/weights/weights.hpp"
@@ -41,28 +42,8 @@ using namespace gpm;
 
 namespace {
 
-// Levels k (Δx = 2^-k).  The document runs 2^-5 … 2^-12.  The quick profile stops at 2^-10
-// (about a minute on the 2-core machine, 8.5e9 pairs in all): level 11 would add 6.8e10 pairs
-// for m = 5 alone (about 6 minutes at the measured ~1.9e8 pairs/s for nine weights), beyond
-// the report's time budget.  Pair counts grow per level by 4× (m = 1), 2^(10/3) ≈ 10× (m = 3)
-// and 2^3.6 ≈ 12× (m = 5).
-const std::vector<int> kQuickLevels = {5, 6, 7, 8, 9, 10};
-const std::vector<int> kPaperLevels = {5, 6, 7, 8, 9, 10, 11, 12};
-const std::vector<double> kOrders = {1, 3, 5};  // regular orders m
-const std::string kFunction = "sin2pi";         // v = sin(2π(x+y))
-
-// The nine weights of §5 and the operator each one is used for (the document's names).
-struct Case {
-  const char* weight;
-  Operator op;
-  const char* op_label;
-};
-const std::vector<Case> kCases = {
-    {"Pi1", Operator::interp, "interpolant"}, {"Pi2", Operator::interp, "interpolant"},
-    {"Pi3", Operator::interp, "interpolant"}, {"Grad1", Operator::grad, "gradient"},
-    {"Grad2", Operator::grad, "gradient"},    {"Grad3", Operator::grad, "gradient"},
-    {"Lap1", Operator::lap, "laplacian"},     {"Lap2", Operator::lap, "laplacian"},
-    {"Lap3", Operator::lap, "laplacian"}};
+// The study's levels, orders m, weights and test function: imoto_study() (catalog.hpp).
+const ImotoStudy& kStudy = imoto_study();
 
 // Expected neighbour pairs of a (level, m) unit, for the ETA only: targets in Ω times the
 // mean number of particles in a disc of radius h (density 1/Δx²).
@@ -92,7 +73,7 @@ double interp_smoothing_error(const std::string& name, double h) {
 double printed_pi3_error(const Particles& p, const std::vector<double>& V, double h) {
   WeightFunction w = weight("Pi3");
   w.constant = 5.0 / M_PI;
-  const TestFunction& f = test_function(kFunction);
+  const TestFunction& f = test_function(kStudy.function);
   std::vector<double> v(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) v[i] = f.v(p.x[i], p.y[i]);
   const auto targets = omega_targets(p);
@@ -113,7 +94,7 @@ int body(int argc, char** argv) {
             "per level, all nine weights in one fused pass per (level, m).  Data of Figure 5\n"
             "and Table 1.  Finished (level, m) units are cached in --out.");
   args.output("out", "", "output TSV file (required)")
-      .opt("profile", "quick", "quick (levels 5-10) or paper (levels 5-12)")
+      .opt("profile", "quick", kStudy.levels.help())
       .opt("levels", "", "comma-separated levels k (dx = 2^-k), 3..13; default: by profile")
       .opt("seed", "1", "jitter seed (non-negative integer)")
       .opt("jitter", "0.25", "jitter amplitude in units of dx, in [0, 0.5); 0 = the plain grid,\n"
@@ -127,7 +108,7 @@ int body(int argc, char** argv) {
   const std::string out = args.required("out");
   const CacheMode mode = cache_mode(args);
   const Profile profile = parse_profile(args.str("profile"));
-  const std::vector<int> levels = levels_option(args, profile, kQuickLevels, kPaperLevels, 3, 13);
+  const std::vector<int> levels = levels_option(args, profile, kStudy.levels.quick, kStudy.levels.paper, 3, 13);
   const uint64_t seed = args.seed();
   const double jitter = args.num("jitter");
   if (!(jitter >= 0 && jitter < 0.5))
@@ -167,38 +148,37 @@ int body(int argc, char** argv) {
   // Work still to do, for the overall ETA (estimated from the pair counts).
   double total = 0;
   for (int k : levels)
-    for (double m : kOrders)
-      if (!cache.has({fmt(k), fmt(m)}, kCases.size())) total += estimated_pairs(k, m);
+    for (double m : kStudy.orders)
+      if (!cache.has({fmt(k), fmt(m)}, kStudy.weights.size())) total += estimated_pairs(k, m);
   Progress progress("imoto_fig5_table1", total, "pairs", 0.0);
   double done = 0;
   const auto t_start = std::chrono::steady_clock::now();
 
-  std::vector<ErrorRequest> requests;
-  for (auto& c : kCases) requests.push_back({c.weight, c.op});
+  const std::vector<ErrorRequest> requests = kStudy.requests();
 
   // The loop over resolutions: one particle set per level, shared by the three m.
   for (int level : levels) {
     bool any = false;
-    for (double m : kOrders) any |= !cache.has({fmt(level), fmt(m)}, kCases.size());
+    for (double m : kStudy.orders) any |= !cache.has({fmt(level), fmt(m)}, kStudy.weights.size());
     if (!any) continue;
     const double dx = std::ldexp(1.0, -level);
     const Particles p = jittered_grid(dx, seed, jitter, dom);
     const std::vector<double> V = uniform_volumes(p, dom);
-    for (double m : kOrders) {
-      if (cache.has({fmt(level), fmt(m)}, kCases.size())) continue;
+    for (double m : kStudy.orders) {
+      if (cache.has({fmt(level), fmt(m)}, kStudy.weights.size())) continue;
       const auto t0 = std::chrono::steady_clock::now();
       const double h = imoto_h(m, dx);
-      const FusedErrors e = fused_errors(p, V, h, requests, {kFunction});
+      const FusedErrors e = fused_errors(p, V, h, requests, {kStudy.function});
       const double secs =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      for (std::size_t r = 0; r < kCases.size(); ++r)
-        cache.add({fmt(level), fmt(m), kCases[r].op_label, kCases[r].weight, fmt(dx), fmt(h),
-                   fmt(p.size()), fmt(p.count_in_omega()), fmt(e.pairs),
-                   fmt(e.errors[r].rel_error),
-                   kCases[r].op == Operator::interp
-                       ? fmt(interp_smoothing_error(kCases[r].weight, h))
-                       : std::string("NA"),
+      for (std::size_t r = 0; r < kStudy.weights.size(); ++r) {
+        const ImotoWeight& w = kStudy.weights[r];
+        cache.add({fmt(level), fmt(m), w.op_label, w.weight, fmt(dx), fmt(h), fmt(p.size()),
+                   fmt(p.count_in_omega()), fmt(e.pairs), fmt(e.errors[r].rel_error),
+                   w.op == Operator::interp ? fmt(interp_smoothing_error(w.weight, h))
+                                            : std::string("NA"),
                    fmt(secs), fmt(e.kernel_seconds)});
+      }
       cache.table().set(
           "wall_time_s",
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count());
@@ -245,8 +225,8 @@ int body(int argc, char** argv) {
     add_provenance(t);
     t.columns = {"level", "m", "pairs", "time_s", "source"};
     double total = 0;
-    for (int level : kPaperLevels)
-      for (double m : kOrders) {
+    for (int level : kStudy.levels.paper)
+      for (double m : kStudy.orders) {
         auto it = measured.find({level, fmt(m)});
         double pairs = 0, secs = 0;
         std::string src = "measured";
@@ -282,10 +262,10 @@ int body(int argc, char** argv) {
       const double dx = std::ldexp(1.0, -level);
       const Particles p = jittered_grid(dx, seed, jitter, dom);
       const std::vector<double> V = uniform_volumes(p, dom);
-      for (double m : kOrders) {
+      for (double m : kStudy.orders) {
         const double h = imoto_h(m, dx);
         const double printed = printed_pi3_error(p, V, h);
-        const double fixed = fused_errors(p, V, h, {{"Pi3", Operator::interp}}, {kFunction},
+        const double fixed = fused_errors(p, V, h, {{"Pi3", Operator::interp}}, {kStudy.function},
                                           false).errors[0].rel_error;
         t.add_row({fmt(level), fmt(m), fmt(h), fmt(printed), fmt(fixed)});
       }

@@ -33,6 +33,7 @@
 #include "gpm/solvers/heat.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
+#include "gpm/studies/catalog.hpp"
 #include "gpm/studies/heat_tables.hpp"
 #include "gpm/studies/profile.hpp"
 #include "gpm/studies/store.hpp"
@@ -131,7 +132,7 @@ int body(int argc, char** argv) {
     const Particles p = jittered_grid(dx, seed);
     const auto V = pde_volumes(volumes, p, dx, dom);
     bool checked = false;
-    for (const auto& wname : heat_weights()) {
+    for (const auto& wname : pde_weights()) {
       bool todo = false;
       for (double th : ts.thetas) todo = todo || !cache.has({wname, fmt(th), fmt(k)});
       if (!todo) continue;

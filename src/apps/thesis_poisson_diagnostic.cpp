@@ -32,6 +32,7 @@
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/solvers/poisson_probes.hpp"
+#include "gpm/studies/catalog.hpp"
 #include "gpm/studies/profile.hpp"
 #include "gpm/studies/store.hpp"
 #include "gpm/theory/smoothing.hpp"
@@ -43,8 +44,6 @@ namespace {
 
 const std::vector<int> kQuickLevels = {5, 6, 7};
 const std::vector<int> kPaperLevels = {7, 8, 9};  // the thesis' rate levels are 8, 9
-const std::vector<std::string> kWeights = {"quartic_polynomial", "piecewise_cubic_polynomial",
-                                           "piecewise_quintic_polynomial"};
 // The particle sets: three realizations of the jitter and the plain grid, with the volumes
 // of (A.10); then seed 1 and the plain grid with V_i = Δx² (pde_volumes, volumes.hpp).
 struct Variant {
@@ -83,7 +82,7 @@ int body(int argc, char** argv) {
          "set (seeds 1-3, plain grid), where its maximum sits, and the error away from the boundary.");
   a.opt("profile", "quick", "quick (levels 5-7) or paper (levels 7-9)")
       .output("out", "", "data file (required)")
-      .opt("weights", "quartic_polynomial,piecewise_cubic_polynomial,piecewise_quintic_polynomial",
+      .opt("weights", join(pde_weights(), ","),
            "comma-separated registry weights")
       .opt("levels", "", "override the profile's levels (comma-separated k, dx = 2^-k)")
       .opt("variants", "seed1,seed2,seed3,plain,seed1_cell,plain_cell",

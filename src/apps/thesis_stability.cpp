@@ -32,6 +32,7 @@
 #include "gpm/solvers/heat.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/stability.hpp"
+#include "gpm/studies/catalog.hpp"
 #include "gpm/studies/profile.hpp"
 #include "gpm/studies/store.hpp"
 #include "gpm/weights/weights.hpp"
@@ -41,8 +42,7 @@ using namespace gpm;
 namespace {
 
 // --- Parameters --------------------------------------------------------------------------
-const std::vector<std::string> kWeights = {"quartic_polynomial", "piecewise_cubic_polynomial",
-                                           "piecewise_quintic_polynomial"};
+const std::vector<std::string>& kWeights = pde_weights();  // catalog.hpp
 // The data's names for the two readings of h (influence_radius.hpp): printed = h10, scaled = h15.
 struct HRule {
   std::string name, rule;

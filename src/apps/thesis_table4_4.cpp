@@ -25,6 +25,7 @@
 #include "gpm/operators/testfunctions.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
+#include "gpm/studies/catalog.hpp"
 #include "gpm/studies/profile.hpp"
 #include "gpm/studies/store.hpp"
 #include "gpm/weights/weights.hpp"
@@ -33,17 +34,13 @@ using namespace gpm;
 
 namespace {
 
-// --- Parameters --------------------------------------------------------------------------
-const std::vector<int> kQuickLevels = {5, 6, 7};
-const std::vector<int> kPaperLevels = {5, 6, 7, 8, 9};
-const std::vector<std::string> kWeights = {"quartic_polynomial", "piecewise_cubic_polynomial",
-                                           "piecewise_quintic_polynomial"};
+// The levels per profile and the weights: poisson_table() and pde_weights() (catalog.hpp).
 
 int body(int argc, char** argv) {
   Args a("thesis_table4_4",
          "Discrete Poisson problem (thesis §4.2): relative l-infinity errors per weight,\n"
          "level and reading of h (Figure 4.8, Table 4.4).");
-  a.opt("profile", "quick", "quick (levels 5-7) or paper (levels 5-9)")
+  a.opt("profile", "quick", poisson_table().levels.help())
       .output("out", "", "data file (required)")
       .opt("seed", "1", "jitter seed")
       .opt("tol", "1e-10", "CG relative residual on the symmetric form")
@@ -59,7 +56,8 @@ int body(int argc, char** argv) {
   const double tol = a.tolerance("tol");
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
-  const std::vector<int> levels = levels_option(a, prof, kQuickLevels, kPaperLevels, 3, 13);
+  const std::vector<int> levels = levels_option(a, prof, poisson_table().levels.quick,
+                                                 poisson_table().levels.paper, 3, 13);
 
   // --- The data file: one row per (reading of h, weight, level), cached. ------------------
   LevelCache cache(a.str("out"),
@@ -90,7 +88,7 @@ int body(int argc, char** argv) {
       if (p.in_omega[i]) umax = std::max(umax, std::fabs(g[i]));
     for (const auto& rule : pde_h_rules()) {
       const double h = pde_h(rule, dx);
-      for (const auto& wname : kWeights) {
+      for (const auto& wname : pde_weights()) {
         if (cache.has({rule, wname, fmt(k)})) continue;
         const auto t0 = std::chrono::steady_clock::now();
         const DiscreteLaplacian L(p, V, weight(wname), h, storage, max_bytes);

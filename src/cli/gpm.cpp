@@ -4,13 +4,18 @@
 //   gpm particles   a jittered-grid distribution
 //   gpm voronoi     Voronoi cell areas and covering distances, r_c
 //   gpm trunc       relative ℓ∞ error of one operator at one resolution
+//   gpm poisson, gpm heat, gpm smoothing   one PDE problem or one smoothing error
+//   gpm study       the study catalog: list the studies, or run one by name
 //
 // Every subcommand writes TSV to stdout (a `# key = value` header, then columns) and
 // has --help.  Errors are one line on stderr and a non-zero exit.
+#include <unistd.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -28,6 +33,7 @@
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/solvers/poisson_probes.hpp"
+#include "gpm/studies/catalog.hpp"
 #include "gpm/studies/profile.hpp"
 #include "gpm/theory/smoothing.hpp"
 #include "gpm/weights/weights.hpp"
@@ -407,6 +413,56 @@ int cmd_fingerprint(int argc, char** argv) {
   return 0;
 }
 
+// gpm study: the catalog (catalog.hpp) on the command line.  `--list` prints every study
+// with its document item and levels; `gpm study NAME [options]` runs the study's program
+// (from the directory of this gpm) with the study's fixed arguments and the options given,
+// so it takes the program's --profile, --levels, --out, --help as they are.
+int cmd_study(int argc, char** argv) {
+  const std::string first = argc >= 3 ? argv[2] : "";
+  if (first == "--help" || first == "-h") {
+    std::cout << "usage: gpm study --list | gpm study NAME [options of its program]\n"
+                 "  --list      every catalog study: document item, program, levels per profile\n"
+                 "  NAME        runs the study's program with its fixed arguments, then the\n"
+                 "              options given (e.g. --profile quick --out FILE); see\n"
+                 "              gpm study NAME --help for them\n";
+    return 0;
+  }
+  if (first.empty() || first == "--list") {
+    TsvTable t;
+    t.set("program", "gpm study");
+    add_provenance(t);
+    t.columns = {"study", "item", "program", "quick_levels", "paper_levels"};
+    auto levels = [](const std::vector<int>& k) {
+      std::vector<std::string> s;
+      for (int v : k) s.push_back(fmt(v));
+      return join(s, ",");
+    };
+    for (auto& e : study_catalog()) {
+      std::vector<std::string> command = {e.program};
+      command.insert(command.end(), e.fixed_args.begin(), e.fixed_args.end());
+      t.add_row({e.name, e.item, join(command, " "), levels(e.levels.quick),
+                 levels(e.levels.paper)});
+    }
+    print(t);
+    return first.empty() ? 2 : 0;
+  }
+  const CatalogEntry& e = catalog_entry(first);
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe");
+  const std::string program = (self.parent_path() / e.program).string();
+  if (access(program.c_str(), X_OK) != 0)
+    throw InputError("gpm study " + first + ": its program " + program +
+                     " is not built (make build)");
+  std::vector<std::string> args = {program};
+  args.insert(args.end(), e.fixed_args.begin(), e.fixed_args.end());
+  for (int i = 3; i < argc; ++i) args.push_back(argv[i]);
+  std::vector<char*> cargs;
+  for (auto& a : args) cargs.push_back(a.data());
+  cargs.push_back(nullptr);
+  std::cout.flush();
+  execv(program.c_str(), cargs.data());
+  throw std::runtime_error("gpm study: cannot run " + program + ": " + std::strerror(errno));
+}
+
 int dispatch(int argc, char** argv) {
   const std::string usage =
       "usage: gpm SUBCOMMAND [options]   (gpm SUBCOMMAND --help for its options)\n"
@@ -417,7 +473,8 @@ int dispatch(int argc, char** argv) {
       "  poisson     one discrete Poisson problem: error, where it sits, CG counts\n"
       "  heat        one discrete heat problem (theta-method): error (4.2), steps, CG counts\n"
       "  smoothing   the Laplacian's smoothing error for a Fourier mode (no particles)\n"
-      "  fingerprint the code fingerprint of programs (result-store rows)\n";
+      "  fingerprint the code fingerprint of programs (result-store rows)\n"
+      "  study       the study catalog: --list, or run one study by name\n";
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::cout << usage;
     return argc < 2 ? 2 : 0;
@@ -431,8 +488,9 @@ int dispatch(int argc, char** argv) {
   if (sub == "heat") return cmd_heat(argc, argv);
   if (sub == "smoothing") return cmd_smoothing(argc, argv);
   if (sub == "fingerprint") return cmd_fingerprint(argc, argv);
+  if (sub == "study") return cmd_study(argc, argv);
   throw InputError("unknown subcommand '" + sub +
-                   "'; valid: weights, particles, voronoi, trunc, poisson, heat, smoothing, fingerprint");
+                   "'; valid: weights, particles, voronoi, trunc, poisson, heat, smoothing, fingerprint, study");
 }
 
 }  // namespace

@@ -295,4 +295,10 @@ void require_distinct_paths(const std::vector<std::pair<std::string, std::string
   }
 }
 
+std::string join(const std::vector<std::string>& v, const std::string& sep) {
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? sep : "") + v[i];
+  return s;
+}
+
 }  // namespace gpm

@@ -65,6 +65,8 @@ void require_distinct_paths(const std::vector<std::pair<std::string, std::string
 // Number formatting used in every data file: shortest round-trip representation.
 std::string fmt(double v);
 std::string fmt(long long v);
+// The items of v separated by sep: join({"a", "b"}, ",") = "a,b".
+std::string join(const std::vector<std::string>& v, const std::string& sep);
 inline std::string fmt(int v) { return fmt(static_cast<long long>(v)); }
 inline std::string fmt(unsigned long v) { return fmt(static_cast<long long>(v)); }
 inline std::string fmt(unsigned long long v) { return fmt(static_cast<long long>(v)); }

@@ -29,10 +29,4 @@ std::vector<int> heat_levels(const HeatTable& t, bool paper, const std::string& 
   return lv;
 }
 
-const std::vector<std::string>& heat_weights() {
-  static const std::vector<std::string> w = {"quartic_polynomial", "piecewise_cubic_polynomial",
-                                             "piecewise_quintic_polynomial"};
-  return w;
-}
-
 }  // namespace gpm

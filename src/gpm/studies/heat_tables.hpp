@@ -2,7 +2,7 @@
 // `make plan` prices them and the tests read them from here.
 //
 // Each table fixes the time step Δt₀ = c·h^p, the θ values and its levels per profile; the
-// rest is common: κ = 0.5, T = 0.1, the three polynomial weights, h by the rule of
+// rest is common: κ = 0.5, T = 0.1, the three polynomial weights (pde_weights(), catalog.hpp), h by the rule of
 // influence_radius.hpp (h10 as printed, h15 the alternative reading).
 //
 // Trim of the paper profile: the h15 reading stops one level before the finest in Tables
@@ -35,7 +35,6 @@ const HeatTable& heat_table(const std::string& table);  // InputError naming the
 // The levels of a table for a profile and h rule (the paper profile's h15 trim applied).
 std::vector<int> heat_levels(const HeatTable& t, bool paper, const std::string& h_rule);
 
-const std::vector<std::string>& heat_weights();
 constexpr double kHeatKappa = 0.5, kHeatT = 0.1;
 
 }  // namespace gpm

@@ -1,6 +1,6 @@
 // The two run profiles.  `quick` reproduces every figure in minutes on this machine
 // (SEP's [R]); `paper` runs the documents' exact resolutions (SEP's [CR], hours).
-// Each program keeps its own table of levels per profile at the top of its source.
+// The levels of each study per profile are in the study catalog (catalog.hpp).
 #pragma once
 #include <string>
 #include <vector>

@@ -19,6 +19,7 @@
 #include "gpm/solvers/heat.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
+#include "gpm/studies/catalog.hpp"
 #include "gpm/studies/heat_tables.hpp"
 #include "gpm/studies/thesis_truncation.hpp"
 #include "gpm/weights/weights.hpp"
@@ -56,11 +57,7 @@ std::string thesis_mix(const std::string& program) {  // "thesis_table4_1" -> "t
 const std::vector<FusedMix>& fused_mixes() {
   static const std::vector<FusedMix> m = [] {
     std::vector<FusedMix> v;
-    FusedMix im{"imoto9", {}, {"sin2pi"}};
-    for (const char* w : {"Pi1", "Pi2", "Pi3"}) im.requests.push_back({w, Operator::interp});
-    for (const char* w : {"Grad1", "Grad2", "Grad3"}) im.requests.push_back({w, Operator::grad});
-    for (const char* w : {"Lap1", "Lap2", "Lap3"}) im.requests.push_back({w, Operator::lap});
-    v.push_back(im);
+    v.push_back({"imoto9", imoto_study().requests(), {imoto_study().function}});
     // The thesis tables' mixes are their programs' own requests (thesis_table_specs()).
     std::vector<std::string> cases;
     for (auto& c : thesis_cases()) cases.push_back(c.function);
@@ -76,17 +73,8 @@ const FusedMix& mix(const std::string& name) {
   throw InputError("unknown weight mix '" + name + "'");
 }
 
-const std::vector<int> kImotoQuick = {5, 6, 7, 8, 9, 10}, kImotoPaper = {5, 6, 7, 8, 9, 10, 11, 12};
-const std::vector<double> kImotoOrders = {1, 3, 5};
-
-// The discrete Poisson and heat problems (thesis_table4_4.cpp, thesis_heat.cpp).
-const std::vector<std::string> kPdeWeights = {"quartic_polynomial", "piecewise_cubic_polynomial",
-                                              "piecewise_quintic_polynomial"};
-const std::vector<int> kPoissonQuick = {5, 6, 7}, kPoissonPaper = {5, 6, 7, 8, 9};
+// The studies' levels, weights and seeds come from the catalog (catalog.hpp).
 constexpr double kMaxAssembledBytes = 8e9;  // the programs' default --max-gb 8
-
-// core_voronoi.cpp: levels per profile, seeds 1, 2, 3, the plain grid once per level.
-const std::vector<int> kVoronoiQuick = {5, 6, 7, 8, 9}, kVoronoiPaper = {5, 6, 7, 8, 9, 10, 11, 12};
 
 double dx_of(int k) { return std::ldexp(1.0, -k); }
 
@@ -229,7 +217,7 @@ Calibration calibrate() {
     std::vector<double> f, g;
     poisson_data(p, f, g);
     for (const char* rule : {"h10", "h15"})
-      for (auto& w : kPdeWeights) {
+      for (auto& w : pde_weights()) {
         const double h = pde_h(rule, dx);
         const DiscreteLaplacian L(p, V, weight(w), h);
         c.poisson_its[std::string(rule) + "/" + w] = solve_poisson(p, L, f, g, 1e-10).cg.iterations;
@@ -340,8 +328,8 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
   };
 
   // imoto §5: one pass per (level, m), nine weights.
-  for (int k : paper ? kImotoPaper : kImotoQuick)
-    for (double m : kImotoOrders) add_fused("imoto_fig5_table1", "m=" + fmt(m), k, imoto_h(m, dx_of(k)), "imoto9");
+  for (int k : paper ? imoto_study().levels.paper : imoto_study().levels.quick)
+    for (double m : imoto_study().orders) add_fused("imoto_fig5_table1", "m=" + fmt(m), k, imoto_h(m, dx_of(k)), "imoto9");
 
   // Thesis Tables 4.1–4.3: per (reading, volumes, level); Voronoi once per level.
   for (auto& t : thesis_table_specs()) {
@@ -382,9 +370,9 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
   };
 
   // Poisson (Table 4.4): set-up + (CG iterations + 2) products; iterations ∝ 1/h.
-  for (int k : paper ? kPoissonPaper : kPoissonQuick)
+  for (int k : paper ? poisson_table().levels.paper : poisson_table().levels.quick)
     for (const char* rule : {"h10", "h15"})
-      for (auto& w : kPdeWeights) {
+      for (auto& w : pde_weights()) {
         PlanUnit u = base("thesis_table4_4", std::string(rule) + "/" + w, k, pde_h(rule, dx_of(k)));
         const bool as = is_assembled(u);
         const double its = c.poisson_its.at(std::string(rule) + "/" + w) * pde_h(rule, dx_of(5)) / u.h;
@@ -408,7 +396,7 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
       const double r5 = hp.c * std::pow(h5, hp.p) / (h5 * h5);
       const std::vector<int> run = heat_levels(hp, paper, rule);
       for (int k : paper ? hp.paper : hp.quick)
-        for (auto& w : heat_weights()) {
+        for (auto& w : pde_weights()) {
           const std::string trimmed =
               std::find(run.begin(), run.end(), k) == run.end()
                   ? "h15 reading stops at 2^-" + fmt(hp.paper_h15_max_level) + " (Table 4.4 settles h10)"
@@ -443,9 +431,9 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
     }
 
   // core_voronoi: the plain grid once per level, the jittered grid per seed.
-  for (int k : paper ? kVoronoiPaper : kVoronoiQuick) {
+  for (int k : paper ? voronoi_study().levels.paper : voronoi_study().levels.quick) {
     add_voronoi("core_voronoi", "grid", k);
-    for (int s = 1; s <= 3; ++s) add_voronoi("core_voronoi", "jittered/seed=" + fmt(s), k);
+    for (int s : voronoi_study().seeds) add_voronoi("core_voronoi", "jittered/seed=" + fmt(s), k);
   }
   return out;
 }

@@ -1,0 +1,106 @@
+#include "gpm/studies/catalog.hpp"
+
+#include <algorithm>
+
+#include "gpm/error.hpp"
+#include "gpm/io/tsv.hpp"
+#include "gpm/studies/heat_tables.hpp"
+#include "gpm/studies/thesis_truncation.hpp"
+
+namespace gpm {
+
+namespace {
+std::string span(const std::vector<int>& k) {
+  if (k.empty()) return "none";
+  const auto [lo, hi] = std::minmax_element(k.begin(), k.end());
+  return *lo == *hi ? fmt(static_cast<long long>(*lo))
+                    : fmt(static_cast<long long>(*lo)) + "-" + fmt(static_cast<long long>(*hi));
+}
+}  // namespace
+
+std::string ProfileLevels::help() const {
+  return "quick (levels " + span(quick) + ") or paper (levels " + span(paper) + ")";
+}
+
+const ImotoStudy& imoto_study() {
+  // The document runs 2^-5 … 2^-12.  The quick profile stops at 2^-10 (about a minute here,
+  // 8.5e9 pairs): level 11 would add 6.8e10 pairs for m = 5 alone.  Pairs grow per level by
+  // 4× (m = 1), 2^(10/3) ≈ 10× (m = 3) and 2^3.6 ≈ 12× (m = 5).
+  static const ImotoStudy s = {
+      {{5, 6, 7, 8, 9, 10}, {5, 6, 7, 8, 9, 10, 11, 12}},
+      {1, 3, 5},
+      "sin2pi",
+      {{"Pi1", Operator::interp, "interpolant"},
+       {"Pi2", Operator::interp, "interpolant"},
+       {"Pi3", Operator::interp, "interpolant"},
+       {"Grad1", Operator::grad, "gradient"},
+       {"Grad2", Operator::grad, "gradient"},
+       {"Grad3", Operator::grad, "gradient"},
+       {"Lap1", Operator::lap, "laplacian"},
+       {"Lap2", Operator::lap, "laplacian"},
+       {"Lap3", Operator::lap, "laplacian"}},
+      {1, 2, 3}};
+  return s;
+}
+
+std::vector<ErrorRequest> ImotoStudy::requests() const {
+  std::vector<ErrorRequest> r;
+  for (auto& w : weights) r.push_back({w.weight, w.op});
+  return r;
+}
+
+const std::vector<std::string>& pde_weights() {
+  static const std::vector<std::string> w = {"quartic_polynomial", "piecewise_cubic_polynomial",
+                                             "piecewise_quintic_polynomial"};
+  return w;
+}
+
+const PoissonTable& poisson_table() {
+  static const PoissonTable t = {{{5, 6, 7}, {5, 6, 7, 8, 9}}, "8,9"};
+  return t;
+}
+
+const VoronoiStudy& voronoi_study() {
+  // Level 12 (2.4e7 particles) needs about 4 GB and a few minutes per distribution.
+  static const VoronoiStudy s = {{{5, 6, 7, 8, 9}, {5, 6, 7, 8, 9, 10, 11, 12}}, {1, 2, 3}};
+  return s;
+}
+
+std::string VoronoiStudy::seeds_option() const {
+  std::vector<std::string> s;
+  for (int k : seeds) s.push_back(fmt(k));
+  return join(s, ",");
+}
+
+std::vector<CatalogEntry> study_catalog() {
+  std::vector<CatalogEntry> c;
+  c.push_back({"core_voronoi", "core_voronoi", {}, "covering radius (imoto §5, thesis Ch. 4)",
+               voronoi_study().levels});
+  c.push_back({"imoto_fig5_table1", "imoto_fig5_table1", {}, "imoto Figure 5, Table 1",
+               imoto_study().levels});
+  for (auto& t : thesis_table_specs()) {
+    std::vector<int> quick = t.quick_printed;
+    for (int k : t.quick_scaled)
+      if (std::find(quick.begin(), quick.end(), k) == quick.end()) quick.push_back(k);
+    std::sort(quick.begin(), quick.end());
+    c.push_back({t.program, t.program, {}, "thesis " + t.table, {quick, t.paper_levels}});
+  }
+  c.push_back({"thesis_table4_4", "thesis_table4_4", {}, "thesis Figure 4.8, Table 4.4",
+               poisson_table().levels});
+  for (auto& t : heat_tables())
+    c.push_back({"thesis_table4_" + t.table.substr(2), "thesis_heat",
+                 {"--table", t.table}, "thesis Table " + t.table, {t.quick, t.paper}});
+  return c;
+}
+
+const CatalogEntry& catalog_entry(const std::string& name) {
+  static const std::vector<CatalogEntry> c = study_catalog();
+  std::string valid;
+  for (auto& e : c) {
+    if (e.name == name) return e;
+    valid += (valid.empty() ? "" : ", ") + e.name;
+  }
+  throw InputError("unknown study '" + name + "'; valid: " + valid);
+}
+
+}  // namespace gpm

@@ -1,0 +1,72 @@
+// The study catalog: what each study of the package runs, defined once.  The programs, the
+// plan (`make plan`), `gpm study` and the tests read the definitions here; the thesis'
+// truncation tables and heat tables keep their richer entries in thesis_truncation.hpp and
+// heat_tables.hpp, and study_catalog() lists them beside the rest.
+//
+// Adding a level to a study is one edit here: its program, the plan and the tests follow.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gpm/operators/fused_errors.hpp"
+#include "gpm/studies/profile.hpp"
+
+namespace gpm {
+
+// Levels k (Δx = 2^-k) per profile.
+struct ProfileLevels {
+  std::vector<int> quick, paper;
+  const std::vector<int>& of(Profile p) const { return pick(p, quick, paper); }
+  // "quick (levels 5-10) or paper (levels 5-12)": the --profile help of every program.
+  std::string help() const;
+};
+
+// imoto §5 (Figure 5, Table 1): v = sin 2π(x+y), the nine reference weights, each for its
+// operator, h_N = 2.6·2^(5/m−5)·Δx^(1/m) for the regular orders m.
+struct ImotoWeight {
+  std::string weight;    // registry name, the document's label: Pi1 … Lap3
+  Operator op;
+  std::string op_label;  // the data file's `operator` column
+};
+struct ImotoStudy {
+  ProfileLevels levels;
+  std::vector<double> orders;        // m
+  std::string function;              // test-function registry name
+  std::vector<ImotoWeight> weights;  // all in one fused pass per (level, m)
+  std::vector<uint64_t> paper_seeds;  // the seed ensemble stored at paper scale
+  std::vector<ErrorRequest> requests() const;
+};
+const ImotoStudy& imoto_study();
+
+// The weights of the thesis' PDE problems (§4.2–4.3: Tables 4.4–4.7, the stability and
+// volume diagnostics): quartic, piecewise cubic and piecewise quintic polynomial.
+const std::vector<std::string>& pde_weights();
+
+// Table 4.4 (the discrete Poisson problem), under both readings of h (influence_radius.hpp).
+struct PoissonTable {
+  ProfileLevels levels;
+  std::string rate_levels;  // the thesis' rate levels
+};
+const PoissonTable& poisson_table();
+
+// core_voronoi: Voronoi cells of the plain and jittered grids (covering radius, areas).
+struct VoronoiStudy {
+  ProfileLevels levels;
+  std::vector<int> seeds;  // the jittered grid's seeds (the plain grid runs once per level)
+  std::string seeds_option() const;  // "1,2,3": the default of --seeds
+};
+const VoronoiStudy& voronoi_study();
+
+// One line of the catalog: a study, the program (and fixed arguments) that runs it, the
+// document item it reproduces and its levels per profile.
+struct CatalogEntry {
+  std::string name, program;
+  std::vector<std::string> fixed_args;
+  std::string item;
+  ProfileLevels levels;
+};
+std::vector<CatalogEntry> study_catalog();
+const CatalogEntry& catalog_entry(const std::string& name);  // InputError naming the valid ones
+
+}  // namespace gpm

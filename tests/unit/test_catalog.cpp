@@ -1,0 +1,47 @@
+// The study catalog (catalog.hpp): one entry per study, levels a program can run, and the
+// definitions the programs and the plan read are the ones listed.
+#include <algorithm>
+#include <set>
+
+#include <catch2/catch.hpp>
+
+#include "gpm/error.hpp"
+#include "gpm/studies/catalog.hpp"
+#include "gpm/studies/heat_tables.hpp"
+#include "gpm/studies/thesis_truncation.hpp"
+
+using namespace gpm;
+
+TEST_CASE("Catalog: unique names, ascending levels, the quick profile inside the paper's",
+          "[catalog]") {
+  std::set<std::string> names;
+  const auto c = study_catalog();
+  REQUIRE(c.size() == 9);  // core_voronoi, imoto, Tables 4.1–4.7
+  for (const auto& e : c) {
+    INFO(e.name);
+    CHECK(names.insert(e.name).second);
+    CHECK(std::is_sorted(e.levels.quick.begin(), e.levels.quick.end()));
+    CHECK(std::is_sorted(e.levels.paper.begin(), e.levels.paper.end()));
+    CHECK(!e.levels.quick.empty());
+    CHECK(e.levels.paper.back() >= e.levels.quick.back());
+    for (int k : e.levels.quick) {
+      CHECK(k >= 3);
+      CHECK(std::find(e.levels.paper.begin(), e.levels.paper.end(), k) != e.levels.paper.end());
+    }
+  }
+}
+
+TEST_CASE("Catalog: the entries are the studies' own definitions", "[catalog]") {
+  CHECK(catalog_entry("imoto_fig5_table1").levels.paper == imoto_study().levels.paper);
+  CHECK(catalog_entry("thesis_table4_4").levels.quick == poisson_table().levels.quick);
+  CHECK(catalog_entry("thesis_table4_6").fixed_args ==
+        std::vector<std::string>{"--table", "4.6"});
+  CHECK(catalog_entry("thesis_table4_6").levels.paper == heat_table("4.6").paper);
+  CHECK(catalog_entry("thesis_table4_2").levels.paper ==
+        thesis_table_spec("thesis_table4_2").paper_levels);
+  CHECK(imoto_study().requests().size() == 9);
+  CHECK(voronoi_study().seeds_option() == "1,2,3");
+  CHECK(poisson_table().levels.help() == "quick (levels 5-7) or paper (levels 5-9)");
+  CHECK_THROWS_WITH(catalog_entry("table4_8"),
+                    Catch::Contains("unknown study 'table4_8'; valid: core_voronoi"));
+}
