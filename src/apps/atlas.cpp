@@ -45,12 +45,6 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return out;
 }
 
-int col(const TsvTable& t, const std::string& name, const std::string& file) {
-  const int c = t.column(name);
-  if (c < 0) throw InputError("column '" + name + "' not found in " + file);
-  return c;
-}
-
 // A cell as a number; "NA" (not recorded) as NaN.  Anything else that is no number is an
 // error naming file, row and column (TsvTable::number).
 double number(const TsvTable& t, std::size_t row, int col) {
@@ -83,7 +77,7 @@ std::string value(const TsvTable& t, const std::vector<std::string>& row, const 
       if (c != ' ') compact += c;
     return compact;
   }
-  return row[col(t, f.name, file)];
+  return row[t.require_column(f.name)];
 }
 
 // Legend label of a configuration: values joined by ',' with spaces removed (gnuplot's
@@ -162,12 +156,12 @@ int body(int argc, char** argv) {
     if (fi == 0) first = t;
     revs.push_back(t.get("git_revision").value_or("?"));
     walls.push_back(t.get("wall_time_s").value_or("?"));
-    const int lc = col(t, a.str("level"), file), ec = col(t, a.str("error"), file);
+    const int lc = t.require_column(a.str("level")), ec = t.require_column(a.str("error"));
     std::vector<int> tc;
-    for (auto& c : time_cols) tc.push_back(col(t, c, file));
-    const int pc = a.str("pairs").empty() ? -1 : col(t, a.str("pairs"), file);
+    for (auto& c : time_cols) tc.push_back(t.require_column(c));
+    const int pc = a.str("pairs").empty() ? -1 : t.require_column(a.str("pairs"));
     std::vector<int> fc;
-    for (auto& [c, v] : conds) fc.push_back(col(t, c, file));
+    for (auto& [c, v] : conds) fc.push_back(t.require_column(c));
     for (std::size_t i = 0; i < t.rows.size(); ++i) {
       const auto& r = t.rows[i];
       bool keep = true;

@@ -138,7 +138,9 @@ int body(int argc, char** argv) {
                             fmt((N / area) * (N / area))});
   }
   t.save(a.str("out"));
-  for (auto& r : t.rows) std::printf("%-28s printed %-12s corrected %s\n", r[0].c_str(), r[4].c_str(), r[5].c_str());
+  for (std::size_t i = 0; i < t.rows.size(); ++i)
+    std::printf("%-28s printed %-12s corrected %s\n", t.text(i, "erratum").c_str(),
+                t.text(i, "error_printed").c_str(), t.text(i, "error_corrected").c_str());
   std::printf("wrote %s\n", a.str("out").c_str());
   return 0;
 }

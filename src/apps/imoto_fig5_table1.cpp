@@ -205,11 +205,11 @@ int body(int argc, char** argv) {
     double rate = 0;
     int finest = -1;
     const TsvTable& st = cache.table();
-    const int c_pairs = st.column("pairs"), c_kernel = st.column("kernel_s"),
-              c_time = st.column("time_s");
+    const int c_pairs = st.require_column("pairs"), c_kernel = st.require_column("kernel_s"),
+              c_time = st.require_column("time_s"), c_level = st.require_column("level");
     for (std::size_t i = 0; i < st.rows.size(); ++i) {
-      const int lv = static_cast<int>(st.integer(i, 0));
-      measured[{lv, st.rows[i][1]}] = i;
+      const int lv = static_cast<int>(st.integer(i, c_level));
+      measured[{lv, st.text(i, "m")}] = i;
       if (lv > finest) finest = lv, rate = 0;
     }
     double pairs_f = 0, secs_f = 0;

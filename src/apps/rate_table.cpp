@@ -32,12 +32,6 @@ using namespace gpm;
 
 namespace {
 
-int col(const TsvTable& t, const std::string& name, const std::string& file) {
-  const int c = t.column(name);
-  if (c < 0) throw InputError("column '" + name + "' not found in " + file);
-  return c;
-}
-
 // The key of row i: its cells in the key columns, joined by '|'.
 std::string key_of(const TsvTable& t, std::size_t i, const std::vector<int>& cols) {
   std::string s;
@@ -69,12 +63,12 @@ int body(int argc, char** argv) {
   const TsvTable data = TsvTable::load(a.str("data"));
   const TsvTable pub = TsvTable::load(a.str("published"));
   std::vector<int> dk, pk;
-  for (auto& k : keys) dk.push_back(col(data, k, a.str("data")));
-  for (auto& k : keys) pk.push_back(col(pub, k, a.str("published")));
-  const int cl = col(data, a.str("level"), a.str("data"));
-  const int cx = col(data, a.str("x"), a.str("data"));
-  const int cy = col(data, a.str("y"), a.str("data"));
-  const int cv = col(pub, a.str("value"), a.str("published"));
+  for (auto& k : keys) dk.push_back(data.require_column(k));
+  for (auto& k : keys) pk.push_back(pub.require_column(k));
+  const int cl = data.require_column(a.str("level"));
+  const int cx = data.require_column(a.str("x"));
+  const int cy = data.require_column(a.str("y"));
+  const int cv = pub.require_column(a.str("value"));
   const int ct = pub.column("theoretical");
 
   // The document's two levels, where the published file names them.

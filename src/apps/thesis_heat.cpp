@@ -50,14 +50,19 @@ void write_rates_input(LevelCache& cache, const std::string& path) {
   TsvTable t;
   for (const char* key : {"program", "table", "profile", "seed", "h_rule", "h", "dt_nominal", "error"})
     if (auto v = cache.table().get(key)) t.set(key, *v);
-  const auto& rows = cache.rows();
+  const TsvTable& d = cache.table();
+  auto series = [&](std::size_t i) { return d.text(i, "weight") + "|" + d.text(i, "theta"); };
   std::set<std::string> blown;
-  for (auto& r : rows)
-    if (r[13] == "yes") blown.insert(r[0] + "|" + r[1]);
+  for (std::size_t i = 0; i < d.rows.size(); ++i)
+    if (d.text(i, "blew_up") == "yes") blown.insert(series(i));
   t.columns = {"weight", "theta", "level", "h", "rel_error"};
   t.set("note", "rows of thesis_heat's data file whose (weight, theta) series never blew up");
-  for (auto& r : rows)
-    if (!blown.count(r[0] + "|" + r[1])) t.add_row({r[0], r[1], r[2], r[4], r[10]});
+  for (std::size_t i = 0; i < d.rows.size(); ++i) {
+    if (blown.count(series(i))) continue;
+    std::vector<std::string> row;
+    for (auto& c : t.columns) row.push_back(d.text(i, c));
+    t.add_row(row);
+  }
   add_provenance(t);
   t.save(path);
 }
@@ -67,7 +72,7 @@ int body(int argc, char** argv) {
          "Discrete heat problem with the theta-method (thesis §4.3): relative errors (4.2)\n"
          "per weight, theta and level for one time-step setting (Tables 4.5-4.7).");
   a.opt("table", "", "4.5 (dt = 0.0025h^2), 4.6 (dt = 0.5h^2) or 4.7 (dt = 0.5h) (required)")
-      .opt("profile", "quick", "quick or paper (levels per table at the top of the source)")
+      .opt("profile", "quick", "quick or paper (levels per table: heat_tables.hpp, gpm study --list)")
       .output("out", "", "data file (required)")
       .output("rates-input", "", "data file of the series that never blew up (for rate_table)")
       .opt("seed", "1", "jitter seed")

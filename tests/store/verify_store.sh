@@ -22,8 +22,12 @@ verify() {  # verify FILE PROGRAM ARGS...
   shift 2
   if [ ! -f "$store/$file" ]; then absent+=("$file"); return; fi
   echo "== $file: $prog $* $mode"
-  if "$build/$prog" "$@" --profile paper --out "$store/$file" "$mode" 2>&1 | grep '\[store\]\|rror'; then :; fi
-  if [ "${PIPESTATUS[0]}" -eq 0 ]; then checked=$((checked + 1)); else failed=$((failed + 1)); fi
+  # The program's status, not the filter's: (an `if … | grep` would report the grep's).
+  local log rc
+  log=$("$build/$prog" "$@" --profile paper --out "$store/$file" "$mode" 2>&1)
+  rc=$?
+  grep '\[store\]\|rror' <<<"$log"
+  if [ "$rc" -eq 0 ]; then checked=$((checked + 1)); else failed=$((failed + 1)); echo "   FAILED (exit $rc)"; fi
 }
 # The cheap units of each study: the coarse levels, which take seconds.
 verify imoto_fig5_table1.tsv   imoto_fig5_table1 --levels 5,6,7

@@ -49,6 +49,14 @@ int TsvTable::column(const std::string& name) const {
   return -1;
 }
 
+int TsvTable::require_column(const std::string& name) const {
+  const int c = column(name);
+  if (c < 0)
+    throw InputError((source.empty() ? std::string("table") : source) + " has no column '" +
+                     name + "'");
+  return c;
+}
+
 void TsvTable::write(std::ostream& out) const {
   for (auto& [k, v] : meta) out << "# " << k << " = " << v << '\n';
   for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "\t" : "") << columns[c];

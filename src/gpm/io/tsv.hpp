@@ -29,6 +29,13 @@ struct TsvTable {
   std::optional<std::string> get(const std::string& key) const;
   void add_row(std::vector<std::string> row);
   int column(const std::string& name) const;  // -1 if absent
+  // The column's index, or an InputError naming the file and the missing column.
+  int require_column(const std::string& name) const;
+  // The cell of `row` in the column named `name`: rows addressed by name, so a column
+  // inserted before it changes nothing (InputError for a missing column or a short row).
+  const std::string& text(std::size_t row, const std::string& name) const {
+    return text(row, require_column(name));
+  }
   // The cell (row, col); a row too short for it is an InputError naming file, line and column.
   const std::string& text(std::size_t row, int col) const;
   // The cell (row, col) as a number: a decimal, or nan / inf / -inf as fmt() writes them.

@@ -441,11 +441,6 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
 // --- What the data files record -----------------------------------------------------------
 
 namespace {
-int col(const TsvTable& t, const std::string& name, const std::string& study) {
-  const int c = t.column(name);
-  if (c < 0) throw InputError(study + ": data file has no column '" + name + "'");
-  return c;
-}
 double num_or_nan(const std::string& s) {
   try {
     return parse_number(s, "value");
@@ -461,22 +456,22 @@ std::map<std::pair<std::string, int>, RecordedUnit> recorded_units(
   std::map<std::pair<std::string, int>, RecordedUnit> out;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   auto level = [&](const std::vector<std::string>& r) {
-    return static_cast<int>(parse_number(r[col(d, "level", study)], "level"));
+    return static_cast<int>(parse_number(r[d.require_column("level")], "level"));
   };
   auto v = [&](const std::vector<std::string>& r, const char* name) {
-    return num_or_nan(r[col(d, name, study)]);
+    return num_or_nan(r[d.require_column(name)]);
   };
   // A unit's time is repeated on each of its rows: keep the first.
   auto put = [&](const std::string& var, int k, double s, double work) {
     out.emplace(std::make_pair(var, k), RecordedUnit{s, work});
   };
   if (study == "imoto_fig5_table1") {
-    for (auto& r : d.rows) put("m=" + r[col(d, "m", study)], level(r), v(r, "time_s"), v(r, "pairs"));
+    for (auto& r : d.rows) put("m=" + r[d.require_column("m")], level(r), v(r, "time_s"), v(r, "pairs"));
   } else if (std::any_of(thesis_table_specs().begin(), thesis_table_specs().end(),
                          [&](const ThesisTableSpec& t) { return t.program == study; })) {
     for (auto& r : d.rows) {
       const int k = level(r);
-      put(r[col(d, "h_reading", study)] + "/" + r[col(d, "volumes", study)], k, v(r, "time_s"),
+      put(r[d.require_column("h_reading")] + "/" + r[d.require_column("volumes")], k, v(r, "time_s"),
           v(r, "pairs"));
       const double vs = v(r, "voronoi_s");  // the level's Voronoi time, on each of its rows
       if (vs > 0) {
@@ -487,11 +482,11 @@ std::map<std::pair<std::string, int>, RecordedUnit> recorded_units(
     }
   } else if (study == "thesis_table4_4") {
     for (auto& r : d.rows)
-      put(r[col(d, "h_rule", study)] + "/" + r[col(d, "weight", study)], level(r), v(r, "seconds"),
+      put(r[d.require_column("h_rule")] + "/" + r[d.require_column("weight")], level(r), v(r, "seconds"),
           v(r, "nnz") * (v(r, "cg_iterations") + 2));
   } else if (study.rfind("thesis_table4_", 0) == 0) {  // heat tables
     for (auto& r : d.rows) {
-      const std::string var = r[col(d, "weight", study)] + "/theta=" + r[col(d, "theta", study)];
+      const std::string var = r[d.require_column("weight")] + "/theta=" + r[d.require_column("theta")];
       const int k = level(r);
       const double th = v(r, "theta");
       const double per_step = (th < 1 ? 1 : 0) + (th > 0 ? v(r, "cg_mean_iterations") + 1 : 0);
@@ -501,8 +496,8 @@ std::map<std::pair<std::string, int>, RecordedUnit> recorded_units(
     }
   } else if (study == "core_voronoi") {
     for (auto& r : d.rows) {
-      const std::string dist = r[col(d, "distribution", study)];
-      put(dist == "grid" ? std::string("grid") : dist + "/seed=" + r[col(d, "seed", study)],
+      const std::string dist = r[d.require_column("distribution")];
+      put(dist == "grid" ? std::string("grid") : dist + "/seed=" + r[d.require_column("seed")],
           level(r), v(r, "time_s"), nan);
     }
   } else {
