@@ -7,9 +7,10 @@ DATAFILES += $(DATA)/store_rates.tsv $(DATA)/store_summary.tsv $(DATA)/store_sco
              $(DATA)/checked_reasons.tsv
 
 # Reasons for differing rates, each with the diagnostic that checks it against the stored data.
-$(DATA)/checked_reasons.tsv: tables/checked_reasons.sh $(STORE_FILES) tables/published/thesis_table4_4_long.tsv
+$(DATA)/checked_reasons.tsv: tables/checked_reasons.sh $(STORE_FILES) $(BUILD)/thesis_heat_mode_model \
+    $(wildcard tables/published/thesis_table4_*_long.tsv)
 	@mkdir -p $(DATA)
-	bash $< $(STORE) $@
+	bash $< $(STORE) $@ $(BUILD)
 
 $(DATA)/store_rates.tsv: tables/store_rates.sh tables/store_lib.sh $(STORE_FILES) $(BUILD)/rate_table $(BUILD)/gpm \
     $(wildcard tables/published/*.tsv) $(DATA)/checked_reasons.tsv

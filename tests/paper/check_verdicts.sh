@@ -16,7 +16,7 @@ build=$(cd "$1" && pwd)
 cd "$2"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-bash tables/checked_reasons.sh results/paper "$tmp/checked.tsv"
+bash tables/checked_reasons.sh results/paper "$tmp/checked.tsv" "$build"
 bash tables/store_rates.sh "$build" results/paper "$tmp/rates.tsv" "$tmp/summary.tsv" "$tmp/score.tsv" "$tmp/checked.tsv"
 known=tests/paper/known_unexplained.tsv
 awk -F'\t' '

@@ -45,6 +45,7 @@ done
 verify thesis_table4_7_dtexact.tsv thesis_heat --table 4.7 --dt-rule exact --levels 5
 verify thesis_table4_6_cellvol.tsv thesis_heat --table 4.6 --volumes cell --levels 5
 verify thesis_table4_7_cellvol.tsv thesis_heat --table 4.7 --volumes cell --levels 5
+verify thesis_table4_7_dtexact_cellvol.tsv thesis_heat --table 4.7 --dt-rule exact --volumes cell --levels 5
 verify thesis_stability.tsv    thesis_stability --levels 5
 verify thesis_poisson_diagnostic.tsv thesis_poisson_diagnostic --levels 7 --weights quartic_polynomial \
   --variants seed1,plain,seed1_cell
