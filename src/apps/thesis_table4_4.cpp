@@ -25,6 +25,7 @@
 #include "gpm/operators/testfunctions.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
+#include "gpm/solvers/poisson_probes.hpp"
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/profile.hpp"
 #include "gpm/studies/store.hpp"
@@ -78,30 +79,23 @@ int body(int argc, char** argv) {
     // Particles, volumes, data: shared by every weight and reading of h at this level.
     const Particles p = jittered_grid(dx, seed);
     const auto V = uniform_volumes(p, dom);
-    std::vector<double> f(p.size()), g(p.size());
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      g[i] = u.v(p.x[i], p.y[i]);
-      f[i] = -u.lap(p.x[i], p.y[i]);
-    }
-    double umax = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.in_omega[i]) umax = std::max(umax, std::fabs(g[i]));
+    const PoissonData d = poisson_data(p, u);  // f = −Δu, g = u at every particle
     for (const auto& rule : pde_h_rules()) {
       const double h = pde_h(rule, dx);
       for (const auto& wname : pde_weights()) {
         if (cache.has({rule, wname, fmt(k)})) continue;
         const auto t0 = std::chrono::steady_clock::now();
         const DiscreteLaplacian L(p, V, weight(wname), h, storage, max_bytes);
-        const PoissonResult r = solve_poisson(p, L, f, g, tol);
+        const PoissonResult r = solve_poisson(p, L, d.f, d.g, tol);
         double err = 0;
         for (std::size_t i = 0; i < p.size(); ++i)
-          if (p.in_omega[i]) err = std::max(err, std::fabs(g[i] - r.U[i]));
+          if (p.in_omega[i]) err = std::max(err, std::fabs(d.g[i] - r.U[i]));
         const double secs =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         total += secs;
         cache.add({rule, wname, fmt(k), fmt(dx), fmt(h), fmt(p.size()),
                    fmt(L.n_unknowns()), fmt(static_cast<long long>(L.nnz())),
-                   L.assembled() ? "assembled" : "matrix_free", fmt(err / umax),
+                   L.assembled() ? "assembled" : "matrix_free", fmt(err / d.umax),
                    fmt(r.cg.iterations), fmt(r.cg.rel_residual), fmt(L.assembly_seconds()),
                    fmt(r.solve_seconds), fmt(secs)});
         cache.table().set("wall_time_s", total);
@@ -111,7 +105,7 @@ int body(int argc, char** argv) {
                      "thesis_table4_4: %s %-28s dx=2^-%d h=%.4f N=%zu nnz=%.3g %s  "
                      "err=%.4e  CG %d it (res %.1e)  %.1f s\n",
                      rule.c_str(), wname.c_str(), k, h, p.size(), static_cast<double>(L.nnz()),
-                     L.assembled() ? "assembled" : "matrix-free", err / umax,
+                     L.assembled() ? "assembled" : "matrix-free", err / d.umax,
                      r.cg.iterations, r.cg.rel_residual, secs);
       }
     }

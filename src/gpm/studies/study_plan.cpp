@@ -19,6 +19,7 @@
 #include "gpm/solvers/heat.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
+#include "gpm/solvers/poisson_probes.hpp"
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/heat_tables.hpp"
 #include "gpm/studies/thesis_truncation.hpp"
@@ -169,22 +170,17 @@ Calibration calibrate() {
 
   // The Laplacian: a Poisson solve at Δx = 2^-6 (printed h), piecewise cubic polynomial.
   const TestFunction& u = test_function("sin2pi");
-  auto poisson_data = [&](const Particles& p, std::vector<double>& f, std::vector<double>& g) {
-    f.resize(p.size()), g.resize(p.size());
-    for (std::size_t i = 0; i < p.size(); ++i) g[i] = u.v(p.x[i], p.y[i]), f[i] = -u.lap(p.x[i], p.y[i]);
-  };
   {
     const double dx = dx_of(6), h = pde_h("h10", dx);
     const Particles p = jittered_grid(dx, 1);
     const auto V = uniform_volumes(p, dom);
-    std::vector<double> f, g;
-    poisson_data(p, f, g);
+    const PoissonData d = poisson_data(p, u);
     // Set-up = the Poisson unit's time minus its CG products: assembly, connectivity
     // check, right-hand side, error.
     const auto t0 = Clock::now();
     const DiscreteLaplacian L(p, V, weight("piecewise_cubic_polynomial"), h,
                               LaplacianStorage::assembled);
-    const PoissonResult r = solve_poisson(p, L, f, g, 1e-10);
+    const PoissonResult r = solve_poisson(p, L, d.f, d.g, 1e-10);
     const double total = since(t0), nnz = static_cast<double>(L.nnz());
     const Eigen::VectorXd x = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(L.n_unknowns()));
     Eigen::VectorXd y;
@@ -214,13 +210,12 @@ Calibration calibrate() {
     const double dx = dx_of(5);
     const Particles p = jittered_grid(dx, 1);
     const auto V = uniform_volumes(p, dom);
-    std::vector<double> f, g;
-    poisson_data(p, f, g);
+    const PoissonData d = poisson_data(p, u);
     for (const char* rule : {"h10", "h15"})
       for (auto& w : pde_weights()) {
         const double h = pde_h(rule, dx);
         const DiscreteLaplacian L(p, V, weight(w), h);
-        c.poisson_its[std::string(rule) + "/" + w] = solve_poisson(p, L, f, g, 1e-10).cg.iterations;
+        c.poisson_its[std::string(rule) + "/" + w] = solve_poisson(p, L, d.f, d.g, 1e-10).cg.iterations;
         for (auto& hp : heat_tables())
           for (double th : hp.thetas) {
             if (th == 0) continue;
