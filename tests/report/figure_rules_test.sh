@@ -1,0 +1,21 @@
+#!/bin/bash
+# figure_rules.sh on two figures drawn here with gnuplot: one that keeps the rules (passes)
+# and one with two series told apart only by colour and seven series in a panel (must fail,
+# naming both).
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
+mkdir -p "$t/good" "$t/bad"
+gnuplot -e "set terminal svg; set output '$t/good/ok.svg'; \
+  plot x w lp lt 1 dt 1 pt 6 title 'a', 2*x w lp lt 2 dt 2 pt 4 title 'b', \
+       3*x w l lc 'grey' title 'published rate'" || exit 1
+gnuplot -e "set terminal svg; set output '$t/bad/clash.svg'; \
+  plot x w l lt 1 dt 2 title 'p', 2*x w l lt 2 dt 2 title 'q', 3*x w lp dt 1 pt 1 title 's3', \
+       4*x w lp dt 1 pt 2 title 's4', 5*x w lp dt 1 pt 3 title 's5', 6*x w lp dt 1 pt 4 title 's6', \
+       7*x w lp dt 1 pt 5 title 's7'" || exit 1
+bash "$here/figure_rules.sh" "$t/good" || { echo "FAIL: a figure within the rules was rejected"; exit 1; }
+out=$(bash "$here/figure_rules.sh" "$t/bad") && { echo "FAIL: the bad figure passed"; exit 1; }
+for want in '"p" and "q" differ only in colour' '7 series (at most 6)'; do
+  grep -qF "$want" <<<"$out" || { echo "FAIL: expected '$want' in:"; echo "$out"; exit 1; }
+done
+echo "figure_rules_test: the good figure passes, the bad one is rejected on both counts"
