@@ -62,6 +62,12 @@ span() {
       c1=$(span reproduced theta 1 "$tmp/r.tsv"); c5=$(span reproduced theta 0.5 "$tmp/r.tsv")
       ev="$ev With V_i = dx^2 (dt = T/K), levels 8/9: theta=1 $c1, theta=1/2 $c5."
     fi
+    cx=$store/thesis_table4_7_dtexact_cellvol.tsv
+    if [ -f "$cx" ]; then
+      rates "$cx" 8,9
+      c1=$(span reproduced theta 1 "$tmp/r.tsv"); c5=$(span reproduced theta 0.5 "$tmp/r.tsv")
+      ev="$ev With V_i = dx^2 (dt = dt0), levels 8/9: theta=1 $c1, theta=1/2 $c5."
+    fi
     Kf=$(awk -F'\t' '/^#/{next} !h++{for(i=1;i<=NF;i++)c[$i]=i;next} {k[$c["level"]]=$c["K"]} END{for(l=5;l<=9;l++) if(l in k) printf "%s2^-%d: %s", (n++?", ":""), l, k[l]}' "$fit")
     printf 'Table 4.7 (dt = 0.5h, T = 0.1): dt = T/K with K = ceil(T/dt0) (the thesis defines dt = T/K), or dt = dt0 as prescribed\t%s Steps K under dt = T/K: %s.\tboth readings kept; %s\n' "$ev" "$Kf" "${verdict:-no level pair computed under both}"
   else
