@@ -18,6 +18,10 @@
 //   fused3           three weights, Π+∇+Δ each (cubic spike, cubic and quintic B-spline)
 //   fused9           imoto's nine: Π1–Π3 (Π), ∇1–∇3 (∇), Δ1–Δ3 (Δ)
 //   separate3/9      the same weights as single-weight passes, times summed
+//   study:<mix>      a study's own pass (imoto9, thesis4_1 … thesis4_3: its weights, its
+//                    number of fields), against bench_limit's kernel_l1:<mix> — the kernel
+//                    on the same mix with every candidate in L1 (--variants studies: these
+//                    only; all: every variant)
 // The machine is shared (others compile on it): compare variants within one run.
 //
 // Against the measured limit (bench_limit → --limit file): each one-weight variant's
@@ -25,8 +29,8 @@
 // candidates per pair of its cell layout) over the rate of the kernel's arithmetic mix for
 // the same weight with data in L1 — the fraction of what the arithmetic alone allows.
 // Both are also given from CPU time (process CPU seconds / threads), which a shared
-// machine disturbs much less than wall time.  Multi-weight variants have no single-mix
-// limit (blank).
+// machine disturbs much less than wall time.  fused3/fused9 have no limit of their own (blank);
+// the study passes have theirs (kernel_l1).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -42,6 +46,7 @@
 
 #include "gpm/io/args.hpp"
 #include "limit_table.hpp"
+#include "study_mixes.hpp"
 #include "gpm/error.hpp"
 #include "gpm/geometry/domain.hpp"
 #include "gpm/io/tsv.hpp"
@@ -154,9 +159,13 @@ int body(int argc, char** argv) {
       "plain",          "fused1_cells1", "fused1",    "fused1_nodiv", "fused1_block",
       "fused1_compact", "fused1_rsqrt",  "separate3", "fused3",       "separate9",
       "fused9"};
-  if (variants.size() == 1 && variants[0] == "all") variants = all;
+  // The studies' own passes (bench/study_mixes.hpp), each against its mix's limit.
+  std::vector<std::string> known = all;
+  for (const auto& sm : bench::study_mixes()) known.push_back("study:" + sm.name);
+  if (variants.size() == 1 && variants[0] == "all") variants = known;
+  if (variants.size() == 1 && variants[0] == "studies") variants.assign(known.begin() + all.size(), known.end());
   for (auto& v : variants)
-    if (std::find(all.begin(), all.end(), v) == all.end())
+    if (std::find(known.begin(), known.end(), v) == known.end())
       throw gpm::InputError("unknown variant '" + v + "'");
   const std::string w1 = args.str("weight");
   gpm::weight(w1);  // validates the name
@@ -248,7 +257,7 @@ int body(int argc, char** argv) {
       std::vector<std::vector<gpm::KernelWeight>> passes;  // one kernel call each
       std::string mode = "compact";
       std::string ops = "P+G+L";
-      int nw = 1;
+      int nw = 1, nfields = 1;
       Timing tm;
       if (var == "plain") {
         mode = "plain";
@@ -268,6 +277,14 @@ int body(int argc, char** argv) {
         else if (var == "separate3")
           for (auto n : {"cubic_spike", "cubic_bspline", "quintic_bspline"})
             passes.push_back(with_ops({n}, gpm::kAllOps));
+        else if (var.rfind("study:", 0) == 0) {
+          for (const auto& sm : bench::study_mixes())
+            if ("study:" + sm.name == var) {
+              passes = {sm.weights};
+              nfields = sm.fields;
+            }
+          ops = "study mix";
+        }
         else {
           std::vector<gpm::KernelWeight> nine = with_ops({"Pi1", "Pi2", "Pi3"}, gpm::kInterp);
           for (auto& w : with_ops({"Grad1", "Grad2", "Grad3"}, gpm::kGrad)) nine.push_back(w);
@@ -294,16 +311,19 @@ int body(int argc, char** argv) {
         }
         // Steady state, as in a time loop: results written into reused storage.
         std::vector<gpm::KernelResult> res(kernels.size());
-        const std::vector<const std::vector<double>*> fptr{&fields[0]};
+        std::vector<const std::vector<double>*> fptr;
+        for (int j = 0; j < nfields; ++j) fptr.push_back(&fields[0]);  // the same values: rate only
         tm = time_it(static_cast<int>(repeats), [&] {
           for (std::size_t k = 0; k < kernels.size(); ++k) kernels[k].apply(targets, fptr, res[k]);
         });
         if (ti == 0 && passes.size() == 1 && passes[0][0].weight.name == w1) check(res[0].laplacian(0, 0));
       }
       const double rate = pairs / tm.best;
+      const bool study = var.rfind("study:", 0) == 0;
       if (var == "plain") plain_rate[ti] = rate;
       rate_of[var + "/" + std::to_string(nt)] = rate;
-      const Step& step = steps().at(var);
+      const Step step = study ? Step{"", "a study's own pass: its weights and fields (catalog)"}
+                              : steps().at(var);
       const auto prev = rate_of.find(std::string(step.previous) + "/" + std::to_string(nt));
       const double vs_prev = prev != rate_of.end() ? rate / prev->second : NAN;
       best[var + "/" + std::to_string(nt)] = tm.best;
@@ -319,12 +339,18 @@ int body(int argc, char** argv) {
       if (nw == 1 && passes.size() <= 1)
         limit_test = "mix:" + std::string(var == "fused1_nodiv" ? "quartic_polynomial" : w1) +
                      ":PGL";
+      // A study pass against the kernel on its own mix held in L1 (bench_limit
+      // --study-mixes): pairs against pairs, so the fraction includes the candidates the
+      // cell layout adds, the memory traffic and the per-target work.
+      if (study) limit_test = "kernel_l1:" + var.substr(6);
       const bench::Limit lim = limit_test.empty() ? bench::Limit{} : limits.get(limit_test, nt);
       if (!lim.found()) limit_test.clear();
       const double cand_rate = rate * cpp;
-      const double frac = lim.found() ? cand_rate / lim.rate : NAN;
+      const double frac = !lim.found() ? NAN : study ? rate / lim.rate : cand_rate / lim.rate;
       const double rate_cpu = pairs / (tm.cpu_best / nt);
-      const double frac_cpu = lim.found() ? rate_cpu * cpp / lim.rate_cpu : NAN;
+      const double frac_cpu = !lim.found() ? NAN
+                              : study      ? rate_cpu / lim.rate_cpu
+                                           : rate_cpu * cpp / lim.rate_cpu;
       auto opt_fmt = [](double x) { return std::isfinite(x) ? gpm::fmt(x) : std::string(); };
       std::printf("%-15s %3d %3d %-6s %8.4f %8.4f %10.4g %8.2f %10.4g %7.3f %7.3f\n",
                   var.c_str(), nt, nw, ops.c_str(), tm.best, tm.median, rate, speed,

@@ -35,7 +35,9 @@
 #include "gpm/io/tsv.hpp"
 #include "gpm/kernel/simd.hpp"
 #include "gpm/weights/weights.hpp"
+#include "gpm/kernel/kernel.hpp"
 #include "limit_table.hpp"
+#include "study_mixes.hpp"
 
 namespace {
 
@@ -341,6 +343,44 @@ int body(int argc, char** argv) {
                  (mx.plan.m > 0 && mx.name.find(":PGL") != std::string::npos ? "sqrt + divide"
                                                                               : "sqrt, no divide") +
                  ")");
+    }
+  // The studies' multi-weight mixes: the kernel itself on a neighbourhood held in L1 —
+  // 512 particles in a disc of radius 0.45h, every one a target and every pair within h —
+  // so that what remains is the mix's arithmetic and the kernel's per-target work spread
+  // over 512 candidates.  Each thread runs its own one-thread kernel on its own particles.
+  for (const auto& sm : bench::study_mixes()) {
+      const int n = kL;
+      std::vector<std::vector<double>> xs(max_threads), ys(max_threads), f(max_threads * sm.fields);
+      std::vector<gpm::FusedKernel> kernels;
+      std::vector<gpm::KernelResult> res(max_threads);
+      gpm::KernelOptions opt;
+      opt.threads = 1;
+      for (int t = 0; t < max_threads; ++t) {
+        const Candidates c(static_cast<uint64_t>(t + 101));
+        for (int k = 0; k < n; ++k) {  // the unit square's points mapped into the disc
+          const double r = 0.45 * std::sqrt(0.5 * (c.x[k] + 1)), a = M_PI * (c.y[k] + 1);
+          xs[t].push_back(r * std::cos(a));
+          ys[t].push_back(r * std::sin(a));
+        }
+        for (int j = 0; j < sm.fields; ++j) f[t * sm.fields + j].assign(c.v, c.v + n);
+        kernels.emplace_back(xs[t], ys[t], std::vector<double>(n, 1.0 / n), 1.0, sm.weights, opt);
+      }
+      std::vector<int32_t> targets(n);
+      for (int k = 0; k < n; ++k) targets[k] = k;
+      const double pairs = static_cast<double>(kernels[0].count_pairs(targets).accepted);
+      const long long calls = std::max(1LL, static_cast<long long>(lanes / (pairs * sm.weights.size())));
+      for (int nt : threads) {
+        const Result r = time_threads(nt, static_cast<int>(repeats), [&](int tid) {
+          std::vector<const std::vector<double>*> fp;
+          for (int j = 0; j < sm.fields; ++j) fp.push_back(&f[tid * sm.fields + j]);
+          for (long long c = 0; c < calls; ++c) kernels[tid].apply(targets, fp, res[tid]);
+          return 0.0;
+        });
+        report("kernel_l1:" + sm.name, nt, pairs * static_cast<double>(calls), r, "pairs/s",
+               "the fused kernel on 512 particles held in L1 (all pairs within h): " +
+                   std::to_string(sm.weights.size()) + " weights, " +
+                   std::to_string(sm.fields) + " field(s)");
+      }
     }
   const struct {
     const char* name;

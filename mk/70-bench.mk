@@ -11,7 +11,7 @@
 #    measured limit first, every kernel variant with its fraction of the limit.
 ifeq ($(PROFILE),quick)
 BENCH_LIMIT_ARGS     := --repeats 3 --lanes 1e8 --mib 256
-BENCH_KERNEL_ARGS    := --repeats 2 --variants plain,fused1_cells1,fused1,fused1_nodiv,fused1_block,separate9,fused9
+BENCH_KERNEL_ARGS    := --repeats 2 --variants plain,fused1_cells1,fused1,fused1_nodiv,fused1_block,separate9,fused9,study:imoto9,study:thesis4_1,study:thesis4_2,study:thesis4_3
 BENCH_LAPLACIAN_ARGS := --repeats 3 --dx 2^-6,2^-7
 else
 BENCH_LIMIT_ARGS     :=

@@ -18,13 +18,7 @@ unsigned op_bit(Operator op) {
 }
 }  // namespace
 
-FusedErrors fused_errors(const Particles& p, const std::vector<double>& V, double h,
-                         const std::vector<ErrorRequest>& requests,
-                         const std::vector<std::string>& functions, bool count_pairs) {
-  if (functions.empty() || functions.size() > FusedKernel::kMaxFields)
-    throw InputError("between 1 and " + std::to_string(FusedKernel::kMaxFields) +
-                     " test functions per pass, got " + std::to_string(functions.size()));
-  // One kernel weight per distinct registry name, with the union of its operators.
+std::vector<KernelWeight> kernel_weights(const std::vector<ErrorRequest>& requests) {
   std::vector<KernelWeight> kw;
   std::map<std::string, int> slot;
   for (auto& r : requests) {
@@ -36,6 +30,18 @@ FusedErrors fused_errors(const Particles& p, const std::vector<double>& V, doubl
       kw[it->second].ops |= op_bit(r.op);
     }
   }
+  return kw;
+}
+
+FusedErrors fused_errors(const Particles& p, const std::vector<double>& V, double h,
+                         const std::vector<ErrorRequest>& requests,
+                         const std::vector<std::string>& functions, bool count_pairs) {
+  if (functions.empty() || functions.size() > FusedKernel::kMaxFields)
+    throw InputError("between 1 and " + std::to_string(FusedKernel::kMaxFields) +
+                     " test functions per pass, got " + std::to_string(functions.size()));
+  const std::vector<KernelWeight> kw = kernel_weights(requests);
+  std::map<std::string, int> slot;  // registry name → its kernel weight
+  for (std::size_t i = 0; i < kw.size(); ++i) slot[kw[i].weight.name] = static_cast<int>(i);
   std::vector<const TestFunction*> tf;
   std::vector<std::vector<double>> fields;
   for (auto& name : functions) {

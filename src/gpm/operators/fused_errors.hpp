@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "gpm/geometry/domain.hpp"
+#include "gpm/kernel/kernel.hpp"
 #include "gpm/operators/truncation.hpp"
 
 namespace gpm {
@@ -37,6 +38,10 @@ struct FusedErrors {
   double pairs = 0;                 // pairs with r < h summed over the targets (self included)
   double kernel_seconds = 0;        // wall time of the fused pass alone
 };
+
+// The kernel weights of a pass: one per distinct registry name, with the union of the
+// operators requested for it (so a weight asked for Π and ∇ is evaluated once).
+std::vector<KernelWeight> kernel_weights(const std::vector<ErrorRequest>& requests);
 
 // Relative ℓ∞ errors over the particles in Ω (see truncation.hpp for the definitions) of
 // every request for every test function, from one fused kernel pass.  Weights requested
