@@ -10,10 +10,12 @@ set linetype 2 lc rgb '#1f4e9c' dt 2 pt 5 ps 0.8 lw 1.5
 set linetype 3 lc rgb '#b22222' dt 3 pt 9 ps 0.9 lw 1.5
 set linetype 4 lc rgb '#2e7d32' dt 4 pt 11 ps 0.9 lw 1.5
 set linetype 5 lc rgb '#6a1b9a' dt 5 pt 13 ps 0.9 lw 1.5
-set linetype 6 lc rgb '#e65100' dt 6 pt 4 ps 0.8 lw 1.5
-set linetype 7 lc rgb '#555555' dt 7 pt 6 ps 0.8 lw 1.5
-set linetype 8 lc rgb '#00838f' dt 8 pt 8 ps 0.8 lw 1.5
-set linetype 9 lc rgb '#795548' dt 9 pt 10 ps 0.8 lw 1.5
+# gnuplot has five dash types (dt 6-9 would repeat dt 1-4, so that lt 7 drawn with lines looks
+# like lt 2 in grey): linetypes 6-9 get dash patterns of their own.
+set linetype 6 lc rgb '#e65100' dt (10,4) pt 4 ps 0.8 lw 1.5
+set linetype 7 lc rgb '#555555' dt (10,3,3,3) pt 6 ps 0.8 lw 1.5
+set linetype 8 lc rgb '#00838f' dt (3,2) pt 8 ps 0.8 lw 1.5
+set linetype 9 lc rgb '#795548' dt (12,3,1,3,1,3,1,3) pt 10 ps 0.8 lw 1.5
 set datafile separator "\t"
 set datafile commentschars "#"
 # Draw a reference-slope triangle of slope s with its lower-left corner at (x0, y0),
