@@ -2,10 +2,13 @@
 # paper/*.md references must exist and every SVG must draw something; otherwise the build
 # stops here with one line per problem (tests/report/verify_report.sh).  The stamp depends
 # on everything the report depends on, so it reruns whenever a source or result changes.
+# The figures must also keep the figure rules (tests/report/figure_rules.sh: no two series
+# of a panel told apart by colour alone, at most six series a panel).
 VERIFY_STAMP := $(DATA)/.report_verified
 
-$(VERIFY_STAMP): tests/report/verify_report.sh $(sort $(wildcard paper/[0-9][0-9]-*.md)) $(DATAFILES) $(FIGFILES)
+$(VERIFY_STAMP): tests/report/verify_report.sh tests/report/figure_rules.sh $(sort $(wildcard paper/[0-9][0-9]-*.md)) $(DATAFILES) $(FIGFILES)
 	sh tests/report/verify_report.sh paper $(DATA) .
+	bash tests/report/figure_rules.sh figures/out
 	@touch $@
 
 .PHONY: verify-report
