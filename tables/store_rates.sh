@@ -64,6 +64,10 @@ done
 if [ -f "$store/thesis_table4_4.tsv" ]; then
   rate thesis_table4_4 all "$store/thesis_table4_4.tsv" "$pub/thesis_table4_4_long.tsv" h_rule,weight
 fi
+# A (weight, theta) series that is unstable at both rate levels - it blew up (growth beyond
+# the run's limit) or its error exceeds the solution (rel_error > 1) - has no rate; where the
+# document prints an unstable run there (theoretical "unstable"), that is what it reports.
+: > "$tmp/blown.tsv"
 for t in 4_5 4_6 4_7; do
   for r in h10 h15 h10_dtexact h10_cellvol; do
     f=$store/thesis_table$t.tsv
@@ -73,6 +77,20 @@ for t in 4_5 4_6 4_7; do
     [ -f "$f" ] || continue
     finite "$f" > "$tmp/finite.tsv"
     rate "thesis_table$t" "$r" "$tmp/finite.tsv" "$pub/thesis_table${t}_long.tsv" weight,theta
+    sl=$r; [ $r = h10_dtexact ] && sl="h10_dtexact (dt = dt0 exactly)"
+    awk -F'\t' -v t="thesis_table$t" -v sl="$sl" '
+      FNR == 1 { file++ }
+      file == 1 && /^# rate_levels = / { split(substr($0, 17), rl, ","); next }
+      /^#/ { next }
+      !seen[file]++ { for (i = 1; i <= NF; i++) c[file, $i] = i; next }
+      file == 2 && ($c[2, "level"] == rl[1] || $c[2, "level"] == rl[2]) &&
+        ($c[2, "blew_up"] == "yes" || $c[2, "rel_error"] + 0 > 1) {
+        k = $c[2, "weight"] " " $c[2, "theta"]; n[k]++
+        e = $c[2, "blew_up"] == "yes" ? "blew up at step " $c[2, "blowup_step"] " of " $c[2, "K"] \
+                                      : sprintf("error %.3g after %d steps", $c[2, "rel_error"], $c[2, "K"])
+        ev[k] = ev[k] (ev[k] == "" ? "" : "; ") "2^-" $c[2, "level"] ": " e }
+      END { for (k in n) if (n[k] == 2) printf "%s\t%s\t%s\tunstable at both rate levels (%s), as the document reports\n", t, sl, k, ev[k] }' \
+      "$pub/thesis_table${t}_long.tsv" "$f" >> "$tmp/blown.tsv"
   done
 done
 # imoto: seed 1 is the reproduction; seeds 2, 3 and the plain grid (no jitter) show how much
@@ -119,11 +137,12 @@ done
   cp "$tmp/merged.tsv" "$tmp/merged_again.tsv"  # second pass (awk tells files by name)
   awk -F'\t' '
     function num(x) { return x ~ /^-?[0-9.]+([eE][-+]?[0-9]+)?$/ }
-    FILENAME == ARGV[1] { if (/^#/) next; if (!hc++) { for (i=1;i<=NF;i++) cc[$i]=i; next }
+    FILENAME == ARGV[1] { blown[$1, $2, $3] = $4; next }
+    FILENAME == ARGV[2] { if (/^#/) next; if (!hc++) { for (i=1;i<=NF;i++) cc[$i]=i; next }
                 if ($cc["check"] == "pass") { ok[$cc["table"], $cc["slice"], $cc["key"]] = 1
                   why[$cc["table"], $cc["slice"], $cc["key"]] = $cc["reason"] ": " $cc["evidence"] }
                 next }
-    FILENAME == ARGV[2] { seedslice = ($2 == "all" || $2 ~ /^seed[0-9]+$/) && $1 == "imoto_table1"
+    FILENAME == ARGV[3] { seedslice = ($2 == "all" || $2 ~ /^seed[0-9]+$/) && $1 == "imoto_table1"
                 if (seedslice && num($6)) { k = $1 SUBSEP $4; n[k]++
                   if (!(k in lo) || $6 + 0 < lo[k]) lo[k] = $6 + 0
                   if (!(k in hi) || $6 + 0 > hi[k]) hi[k] = $6 + 0 }
@@ -136,13 +155,15 @@ done
           if (band != "" && num($5) && $5 + 0 >= lo[k] && $5 + 0 <= hi[k]) v = "inside seed band"
           else if (($1, $2, $4) in ok) { v = "differs, checked reason"; reason = why[$1, $2, $4] }
           else v = "differs, unexplained" }
+        else if ($8 == "not-computed" && $9 == "unstable" && (($1, $2, $4) in blown)) {
+          v = "non-convergence reproduced"; reason = blown[$1, $2, $4] }
         else if ($8 == "not-computed") v = "not computed"
         # A rate from other levels than those of the document (a reading the catalog trims before
         # the finest level): shown, but not computed at the levels of the document.
         else if ($8 == "other-levels") { v = "not computed"; reason = "rate from levels " $7 " only (the catalog trims this reading before the finest level of the document)" } }
       else v = "not counted"
       printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", $1, $2, $3, $4, $5, $6, $7, $8, band, v, reason }' \
-    "$checked" "$tmp/merged.tsv" "$tmp/merged_again.tsv" > "$tmp/verdicts.tsv"
+    "$tmp/blown.tsv" "$checked" "$tmp/merged.tsv" "$tmp/merged_again.tsv" > "$tmp/verdicts.tsv"
   # Which reading counts: where a document admits several readings of its set-up (h printed or
   # scaled, h10 or h15, dt = T/K or dt0), the scoreboard counts, per table, the one whose rates
   # are reproduced most often (agrees, non-convergence, seed band or checked reason); on a tie
