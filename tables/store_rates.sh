@@ -46,7 +46,9 @@ rate() {
 }
 # slice FILE READING VOLUMES: the rows of one (h reading, volumes) pair, header kept
 slice() {
-  awk -F'\t' -v r="$2" -v v="$3" '/^#/ || $1=="h_reading" || ($1==r && $2==v)' "$1"
+  awk -F'\t' -v r="$2" -v v="$3" '/^#/ { print; next }
+    !h++ { for (i = 1; i <= NF; i++) c[$i] = i; print; next }
+    $c["h_reading"] == r && $c["volumes"] == v' "$1"
 }
 source "$(dirname "$0")/store_lib.sh"  # finite
 
