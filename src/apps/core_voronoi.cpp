@@ -102,10 +102,7 @@ int body(int argc, char** argv) {
                                    : "VmHWM of the process so far (reset unsupported)");
   t.set("time_note", "time_s: voronoi_cells only (triangulation + cells), not particle set-up");
   add_provenance(t);
-  t.columns = {"level", "dx", "seed", "distribution", "N", "N_in_omega", "area_sum",
-               "area_rel_err", "r_c", "r_c_over_dx", "r_c_omega_over_dx", "r_c_grid_pred",
-               "imoto_bound", "imoto_holds", "thesis_range_holds", "worst_x", "worst_y",
-               "min_area_over_dx2", "max_area_over_dx2", "time_s", "peak_rss_mb"};
+  t.columns = kStudy.columns;
 
   const auto t_start = std::chrono::steady_clock::now();
   for (int level : levels) {

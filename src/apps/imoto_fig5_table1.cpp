@@ -136,10 +136,7 @@ int body(int argc, char** argv) {
       {"Pi3_constant", "6/pi (printed 5/pi does not normalize)"},
       {"time_s_note", "wall time of the whole (level, m) unit: particles, kernel, errors"},
       {"smoothing_part", "interpolant only: (M2/4)*8pi^2*h^2, M2 = int |x|^2 w dx (no particles)"}};
-  LevelCache cache(out, params,
-                   {"level", "m", "operator", "weight", "dx", "h", "N", "N_in_omega", "pairs",
-                    "rel_error", "smoothing_part", "time_s", "kernel_s"},
-                   2, mode);
+  LevelCache cache(out, params, kStudy.columns, 2, mode);
   cache.table().set("profile", profile_name(profile));
   if (cache.reused() > 0)
     std::fprintf(stderr, "[imoto_fig5_table1] %zu rows reused from %s\n", cache.reused(),

@@ -124,10 +124,7 @@ int body(int argc, char** argv) {
        {"h_rule", h_rule},
        {"h", pde_h_formula(h_rule)}, {"volumes", volumes_text},
        {"error", "(4.2): max_k ||u-U||_l2(Omega_H) / max_k ||u||_l2(Omega_H)"}},
-      {"weight", "theta", "level", "dx", "h", "N", "N_omega", "storage", "K", "dt",
-       "rel_error", "rel_error_max", "growth_max", "blew_up", "blowup_step", "growth", "amplification",
-       "steps_done", "cg_mean_iterations", "max_rel_residual", "s_per_step", "seconds"},
-      3, mode);
+      heat_columns(), 3, mode);
   const Domain dom;
   double total = 0;
   for (int k : levels) {

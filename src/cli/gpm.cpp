@@ -431,7 +431,7 @@ int cmd_study(int argc, char** argv) {
     TsvTable t;
     t.set("program", "gpm study");
     add_provenance(t);
-    t.columns = {"study", "item", "program", "quick_levels", "paper_levels"};
+    t.columns = {"study", "item", "program", "quick_levels", "paper_levels", "header"};
     auto levels = [](const std::vector<int>& k) {
       std::vector<std::string> s;
       for (int v : k) s.push_back(fmt(v));
@@ -441,7 +441,7 @@ int cmd_study(int argc, char** argv) {
       std::vector<std::string> command = {e.program};
       command.insert(command.end(), e.fixed_args.begin(), e.fixed_args.end());
       t.add_row({e.name, e.item, join(command, " "), levels(e.levels.quick),
-                 levels(e.levels.paper)});
+                 levels(e.levels.paper), join(e.header(), ",")});
     }
     print(t);
     return first.empty() ? 2 : 0;

@@ -5,6 +5,7 @@
 #include "gpm/error.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/studies/heat_tables.hpp"
+#include "gpm/studies/store.hpp"
 #include "gpm/studies/thesis_truncation.hpp"
 
 namespace gpm {
@@ -39,7 +40,9 @@ const ImotoStudy& imoto_study() {
        {"Lap1", Operator::lap, "laplacian"},
        {"Lap2", Operator::lap, "laplacian"},
        {"Lap3", Operator::lap, "laplacian"}},
-      {1, 2, 3}};
+      {1, 2, 3},
+      {"level", "m", "operator", "weight", "dx", "h", "N", "N_in_omega", "pairs", "rel_error",
+       "smoothing_part", "time_s", "kernel_s"}};
   return s;
 }
 
@@ -56,13 +59,23 @@ const std::vector<std::string>& pde_weights() {
 }
 
 const PoissonTable& poisson_table() {
-  static const PoissonTable t = {{{5, 6, 7}, {5, 6, 7, 8, 9}}, "8,9"};
+  static const PoissonTable t = {
+      {{5, 6, 7}, {5, 6, 7, 8, 9}},
+      "8,9",
+      {"h_rule", "weight", "level", "dx", "h", "N", "N_omega", "nnz", "storage", "rel_error",
+       "cg_iterations", "rel_residual", "assembly_s", "solve_s", "seconds"}};
   return t;
 }
 
 const VoronoiStudy& voronoi_study() {
   // Level 12 (2.4e7 particles) needs about 4 GB and a few minutes per distribution.
-  static const VoronoiStudy s = {{{5, 6, 7, 8, 9}, {5, 6, 7, 8, 9, 10, 11, 12}}, {1, 2, 3}};
+  static const VoronoiStudy s = {
+      {{5, 6, 7, 8, 9}, {5, 6, 7, 8, 9, 10, 11, 12}},
+      {1, 2, 3},
+      {"level", "dx", "seed", "distribution", "N", "N_in_omega", "area_sum", "area_rel_err", "r_c",
+       "r_c_over_dx", "r_c_omega_over_dx", "r_c_grid_pred", "imoto_bound", "imoto_holds",
+       "thesis_range_holds", "worst_x", "worst_y", "min_area_over_dx2", "max_area_over_dx2",
+       "time_s", "peak_rss_mb"}};
   return s;
 }
 
@@ -72,24 +85,33 @@ std::string VoronoiStudy::seeds_option() const {
   return join(s, ",");
 }
 
+std::vector<std::string> CatalogEntry::header() const {
+  std::vector<std::string> h = columns;
+  if (level_cache)
+    for (auto& c : row_provenance_columns()) h.push_back(c);
+  return h;
+}
+
 std::vector<CatalogEntry> study_catalog() {
   std::vector<CatalogEntry> c;
   c.push_back({"core_voronoi", "core_voronoi", {}, "covering radius (imoto §5, thesis Ch. 4)",
-               voronoi_study().levels});
+               voronoi_study().levels, voronoi_study().columns, /*level_cache=*/false});
   c.push_back({"imoto_fig5_table1", "imoto_fig5_table1", {}, "imoto Figure 5, Table 1",
-               imoto_study().levels});
+               imoto_study().levels, imoto_study().columns});
   for (auto& t : thesis_table_specs()) {
     std::vector<int> quick = t.quick_printed;
     for (int k : t.quick_scaled)
       if (std::find(quick.begin(), quick.end(), k) == quick.end()) quick.push_back(k);
     std::sort(quick.begin(), quick.end());
-    c.push_back({t.program, t.program, {}, "thesis " + t.table, {quick, t.paper_levels}});
+    c.push_back({t.program, t.program, {}, "thesis " + t.table, {quick, t.paper_levels},
+                 thesis_table_columns()});
   }
   c.push_back({"thesis_table4_4", "thesis_table4_4", {}, "thesis Figure 4.8, Table 4.4",
-               poisson_table().levels});
+               poisson_table().levels, poisson_table().columns});
   for (auto& t : heat_tables())
     c.push_back({"thesis_table4_" + t.table.substr(2), "thesis_heat",
-                 {"--table", t.table}, "thesis Table " + t.table, {t.quick, t.paper}});
+                 {"--table", t.table}, "thesis Table " + t.table, {t.quick, t.paper},
+                 heat_columns()});
   return c;
 }
 

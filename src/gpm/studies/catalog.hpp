@@ -35,6 +35,7 @@ struct ImotoStudy {
   std::string function;              // test-function registry name
   std::vector<ImotoWeight> weights;  // all in one fused pass per (level, m)
   std::vector<uint64_t> paper_seeds;  // the seed ensemble stored at paper scale
+  std::vector<std::string> columns;  // of its data file; the first two are the unit's key
   std::vector<ErrorRequest> requests() const;
 };
 const ImotoStudy& imoto_study();
@@ -47,6 +48,7 @@ const std::vector<std::string>& pde_weights();
 struct PoissonTable {
   ProfileLevels levels;
   std::string rate_levels;  // the thesis' rate levels
+  std::vector<std::string> columns;  // of its data file; the first three are the unit's key
 };
 const PoissonTable& poisson_table();
 
@@ -54,6 +56,7 @@ const PoissonTable& poisson_table();
 struct VoronoiStudy {
   ProfileLevels levels;
   std::vector<int> seeds;  // the jittered grid's seeds (the plain grid runs once per level)
+  std::vector<std::string> columns;  // of its data file
   std::string seeds_option() const;  // "1,2,3": the default of --seeds
 };
 const VoronoiStudy& voronoi_study();
@@ -65,6 +68,11 @@ struct CatalogEntry {
   std::vector<std::string> fixed_args;
   std::string item;
   ProfileLevels levels;
+  std::vector<std::string> columns;  // the study's own columns
+  bool level_cache = true;            // written through LevelCache (store.hpp)
+  // The header of the data file its program writes: the columns, and for a cached study the
+  // provenance of each row (code, made_on, checked).
+  std::vector<std::string> header() const;
 };
 std::vector<CatalogEntry> study_catalog();
 const CatalogEntry& catalog_entry(const std::string& name);  // InputError naming the valid ones

@@ -29,4 +29,12 @@ std::vector<int> heat_levels(const HeatTable& t, bool paper, const std::string& 
   return lv;
 }
 
+const std::vector<std::string>& heat_columns() {
+  static const std::vector<std::string> c = {
+      "weight", "theta", "level", "dx", "h", "N", "N_omega", "storage", "K", "dt", "rel_error",
+      "rel_error_max", "growth_max", "blew_up", "blowup_step", "growth", "amplification",
+      "steps_done", "cg_mean_iterations", "max_rel_residual", "s_per_step", "seconds"};
+  return c;
+}
+
 }  // namespace gpm

@@ -37,4 +37,7 @@ std::vector<int> heat_levels(const HeatTable& t, bool paper, const std::string& 
 
 constexpr double kHeatKappa = 0.5, kHeatT = 0.1;
 
+// The columns of a heat data file; the first three (weight, θ, level) are the unit's key.
+const std::vector<std::string>& heat_columns();
+
 }  // namespace gpm

@@ -139,6 +139,13 @@ std::string rel_error_definition(const std::vector<ErrorRequest>& requests) {
 
 }  // namespace
 
+const std::vector<std::string>& thesis_table_columns() {
+  static const std::vector<std::string> c = {
+      "h_reading", "volumes", "level", "weight", "operator", "function", "dx", "h", "h_over_H",
+      "N", "N_omega", "pairs", "rel_error", "time_s", "voronoi_s", "peak_rss_mib"};
+  return c;
+}
+
 int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
   Args args(spec.program, spec.summary);
   args.output("out", "", "output TSV file (required)")
@@ -204,10 +211,7 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
   std::string wnames;
   for (auto& r : spec.requests) wnames += (wnames.empty() ? "" : ",") + r.weight + ":" + operator_name(r.op);
   params.push_back({"requests", wnames});
-  const std::vector<std::string> columns = {
-      "h_reading", "volumes", "level", "weight", "operator", "function", "dx", "h", "h_over_H",
-      "N", "N_omega", "pairs", "rel_error", "time_s", "voronoi_s", "peak_rss_mib"};
-  LevelCache cache(out, params, columns, 3, mode);
+  LevelCache cache(out, params, thesis_table_columns(), 3, mode);
   const std::size_t rows_per_unit = spec.requests.size() * thesis_cases().size();
   cache.table().set("profile", profile_name(profile));
   cache.table().set("paper_uniform_max_level", fmt(spec.paper_uniform_max_level));

@@ -41,6 +41,10 @@ struct ThesisTableSpec {
   int paper_printed_max_level = 99;
 };
 
+// The columns of the tables' data files; the first three (h reading, volumes, level) are
+// the unit's key.
+const std::vector<std::string>& thesis_table_columns();
+
 // The three tables, defined once: their programs, `make plan` and the tests read them here.
 const std::vector<ThesisTableSpec>& thesis_table_specs();
 const ThesisTableSpec& thesis_table_spec(const std::string& program);  // InputError if unknown
