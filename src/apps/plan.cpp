@@ -147,6 +147,29 @@ int body(int argc, char** argv) {
     row("trimmed (not run)", "all", trimmed, true);
     row("total before trims", "all", before, false);
   }
+  // What P processes could do with the same units, each unit run whole on one process
+  // (longest first, to the least loaded): a prediction for a cluster or a many-core machine,
+  // not a measurement — the package runs one process today.  The longest unit bounds it.
+  std::vector<double> unit_times;
+  for (auto& u : units)
+    if (u.trimmed.empty()) unit_times.push_back(u.time_s);
+  std::sort(unit_times.rbegin(), unit_times.rend());
+  const std::vector<int> ranks = {2, 16, 64};
+  std::vector<double> makespan;
+  for (int P : ranks) {
+    std::vector<double> load(P, 0.0);
+    for (double tu : unit_times) *std::min_element(load.begin(), load.end()) += tu;
+    makespan.push_back(*std::max_element(load.begin(), load.end()));
+  }
+  s.set("processes_note", "'P processes': the units run whole, longest first to the least "
+                          "loaded process, each at this machine's calibrated speed; a "
+                          "prediction (one process runs today), bounded below by the longest "
+                          "unit (" + human_time(unit_times.empty() ? 0 : unit_times[0]) + ")");
+  for (std::size_t i = 0; i < ranks.size(); ++i) {
+    Agg g = all;
+    g.time_s = makespan[i];
+    row(fmt(ranks[i]) + " processes", "all", g, false);
+  }
   if (!a.str("summary").empty()) s.save(a.str("summary"));
 
   // --- The calibration as a table (quantity, value, unit). --------------------------------
@@ -207,6 +230,10 @@ int body(int argc, char** argv) {
                   before.units, "", before.pair_work, human_time(before.time_s).c_str(),
                   before.time_s / std::max(1e-9, all.time_s));
     }
+    for (std::size_t i = 0; i < ranks.size(); ++i)
+      std::printf("%-22s %5s %5s %11s %11s %12s   (predicted: units whole, longest first)\n",
+                  (fmt(ranks[i]) + " PROCESSES").c_str(), "", "", "", "",
+                  human_time(makespan[i]).c_str());
     std::printf("wrote %s%s%s\n", a.str("out").c_str(), a.str("summary").empty() ? "" : " and ",
                 a.str("summary").c_str());
   }
