@@ -371,25 +371,33 @@ int cmd_heat(int argc, char** argv) {
   return 0;
 }
 
-// The smoothing part of the discrete Laplacian for one Fourier mode (smoothing.hpp): no
-// particles, so it separates the operator's own error from the particles' in a measurement.
+// The smoothing part of the discrete Laplacian (or gradient) for one Fourier mode
+// (smoothing.hpp): no particles, so it separates the operator's own error from the
+// particles' in a measurement.
 int cmd_smoothing(int argc, char** argv) {
-  Args a("gpm smoothing", "The Laplacian's smoothing error eps(kh) = 1 - (8 pi/(kh)^2) int_0^1\n"
-                          "(1 - J0(kh s)) w(s)/s ds for a weight and radii (no particles).");
+  Args a("gpm smoothing", "The smoothing error of the Laplacian, eps(kh) = 1 - (8 pi/(kh)^2) int_0^1\n"
+                          "(1 - J0(kh s)) w(s)/s ds, or of the gradient, 1 - (4 pi/(kh)) int_0^1\n"
+                          "J1(kh s) w(s) ds, for a weight and radii (no particles).");
   a.opt("weight", "quartic_polynomial", "registry weight (gpm weights lists them)")
       .opt("h", "", "comma-separated influence radii (required)")
-      .opt("k", fmt(kSin2piWaveNumber), "wave number |k| (default 2 pi sqrt 2, for sin 2pi(x+y))");
+      .opt("k", fmt(kSin2piWaveNumber), "wave number |k| (default 2 pi sqrt 2, for sin 2pi(x+y))")
+      .opt("operator", "lap", "lap or grad");
   a.parse(argc, argv, 2);
   if (a.str("h").empty()) throw InputError("--h is required (see --help)");
+  const std::string op = a.str("operator");
+  if (op != "lap" && op != "grad") throw InputError("--operator: '" + op + "' is not lap or grad");
   const double k = a.positive("k");
   const WeightFunction& w = weight(a.str("weight"));
   TsvTable t = header_from(a, "smoothing");
-  t.set("eps", "1 - (8 pi/(kh)^2) int_0^1 (1 - J0(kh s)) w(s)/s ds: relative error of the "
-               "continuous operator on the mode");
+  t.set("eps", op == "lap" ? "1 - (8 pi/(kh)^2) int_0^1 (1 - J0(kh s)) w(s)/s ds: relative error "
+                             "of the continuous Laplacian on the mode"
+                           : "1 - (4 pi/(kh)) int_0^1 J1(kh s) w(s) ds: relative error of the "
+                             "continuous gradient on the mode");
   t.columns = {"h", "kh", "eps"};
   for (double h : a.nums("h")) {
     require_positive(h, "--h");
-    t.add_row({fmt(h), fmt(k * h), fmt(laplacian_smoothing_error(w, k * h))});
+    const double e = op == "lap" ? laplacian_smoothing_error(w, k * h) : gradient_smoothing_error(w, k * h);
+    t.add_row({fmt(h), fmt(k * h), fmt(e)});
   }
   print(t);
   return 0;

@@ -53,3 +53,30 @@ TEST_CASE("Laplacian smoothing error: small-kh limit and the quartic at the thes
                       std::log(h8 / h9);
   CHECK(rate == Approx(2.0).margin(0.05));
 }
+
+TEST_CASE("Gradient smoothing error: the Bessel form against direct quadrature of the operator",
+          "[unit][smoothing]") {
+  // The continuous gradient of operators.hpp at p = 0 on v = sin(k·x), k = (k₁, k₁):
+  //   d ∫ (v(r) − v(0)) r/|r|² w_h(|r|) dr = d ∫∫ sin(k·r) (cos φ, sin φ) w_h(ρ) dρ dφ
+  // (polar, ρ < h; smooth, no singularity), midpoint rule; ∇v(0) = k, so its x-component
+  // must be k₁ (1 − ε_∇(|k|h)).
+  const double k1 = 2 * std::numbers::pi, k = k1 * std::sqrt(2.0), h = 0.08;
+  for (const char* name : {"quartic_polynomial", "piecewise_quintic_polynomial"}) {
+    const WeightFunction& w = weight(name);
+    const int nr = 1500, nphi = 1500;
+    double gx = 0;
+    for (int i = 0; i < nr; ++i) {
+      const double rho = (i + 0.5) * h / nr, wh = w.value(rho / h) / (h * h);
+      for (int j = 0; j < nphi; ++j) {
+        const double phi = (j + 0.5) * 2 * std::numbers::pi / nphi;
+        gx += std::sin(k1 * rho * (std::cos(phi) + std::sin(phi))) * std::cos(phi) * wh;
+      }
+    }
+    gx *= 2 * (h / nr) * (2 * std::numbers::pi / nphi);  // d = 2, dρ dφ
+    INFO(name);
+    CHECK(gx / k1 == Approx(1 - gradient_smoothing_error(w, k * h)).epsilon(1e-7));
+    // and ε_∇ ~ c (kh)² for small kh
+    CHECK(gradient_smoothing_error(w, 2e-2) / gradient_smoothing_error(w, 1e-2) ==
+          Approx(4.0).epsilon(1e-3));
+  }
+}

@@ -17,16 +17,20 @@ struct Params {
   const PolyPiece* piece;
   double kh;
 };
+// J₁(kh s) w(s): the gradient's kernel in polar form.
+double integrand_grad(double s, void* vp) {
+  const auto* p = static_cast<const Params*>(vp);
+  return gsl_sf_bessel_J1(p->kh * s) * p->piece->value(s);
+}
 // (1 − J₀(kh s)) w(s)/s: bounded at s = 0, where 1 − J₀ ~ (kh s)²/4.
 double integrand(double s, void* vp) {
   const auto* p = static_cast<const Params*>(vp);
   if (s <= 0) return 0.0;
   return (1 - gsl_sf_bessel_J0(p->kh * s)) * p->piece->value(s) / s;
 }
-}  // namespace
 
-double laplacian_smoothing_error(const WeightFunction& w, double kh) {
-  require_positive(kh, "kh");
+// ∫₀¹ f(s; kh) ds over the weight's pieces (GSL, to about 1e-12).
+double integrate_pieces(const WeightFunction& w, double kh, double (*f)(double, void*)) {
   constexpr std::size_t kLimit = 200;
   std::unique_ptr<gsl_integration_workspace, void (*)(gsl_integration_workspace*)> ws(
       gsl_integration_workspace_alloc(kLimit), gsl_integration_workspace_free);
@@ -34,9 +38,9 @@ double laplacian_smoothing_error(const WeightFunction& w, double kh) {
   gsl_error_handler_t* old = gsl_set_error_handler_off();
   for (const PolyPiece& pc : w.scaled_pieces()) {
     Params params{&pc, kh};
-    gsl_function f{&integrand, &params};
+    gsl_function g{f, &params};
     double result = 0, abserr = 0;
-    const int status = gsl_integration_qags(&f, pc.r_begin, pc.r_end, 1e-13, 1e-12, kLimit,
+    const int status = gsl_integration_qags(&g, pc.r_begin, pc.r_end, 1e-13, 1e-12, kLimit,
                                             ws.get(), &result, &abserr);
     if (status != GSL_SUCCESS && abserr > 1e-10 * std::max(1.0, std::fabs(result))) {
       gsl_set_error_handler(old);
@@ -46,7 +50,18 @@ double laplacian_smoothing_error(const WeightFunction& w, double kh) {
     sum += result;
   }
   gsl_set_error_handler(old);
-  return 1 - 8 * std::numbers::pi / (kh * kh) * sum;
+  return sum;
+}
+}  // namespace
+
+double laplacian_smoothing_error(const WeightFunction& w, double kh) {
+  require_positive(kh, "kh");
+  return 1 - 8 * std::numbers::pi / (kh * kh) * integrate_pieces(w, kh, &integrand);
+}
+
+double gradient_smoothing_error(const WeightFunction& w, double kh) {
+  require_positive(kh, "kh");
+  return 1 - 4 * std::numbers::pi / kh * integrate_pieces(w, kh, &integrand_grad);
 }
 
 }  // namespace gpm

@@ -14,4 +14,10 @@ namespace gpm {
 // ε(kh) for a normalized weight in d = 2 (GSL quadrature and Bessel J₀, to about 1e-12).
 double laplacian_smoothing_error(const WeightFunction& w, double kh);
 
+// The same for the gradient of operators.hpp, ∇_h v(p) = d Σ V_i (v_i − v(p))(x_i − p)/r_i² w_h:
+// its continuous form maps e^{ik·x} to ik(1 − ε_∇(kh)) e^{ik·x} with, in d = 2,
+//   ε_∇(kh) = 1 − (4π/(kh)) ∫₀¹ J₁(kh·s) w(s) ds,
+// again ~ c(kh)² for small kh (the normalization 2π∫ s w = 1 makes ε_∇(0) = 0).
+double gradient_smoothing_error(const WeightFunction& w, double kh);
+
 }  // namespace gpm
