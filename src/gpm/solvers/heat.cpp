@@ -60,10 +60,14 @@ HeatResult solve_heat(const Particles& p, const DiscreteLaplacian& L, const Heat
   };
   const double u0 = norm_l2(U, 1.0);
   double prev_norm = u0, err_l2 = 0, err_max = 0;
-  // A = D − θκΔt D M_ΩΩ (symmetric positive definite for θ > 0 and a positive weight).
+  // A = D − θκΔt D M_ΩΩ (symmetric positive definite for θ > 0 and a positive weight):
+  // A x = D(x − θκΔt Mx), written once here for a product Mx already at hand.
+  auto A_with = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& Mx, Eigen::VectorXd& out) {
+    out = (d.array() * (x.array() - th * kdt * Mx.array())).matrix();
+  };
   auto A = [&](const Eigen::VectorXd& x, Eigen::VectorXd& out) {
     L.apply(x, tmp);
-    out = (d.array() * (x.array() - th * kdt * tmp.array())).matrix();
+    A_with(x, tmp, out);
   };
   long cg_total = 0;
   const auto t0 = std::chrono::steady_clock::now();
@@ -80,10 +84,10 @@ HeatResult solve_heat(const Particles& p, const DiscreteLaplacian& L, const Heat
       rhs += th * kdt * ek1 * c;
       b = (d.array() * rhs.array()).matrix();
       const std::string what = "heat step " + std::to_string(k + 1);
-      y = (d.array() * (U.array() - th * kdt * MU.array())).matrix();
+      A_with(U, MU, y);
       CgResult r = cg_iterate(A, b, U, y, s.tol, s.max_iter, what);
       L.apply(U, MU);
-      y = (d.array() * (U.array() - th * kdt * MU.array())).matrix();
+      A_with(U, MU, y);
       cg_check_true_residual(r, b, y, s.tol, what);
       cg_total += r.iterations;
       res.max_rel_residual = std::max(res.max_rel_residual, r.rel_residual);
