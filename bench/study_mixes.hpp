@@ -25,8 +25,7 @@ inline std::vector<StudyMix> study_mixes() {
   std::vector<StudyMix> m;
   m.push_back({"imoto9", gpm::kernel_weights(gpm::imoto_study().requests()), 1});
   for (const auto& t : gpm::thesis_table_specs())
-    m.push_back({"thesis" + t.program.substr(std::string("thesis_table").size()),
-                 gpm::kernel_weights(t.requests), static_cast<int>(gpm::thesis_cases().size())});
+    m.push_back({t.mix(), gpm::kernel_weights(t.requests), static_cast<int>(gpm::thesis_cases().size())});
   return m;
 }
 

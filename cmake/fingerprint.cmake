@@ -12,7 +12,7 @@
 #
 # Inputs: -DSRC=<source dir> -DOUT=<generated .cpp> -DFLAGS=<compiler, version, flags>
 cmake_minimum_required(VERSION 3.22)
-set(io_only args command_line error progress profile cost_model study_plan provenance store)
+set(io_only args command_line error progress profile cost_model study_plan provenance store runner)
 file(GLOB_RECURSE core ${SRC}/src/gpm/*.cpp ${SRC}/src/gpm/*.hpp)
 list(SORT core)
 set(core_text "")

@@ -32,6 +32,11 @@ pow2_xtics = "set logscale x 2; set xrange [xlo:xhi]; set xtics ('' xlo); do for
 # column("name") in `using`:   plot rows_named(f, '$c["variant"]=="seed1"') using (column("h")):(column("rel_error"))
 # (filtering outside gnuplot keeps lines unbroken where other rows are interleaved).
 rows_named(f, cond) = sprintf("< awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; print; next } (%s)' '%s'", cond, f)
+# The same rows, but only where at least three of them hold a number in column COL (else the
+# header alone): the line of a series, which is not drawn through two points (figure rules).
+# Plot the series' points from rows_named and its line from rows_trend:
+#   plot rows_named(f, c) using … with points lt 1 title 'x', rows_trend(f, c, 'y') using … with lines lt 1 notitle
+rows_trend(f, cond, col) = sprintf("< awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; print; next } (%s) && $c[\"%s\"] ~ /^[-+]?[0-9.]+([eE][-+]?[0-9]+)?$/ { r[++n] = $0 } END { for (i = 1; n >= 3 && i <= n; i++) print r[i] }' '%s'", cond, col, f)
 # A slope-s triangle under the two finest points (smallest h) of the series in the string
 # variable ANCHOR (a rows_named(...) source; needs `set datafile columnheaders`; call before any
 # xrange/yrange is set, which stats would apply):   ANCHOR = sel(1, 1); eval anchored_triangle(2, 'slope 2')

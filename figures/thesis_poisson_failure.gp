@@ -55,10 +55,17 @@ set yrange [-0.15:1.15]
 set xlabel 'Δx'
 set ylabel 'max_Ω U / max_Ω |U|   (> 0: violated)'
 set key at graph 0.98, graph 0.6 right top box opaque font ',10'
-sel(r, w) = rows_named(fa, sprintf('$c["h_rule"]=="%s" && $c["weight"]=="%s"', r, w))
-plot sel('h10', 'cubic_spike') using (column("dx")):(column("mp_boundary")) with linespoints lt 3 title 'cubic spike, printed h', \
-     sel('h15', 'cubic_spike') using (column("dx")):(column("mp_boundary")) with linespoints lt 5 title 'cubic spike, 2^{-15} reading', \
-     sel('h10', 'quartic_polynomial') using (column("dx")):(column("mp_boundary")) with linespoints lt 1 title 'quartic, printed h', \
-     sel('h15', 'quartic_polynomial') using (column("dx")):(column("mp_boundary")) with linespoints lt 2 title 'quartic, 2^{-15} reading', \
+# A failed solve (no number) leaves fewer than three points: those series are drawn as points only.
+cond(r, w) = sprintf('$c["h_rule"]=="%s" && $c["weight"]=="%s"', r, w)
+sel(r, w) = rows_named(fa, cond(r, w))
+line(r, w) = rows_trend(fa, cond(r, w), 'mp_boundary')
+plot sel('h10', 'cubic_spike') using (column("dx")):(column("mp_boundary")) with points lt 3 title 'cubic spike, printed h', \
+     line('h10', 'cubic_spike') using (column("dx")):(column("mp_boundary")) with lines lt 3 notitle, \
+     sel('h15', 'cubic_spike') using (column("dx")):(column("mp_boundary")) with points lt 5 title 'cubic spike, 2^{-15} reading', \
+     line('h15', 'cubic_spike') using (column("dx")):(column("mp_boundary")) with lines lt 5 notitle, \
+     sel('h10', 'quartic_polynomial') using (column("dx")):(column("mp_boundary")) with points lt 1 title 'quartic, printed h', \
+     line('h10', 'quartic_polynomial') using (column("dx")):(column("mp_boundary")) with lines lt 1 notitle, \
+     sel('h15', 'quartic_polynomial') using (column("dx")):(column("mp_boundary")) with points lt 2 title 'quartic, 2^{-15} reading', \
+     line('h15', 'quartic_polynomial') using (column("dx")):(column("mp_boundary")) with lines lt 2 notitle, \
      0 with lines lt 7 lw 1 notitle
 unset multiplot

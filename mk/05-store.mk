@@ -7,7 +7,7 @@ DATAFILES += $(DATA)/store_rates.tsv $(DATA)/store_summary.tsv $(DATA)/store_sco
              $(DATA)/checked_reasons.tsv
 
 # Reasons for differing rates, each with the diagnostic that checks it against the stored data.
-$(DATA)/checked_reasons.tsv: tables/checked_reasons.sh $(STORE_FILES) $(BUILD)/thesis_heat_mode_model \
+$(DATA)/checked_reasons.tsv: tables/checked_reasons.sh tables/store_lib.sh $(STORE_FILES) $(BUILD)/thesis_heat_mode_model \
     $(wildcard tables/published/thesis_table4_*_long.tsv)
 	@mkdir -p $(DATA)
 	bash $< $(STORE) $@ $(BUILD)
@@ -50,9 +50,12 @@ $(DATA)/verdicts.tsv: tables/verdicts.sh tables/items.tsv $(DATA)/store_score.ts
 
 # The documents' figures drawn from the store where it holds their levels (the same gnuplot
 # scripts, datadir = the store): figures/out/store_<figure>.svg.
-STORE_FIGS := thesis_fig4_8 thesis_fig4_11 imoto_fig5
+STORE_FIGS := thesis_fig4_8 thesis_fig4_9 thesis_fig4_10 thesis_fig4_11 thesis_heat_readings imoto_fig5
 FIGFILES += $(foreach f,$(STORE_FIGS),$(FIGOUT)/store_$(f).svg)
 $(FIGOUT)/store_thesis_fig4_8.svg: $(STORE)/thesis_table4_4.tsv tables/published/thesis_table4_4_long.tsv
+$(FIGOUT)/store_thesis_fig4_9.svg: $(STORE)/thesis_table4_5.tsv figures/thesis_heat.gp tables/published/thesis_table4_5_long.tsv
+$(FIGOUT)/store_thesis_fig4_10.svg: $(STORE)/thesis_table4_6.tsv figures/thesis_heat.gp tables/published/thesis_table4_6_long.tsv
+$(FIGOUT)/store_thesis_heat_readings.svg: $(foreach t,4_5 4_6 4_7,$(STORE)/thesis_table$(t).tsv $(STORE)/thesis_table$(t)_h15.tsv)
 $(FIGOUT)/store_thesis_fig4_11.svg: $(STORE)/thesis_table4_7.tsv figures/thesis_heat.gp tables/published/thesis_table4_7_long.tsv
 $(FIGOUT)/store_imoto_fig5.svg: $(STORE)/imoto_fig5_table1.tsv tables/published/imoto_table1.tsv
 $(FIGOUT)/store_%.svg: figures/%.gp figures/style.gp

@@ -36,6 +36,7 @@
 # usage: checked_reasons.sh STORE_DIR OUT BUILD_DIR
 set -euo pipefail
 store=$1 out=$2 build=${3:?usage: checked_reasons.sh STORE_DIR OUT BUILD_DIR}
+source "$(dirname "$0")/store_lib.sh"  # heat_file, heat_label
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 pub=tables/published
 tol=0.15  # the agreement tolerance of rate_table
@@ -108,8 +109,7 @@ tol=0.15  # the agreement tolerance of rate_table
   fi
   for t in 4_5 4_6 4_7; do
     for r in h10 h10_dtexact; do
-      f=$store/thesis_table$t.tsv slice=$r
-      if [ $r = h10_dtexact ]; then f=$store/thesis_table${t}_dtexact.tsv; slice="h10_dtexact (dt = dt0 exactly)"; fi
+      f=$(heat_file "$store" $t $r) slice=$(heat_label $r)
       [ -f "$f" ] || continue
       # The V_i = dx^2 run counts only under the same Δt rule as the data it is set against.
       cellopt=()

@@ -17,7 +17,8 @@
 #   non-convergence reproduced  within tolerance where the published theoretical rate is NA
 #                               (imoto's m = 1 rows: the rate is about 0 or -1, a different claim);
 #   inside seed band            differs for seed 1, but the published rate lies between the
-#                               smallest and largest rate of the stored seeds 1-3 (imoto);
+#                               smallest and largest rate of the stored seeds 1-3 (imoto, and
+#                               the thesis tables where seeds 2 and 3 are stored);
 #   differs, checked reason     a reason in CHECKED (checked_reasons.sh) whose diagnostic passed;
 #   differs, unexplained        none of the above;
 #   not computed / undefined    a level missing (or only other levels than the documents', for a
@@ -50,36 +51,39 @@ slice() {
     !h++ { for (i = 1; i <= NF; i++) c[$i] = i; print; next }
     $c["h_reading"] == r && $c["volumes"] == v' "$1"
 }
-source "$(dirname "$0")/store_lib.sh"  # finite
+source "$(dirname "$0")/store_lib.sh"  # finite, heat_file, heat_label
 
+# Seed 1 is the reproduction; the files …_seed2, …_seed3 (where stored) are other jitter
+# realizations at the rate levels, slices named <slice>_seedN, for the seed band.
 for t in 4_1 4_2 4_3; do
-  f=$store/thesis_table$t.tsv
-  [ -f "$f" ] || continue
   key=weight,function
   [ $t = 4_3 ] && key=weight,operator,function
-  for s in printed_voronoi scaled_voronoi printed_uniform scaled_uniform; do
-    slice "$f" "${s%_*}" "${s#*_}" > "$tmp/slice.tsv"
-    [ "$(grep -vc '^#' "$tmp/slice.tsv")" -gt 1 ] || continue
-    rate "thesis_table$t" "$s" "$tmp/slice.tsv" "$pub/thesis_table${t}_long.tsv" "$key"
+  for v in "" _seed2 _seed3; do
+    f=$store/thesis_table$t$v.tsv
+    [ -f "$f" ] || continue
+    for s in printed_voronoi scaled_voronoi printed_uniform scaled_uniform; do
+      slice "$f" "${s%_*}" "${s#*_}" > "$tmp/slice.tsv"
+      [ "$(grep -vc '^#' "$tmp/slice.tsv")" -gt 1 ] || continue
+      rate "thesis_table$t" "$s$v" "$tmp/slice.tsv" "$pub/thesis_table${t}_long.tsv" "$key"
+    done
   done
 done
-if [ -f "$store/thesis_table4_4.tsv" ]; then
-  rate thesis_table4_4 all "$store/thesis_table4_4.tsv" "$pub/thesis_table4_4_long.tsv" h_rule,weight
-fi
+for v in all seed2 seed3; do
+  f=$store/thesis_table4_4.tsv
+  [ $v = all ] || f=$store/thesis_table4_4_$v.tsv
+  [ -f "$f" ] && rate thesis_table4_4 $v "$f" "$pub/thesis_table4_4_long.tsv" h_rule,weight
+done
 # A (weight, theta) series that is unstable at both rate levels - it blew up (growth beyond
 # the run's limit) or its error exceeds the solution (rel_error > 1) - has no rate; where the
 # document prints an unstable run there (theoretical "unstable"), that is what it reports.
 : > "$tmp/blown.tsv"
 for t in 4_5 4_6 4_7; do
-  for r in h10 h15 h10_dtexact h10_cellvol; do
-    f=$store/thesis_table$t.tsv
-    if [ $r = h15 ]; then f=$store/thesis_table${t}_h15.tsv; fi
-    if [ $r = h10_dtexact ]; then f=$store/thesis_table${t}_dtexact.tsv; fi
-    if [ $r = h10_cellvol ]; then f=$store/thesis_table${t}_cellvol.tsv; fi
+  for r in $heat_variants; do
+    f=$(heat_file "$store" $t $r)
     [ -f "$f" ] || continue
     finite "$f" > "$tmp/finite.tsv"
     rate "thesis_table$t" "$r" "$tmp/finite.tsv" "$pub/thesis_table${t}_long.tsv" weight,theta
-    sl=$r; [ $r = h10_dtexact ] && sl="h10_dtexact (dt = dt0 exactly)"
+    sl=$(heat_label $r)
     awk -F'\t' -v t="thesis_table$t" -v sl="$sl" '
       FNR == 1 { file++ }
       file == 1 && /^# rate_levels = / { split(substr($0, 17), rl, ","); next }
@@ -127,12 +131,13 @@ done
       /^#/ { next }
       !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
       { k = $c[keys[1]]; for (j=2;j<=nk;j++) k = k " " $c[keys[j]];
+        seed = match(s, /seed[0-9]+$/) ? substr(s, RSTART) : ""
         setup = s ~ /uniform/ ? "beyond the document (uniform volumes)" \
               : s ~ /cellvol/ ? "beyond the document (V_i = dx^2)" \
-              : s ~ /^seed/ ? "another jitter realization" : s == "plain" ? "plain grid (no jitter)" : "document"
+              : seed != "" ? "another jitter realization" : s == "plain" ? "plain grid (no jitter)" : "document"
         sl = s ~ /dtexact/ ? s " (dt = dt0 exactly)" : s
         # Table 4.4 prints one rate per weight for both readings of h: one slice per reading.
-        if (t == "thesis_table4_4") { sl = $c["h_rule"]; k = $c["weight"] }
+        if (t == "thesis_table4_4") { sl = $c["h_rule"] (seed != "" ? "_" seed : ""); k = $c["weight"] }
         status = setup == "document" ? $c["status"] : "no published value for this set-up"
         printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", t, sl, setup, k, $c["published"], $c["reproduced"], $c["levels"], status, claims ? $c["theoretical"] : "" }' "$r"
   done > "$tmp/merged.tsv"
@@ -144,12 +149,15 @@ done
                 if ($cc["check"] == "pass") { ok[$cc["table"], $cc["slice"], $cc["key"]] = 1
                   why[$cc["table"], $cc["slice"], $cc["key"]] = $cc["reason"] ": " $cc["evidence"] }
                 next }
-    FILENAME == ARGV[3] { seedslice = ($2 == "all" || $2 ~ /^seed[0-9]+$/) && $1 == "imoto_table1"
-                if (seedslice && num($6)) { k = $1 SUBSEP $4; n[k]++
+    # The band of a (table, slice, key): the rates of its seed-1 slice and of the same slice
+    # of the other seeds (slice_seedN; imoto: seedN beside "all").
+    function base(t, s) { sub(/_?seed[0-9]+$/, "", s); return (s == "" && t == "imoto_table1") ? "all" : s }
+    FILENAME == ARGV[3] { seedslice = $3 == "document" || $3 == "another jitter realization"
+                if (seedslice && num($6)) { k = $1 SUBSEP base($1, $2) SUBSEP $4; n[k]++
                   if (!(k in lo) || $6 + 0 < lo[k]) lo[k] = $6 + 0
                   if (!(k in hi) || $6 + 0 > hi[k]) hi[k] = $6 + 0 }
                 next }
-    { k = $1 SUBSEP $4; band = (n[k] >= 2) ? sprintf("%.2f to %.2f (%d seeds)", lo[k], hi[k], n[k]) : ""
+    { k = $1 SUBSEP base($1, $2) SUBSEP $4; band = (n[k] >= 2) ? sprintf("%.2f to %.2f (%d seeds)", lo[k], hi[k], n[k]) : ""
       v = $8; reason = ""
       if ($3 == "document") {
         if ($8 == "agrees") v = $9 == "NA" ? "non-convergence reproduced" : "agrees"

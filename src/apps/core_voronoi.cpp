@@ -21,10 +21,10 @@
 #include "gpm/error.hpp"
 #include "gpm/geometry/domain.hpp"
 #include "gpm/geometry/voronoi.hpp"
-#include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/profile.hpp"
+#include "gpm/studies/runner.hpp"
 
 using namespace gpm;
 
@@ -70,18 +70,15 @@ Row measure(const Particles& p, const Domain& dom, double dx, bool rss_reset) {
 }
 
 int body(int argc, char** argv) {
-  Args args("core_voronoi",
-            "Voronoi cells of Omega_H for the plain and the jittered grid: area sum, covering\n"
-            "radius r_c vs the grid formula and the documents' claims, time and peak memory.");
-  args.output("out", "", "output TSV file (required)")
-      .opt("levels", "", "comma-separated levels k, dx = 2^-k, 2..13 (default: by profile)")
-      .opt("seeds", kStudy.seeds_option(), "comma-separated jitter seeds (non-negative integers)")
-      .opt("profile", "quick",
-           kStudy.levels.help() + " (level 12 needs ~4 GB)");
-  args.parse(argc, argv);
-  const std::string out = args.required("out");
-  const Profile profile = parse_profile(args.str("profile"));
-  const std::vector<int> levels = levels_option(args, profile, kStudy.levels.quick, kStudy.levels.paper, 2, 13);
+  StudyRunner run("core_voronoi",
+                  "Voronoi cells of Omega_H for the plain and the jittered grid: area sum, covering\n"
+                  "radius r_c vs the grid formula and the documents' claims, time and peak memory.",
+                  kStudy.levels.help() + " (level 12 needs ~4 GB)",
+                  StudyRunner::Kind::whole_table);
+  Args& args = run.args();
+  args.opt("seeds", kStudy.seeds_option(), "comma-separated jitter seeds (non-negative integers)");
+  run.parse(argc, argv);
+  const std::vector<int> levels = run.levels(kStudy.levels.quick, kStudy.levels.paper, 2, 13);
   const std::vector<uint64_t> seeds = args.seeds("seeds");
 
   const Domain dom;
@@ -104,7 +101,6 @@ int body(int argc, char** argv) {
   add_provenance(t);
   t.columns = kStudy.columns;
 
-  const auto t_start = std::chrono::steady_clock::now();
   for (int level : levels) {
     const double dx = std::ldexp(1.0, -level);
     const double g_lo = grid_first(dx, dom) * dx - dom.lo();
@@ -124,10 +120,10 @@ int body(int argc, char** argv) {
       const Particles p = jittered_grid(dx, 0, 0.0, dom);
       grid = measure(p, dom, dx, rss_reset);
     }
-    std::fprintf(stderr,
-                 "[core_voronoi] level %d dx=%.6g N=%zu grid: r_c/dx=%.6f (pred %.6f) "
-                 "%.2fs %.0f MiB\n",
-                 level, dx, grid.n, grid.r_c / dx, pred / dx, grid.time_s, grid.rss);
+    const std::string grid_line =
+        line_printf("level %d dx=%.6g N=%zu grid: r_c/dx=%.6f (pred %.6f) %.2fs %.0f MiB", level,
+                    dx, grid.n, grid.r_c / dx, pred / dx, grid.time_s, grid.rss);
+    std::string seed_lines;
     for (uint64_t seed : seeds) {
       add(seed, "grid", grid);
       Row r;
@@ -136,15 +132,14 @@ int body(int argc, char** argv) {
         r = measure(p, dom, dx, rss_reset);
       }
       add(seed, "jittered", r);
-      std::fprintf(stderr,
-                   "[core_voronoi] level %d seed %llu jittered: r_c/dx=%.6f (in Omega %.6f) "
-                   "area_rel_err=%.2g %.2fs %.0f MiB\n",
-                   level, static_cast<unsigned long long>(seed), r.r_c / dx, r.r_c_omega / dx,
-                   std::abs(r.area_sum - dom.area_H()) / dom.area_H(), r.time_s, r.rss);
+      seed_lines += line_printf("\n[core_voronoi] level %d seed %llu jittered: r_c/dx=%.6f "
+                                "(in Omega %.6f) area_rel_err=%.2g %.2fs %.0f MiB",
+                                level, static_cast<unsigned long long>(seed), r.r_c / dx,
+                                r.r_c_omega / dx,
+                                std::abs(r.area_sum - dom.area_H()) / dom.area_H(), r.time_s,
+                                r.rss);
     }
-    t.set("wall_time_s",
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count());
-    t.save(out);
+    run.save_level(t, 0, grid_line + seed_lines);
   }
   return 0;
 }

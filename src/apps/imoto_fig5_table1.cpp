@@ -25,8 +25,6 @@
 #include "gpm/geometry/domain.hpp"
 #include "gpm/geometry/influence_radius.hpp"
 #include "gpm/geometry/volumes.hpp"
-#include "gpm/io/args.hpp"
-#include "gpm/io/progress.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/kernel/kernel.hpp"
 #include "gpm/operators/fused_errors.hpp"
@@ -34,8 +32,7 @@
 #include "gpm/operators/testfunctions.hpp"
 #include "gpm/operators/truncation.hpp"
 #include "gpm/studies/catalog.hpp"
-#include "gpm/studies/profile.hpp"
-#include "gpm/studies/store.hpp"
+#include "gpm/studies/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
 using namespace gpm;
@@ -88,28 +85,23 @@ double printed_pi3_error(const Particles& p, const std::vector<double>& V, doubl
 }
 
 int body(int argc, char** argv) {
-  Args args("imoto_fig5_table1",
-            "imoto Sec. 5: relative l-inf errors of the interpolant, gradient and Laplacian\n"
-            "(weights Pi1-3, Grad1-3, Lap1-3; m = 1, 3, 5; v = sin(2pi(x+y)); V_i = |Omega_H|/N)\n"
-            "per level, all nine weights in one fused pass per (level, m).  Data of Figure 5\n"
-            "and Table 1.  Finished (level, m) units are cached in --out.");
-  args.output("out", "", "output TSV file (required)")
-      .opt("profile", "quick", kStudy.levels.help())
-      .opt("levels", "", "comma-separated levels k (dx = 2^-k), 3..13; default: by profile")
-      .opt("seed", "1", "jitter seed (non-negative integer)")
-      .opt("jitter", "0.25", "jitter amplitude in units of dx, in [0, 0.5); 0 = the plain grid,\n"
+  StudyRunner run("imoto_fig5_table1",
+                  "imoto Sec. 5: relative l-inf errors of the interpolant, gradient and Laplacian\n"
+                  "(weights Pi1-3, Grad1-3, Lap1-3; m = 1, 3, 5; v = sin(2pi(x+y)); V_i = |Omega_H|/N)\n"
+                  "per level, all nine weights in one fused pass per (level, m).  Data of Figure 5\n"
+                  "and Table 1.  Finished (level, m) units are cached in --out.",
+                  kStudy.levels.help());
+  Args& args = run.args();
+  args.opt("jitter", "0.25", "jitter amplitude in units of dx, in [0, 0.5); 0 = the plain grid,\n"
                              "  whose error is the smoothing part without particle noise")
       .output("printed-out", "", "optional TSV: (Pi3) with the printed constant 5/pi")
       .opt("printed-max-level", "8", "finest level of the --printed-out check")
       .output("cost-out", "", "optional TSV: pairs and time per (level, m) of the paper profile,\n"
                            "  measured where computed, else extrapolated at the measured rate");
-  add_cache_options(args);
-  args.parse(argc, argv);
-  const std::string out = args.required("out");
-  const CacheMode mode = cache_mode(args);
-  const Profile profile = parse_profile(args.str("profile"));
-  const std::vector<int> levels = levels_option(args, profile, kStudy.levels.quick, kStudy.levels.paper, 3, 13);
-  const uint64_t seed = args.seed();
+  run.parse(argc, argv);
+  const Profile profile = run.profile();
+  const std::vector<int> levels = run.levels(kStudy.levels.quick, kStudy.levels.paper);
+  const uint64_t seed = run.seed();
   const double jitter = args.num("jitter");
   if (!(jitter >= 0 && jitter < 0.5))
     throw InputError("--jitter: " + args.str("jitter") + " is not in [0, 0.5)");
@@ -120,7 +112,7 @@ int body(int argc, char** argv) {
                      : "|eta| < " + fmt(jitter) + ", counter-based hash of (seed,i,j), mirrored at the edge";
   const long long printed_max = args.integer("printed-max-level", 3, 13);
 
-  // The data file's parameters: a cached row is reused only if all of these agree.
+  // The data file's parameters: a stored row is reused only if all of these agree.
   const Domain dom;
   std::vector<std::pair<std::string, std::string>> params = {
       {"program", "imoto_fig5_table1"},
@@ -136,19 +128,16 @@ int body(int argc, char** argv) {
       {"Pi3_constant", "6/pi (printed 5/pi does not normalize)"},
       {"time_s_note", "wall time of the whole (level, m) unit: particles, kernel, errors"},
       {"smoothing_part", "interpolant only: (M2/4)*8pi^2*h^2, M2 = int |x|^2 w dx (no particles)"}};
-  LevelCache cache(out, params, kStudy.columns, 2, mode);
+  LevelCache& cache = run.open(params, kStudy.columns, 2);
   cache.table().set("profile", profile_name(profile));
-  if (cache.reused() > 0)
-    std::fprintf(stderr, "[imoto_fig5_table1] %zu rows reused from %s\n", cache.reused(),
-                 out.c_str());
 
   // Work still to do, for the overall ETA (estimated from the pair counts).
+  const std::size_t nw = kStudy.weights.size();
   double total = 0;
   for (int k : levels)
     for (double m : kStudy.orders)
-      if (!cache.has({fmt(k), fmt(m)}, kStudy.weights.size())) total += estimated_pairs(k, m);
-  Progress progress("imoto_fig5_table1", total, "pairs", 0.0);
-  double done = 0;
+      if (!cache.has({fmt(k), fmt(m)}, nw)) total += estimated_pairs(k, m);
+  run.expect(total, "pairs");
   const auto t_start = std::chrono::steady_clock::now();
 
   const std::vector<ErrorRequest> requests = kStudy.requests();
@@ -156,19 +145,20 @@ int body(int argc, char** argv) {
   // The loop over resolutions: one particle set per level, shared by the three m.
   for (int level : levels) {
     bool any = false;
-    for (double m : kStudy.orders) any |= !cache.has({fmt(level), fmt(m)}, kStudy.weights.size());
+    for (double m : kStudy.orders) any |= !cache.has({fmt(level), fmt(m)}, nw);
     if (!any) continue;
     const double dx = std::ldexp(1.0, -level);
     const Particles p = jittered_grid(dx, seed, jitter, dom);
     const std::vector<double> V = uniform_volumes(p, dom);
     for (double m : kStudy.orders) {
-      if (cache.has({fmt(level), fmt(m)}, kStudy.weights.size())) continue;
+      if (cache.has({fmt(level), fmt(m)}, nw)) continue;
+      // All nine weights in one pass over the particle pairs within h_N.
       const auto t0 = std::chrono::steady_clock::now();
       const double h = imoto_h(m, dx);
       const FusedErrors e = fused_errors(p, V, h, requests, {kStudy.function});
       const double secs =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      for (std::size_t r = 0; r < kStudy.weights.size(); ++r) {
+      for (std::size_t r = 0; r < nw; ++r) {
         const ImotoWeight& w = kStudy.weights[r];
         cache.add({fmt(level), fmt(m), w.op_label, w.weight, fmt(dx), fmt(h), fmt(p.size()),
                    fmt(p.count_in_omega()), fmt(e.pairs), fmt(e.errors[r].rel_error),
@@ -176,23 +166,15 @@ int body(int argc, char** argv) {
                                             : std::string("NA"),
                    fmt(secs), fmt(e.kernel_seconds)});
       }
-      cache.table().set(
-          "wall_time_s",
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count());
-      cache.table().set("peak_rss_mib", peak_rss_mib());
-      cache.save();
-      done += estimated_pairs(level, m);
-      std::fprintf(stderr,
-                   "[imoto_fig5_table1] level %d m=%g N=%zu h=%.4g pairs=%.3g %.2fs "
-                   "(%.3g pairs/s)  Pi1 %.3g Grad1 %.3g Lap1 %.3g\n",
-                   level, m, p.size(), h, e.pairs, secs, e.pairs / e.kernel_seconds,
-                   e.errors[0].rel_error, e.errors[3].rel_error, e.errors[6].rel_error);
-      progress.update(done);
+      run.unit_done(estimated_pairs(level, m),
+                    line_printf("level %d m=%g N=%zu h=%.4g pairs=%.3g %.2fs (%.3g pairs/s)  "
+                                "Pi1 %.3g Grad1 %.3g Lap1 %.3g",
+                                level, m, p.size(), h, e.pairs, secs, e.pairs / e.kernel_seconds,
+                                e.errors[0].rel_error, e.errors[3].rel_error,
+                                e.errors[6].rel_error));
     }
   }
-  progress.finish();
-  cache.finish();
-  if (!cache.writes()) return 0;
+  if (!run.finish()) return 0;
 
   // The cost of the paper profile: measured units as they are, the others extrapolated from
   // the estimated pair count at the mean kernel rate (pairs/s) of this run's finest level.

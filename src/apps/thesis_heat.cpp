@@ -1,7 +1,8 @@
 // thesis_heat: the discrete heat problem of the thesis, §4.3 (Figures 4.9–4.11,
 // Tables 4.5–4.7), one setting of the time step per run (--table):
 //
-//   4.5: Δt₀ = 0.0025h², θ = 0, ½, 1, Δx = 2^-5 … 2^-8 (rates from 2^-7, 2^-8);
+//   4.5: Δt₀ = 0.0025h², θ = 0, ½, 1, Δx = 2^-5 … 2^-8 (rates from 2^-7, 2^-8; the run adds
+//        the coarse 2^-4, seconds, so that the quick series has three points);
 //   4.6: Δt₀ = 0.5h²,    θ = 0, ½, 1, Δx = 2^-5 … 2^-9 (rates from 2^-8, 2^-9);
 //   4.7: Δt₀ = 0.5h,     θ = ½, 1,    Δx = 2^-5 … 2^-9.
 // κ = 0.5, T = 0.1, ũ = exp(−2κπ²t) sin(πx) sin(πy), weights quartic / piecewise cubic /
@@ -28,15 +29,13 @@
 #include "gpm/geometry/domain.hpp"
 #include "gpm/geometry/influence_radius.hpp"
 #include "gpm/geometry/volumes.hpp"
-#include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/solvers/heat.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/heat_tables.hpp"
-#include "gpm/studies/profile.hpp"
-#include "gpm/studies/store.hpp"
+#include "gpm/studies/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
 using namespace gpm;
@@ -68,14 +67,13 @@ void write_rates_input(LevelCache& cache, const std::string& path) {
 }
 
 int body(int argc, char** argv) {
-  Args a("thesis_heat",
-         "Discrete heat problem with the theta-method (thesis §4.3): relative errors (4.2)\n"
-         "per weight, theta and level for one time-step setting (Tables 4.5-4.7).");
+  StudyRunner run("thesis_heat",
+                  "Discrete heat problem with the theta-method (thesis §4.3): relative errors (4.2)\n"
+                  "per weight, theta and level for one time-step setting (Tables 4.5-4.7).",
+                  "quick or paper (levels per table: heat_tables.hpp, gpm study --list)");
+  Args& a = run.args();
   a.opt("table", "", "4.5 (dt = 0.0025h^2), 4.6 (dt = 0.5h^2) or 4.7 (dt = 0.5h) (required)")
-      .opt("profile", "quick", "quick or paper (levels per table: heat_tables.hpp, gpm study --list)")
-      .output("out", "", "data file (required)")
       .output("rates-input", "", "data file of the series that never blew up (for rate_table)")
-      .opt("seed", "1", "jitter seed")
       .opt("dt-rule", "fit", "fit: dt = T/K, K = ceil(T/dt0) (the thesis' dt = T/K); exact: dt = dt0,\n"
                              "  K = ceil(T/dt0) steps (last step at K dt0 >= T)")
       .opt("h-rule", "h10", "h10: h = (2.6^4 2^-10 dx)^(1/4) as printed; h15: (2.6^4 2^-15 dx)^(1/4)")
@@ -84,16 +82,9 @@ int body(int argc, char** argv) {
       .opt("tol", "1e-10", "CG relative residual per implicit step")
       .opt("blowup", "1e6", "stop when ||U^k|| > blowup * ||U^0|| (l2(Omega_H))")
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
-      .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB)")
-      .opt("levels", "", "override the profile's levels (comma-separated k)");
-  add_cache_options(a);
-  a.parse(argc, argv);
-  if (a.str("out").empty() || a.str("table").empty())
-    throw InputError("--table and --out are required (see --help)");
-  const CacheMode mode = cache_mode(a);
+      .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB)");
+  run.parse(argc, argv);
   const HeatTable& ts = heat_table(a.str("table"));
-  const Profile prof = parse_profile(a.str("profile"));
-  const uint64_t seed = a.seed();
   const std::string h_rule = a.str("h-rule");
   pde_h(h_rule, 1.0);  // InputError naming the rule unless h10 or h15
   const std::string volumes = a.str("volumes");
@@ -111,27 +102,27 @@ int body(int argc, char** argv) {
   if (!(hs.blowup_factor > 1)) throw InputError("--blowup must exceed 1, got " + a.str("blowup"));
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
-  const std::vector<int> levels = levels_option(a, prof, ts.quick, heat_levels(ts, true, h_rule), 3, 13);
+  const std::vector<int> levels = run.levels(ts.quick, heat_levels(ts, true, h_rule));
+  const std::string rates_input = a.str("rates-input");
 
-  // --- The data file: one row per (weight, θ, level), cached. -----------------------------
-  LevelCache cache(
-      a.str("out"),
-      {{"program", "thesis_heat"}, {"table", ts.table}, {"profile", profile_name(prof)},
-       {"seed", fmt(static_cast<long long>(seed))}, {"kappa", fmt(kHeatKappa)}, {"T", fmt(kHeatT)},
+  // --- The data file: one row per (weight, θ, level). ---------------------------------------
+  LevelCache& cache = run.open(
+      {{"program", "thesis_heat"}, {"table", ts.table}, {"profile", profile_name(run.profile())},
+       {"seed", fmt(static_cast<long long>(run.seed()))}, {"kappa", fmt(kHeatKappa)}, {"T", fmt(kHeatT)},
        {"dt_nominal", ts.dt_rule}, {"steps", hs.fit_T ? "K = ceil(T/dt_nominal), dt = T/K"
                            : "dt = dt_nominal, K = ceil(T/dt_nominal) (last step at K dt >= T)"},
        {"tol", fmt(hs.tol)}, {"blowup", fmt(hs.blowup_factor)},
        {"h_rule", h_rule},
        {"h", pde_h_formula(h_rule)}, {"volumes", volumes_text},
        {"error", "(4.2): max_k ||u-U||_l2(Omega_H) / max_k ||u||_l2(Omega_H)"}},
-      heat_columns(), 3, mode);
+      heat_columns(), 3);
   const Domain dom;
-  double total = 0;
   for (int k : levels) {
+    // The level: particles, volumes, h and the nominal step Δt₀ of the table.
     const double dx = std::ldexp(1.0, -k);
     const double h = pde_h(h_rule, dx);
     const double dt0 = ts.c * std::pow(h, ts.p);
-    const Particles p = jittered_grid(dx, seed);
+    const Particles p = jittered_grid(dx, run.seed());
     const auto V = pde_volumes(volumes, p, dx, dom);
     bool checked = false;
     for (const auto& wname : pde_weights()) {
@@ -143,10 +134,10 @@ int body(int argc, char** argv) {
       const DiscreteLaplacian L(p, V, weight(wname), h, storage, max_bytes);
       for (double th : ts.thetas) {
         if (cache.has({wname, fmt(th), fmt(k)})) continue;
+        // K steps of the θ-method from the exact initial value; the error (4.2) as it runs.
         hs.theta = th;
         hs.dt_nominal = dt0;
         const HeatResult r = solve_heat(p, L, hs);
-        total += r.seconds;
         const std::string na = "NA";
         cache.add({wname, fmt(th), fmt(k), fmt(dx), fmt(h), fmt(p.size()), fmt(L.n_unknowns()),
                    L.assembled() ? "assembled" : "matrix_free", fmt(static_cast<long long>(r.K)), fmt(r.dt),
@@ -155,32 +146,19 @@ int body(int argc, char** argv) {
                    r.blew_up ? fmt(r.growth) : na, r.blew_up ? fmt(r.amplification) : na,
                    fmt(static_cast<long long>(r.steps_done)), fmt(r.mean_cg_iterations), fmt(r.max_rel_residual),
                    fmt(r.seconds_per_step), fmt(r.seconds)});
-        cache.table().set("wall_time_s", total);
-        cache.table().set("peak_rss_mib", peak_rss_mib());  // of the process that computed the last row
-        cache.save();
-        if (cache.writes() && !a.str("rates-input").empty())
-          write_rates_input(cache, a.str("rates-input"));
-        if (r.blew_up)
-          std::fprintf(stderr,
-                       "thesis_heat %s: %-28s theta=%-3g dx=2^-%d h=%.4f K=%ld  BLOW-UP at step "
-                       "%ld: ||U||/||U0|| = %.3g (x%.3g in the last step)  %.2f s\n",
-                       ts.table.c_str(), wname.c_str(), th, k, h, r.K, r.blowup_step, r.growth,
-                       r.amplification, r.seconds);
-        else
-          std::fprintf(stderr,
-                       "thesis_heat %s: %-28s theta=%-3g dx=2^-%d h=%.4f K=%ld err=%.4e "
-                       "CG %.1f it/step  %.3g s/step  %.2f s\n",
-                       ts.table.c_str(), wname.c_str(), th, k, h, r.K, r.rel_error,
-                       r.mean_cg_iterations, r.seconds_per_step, r.seconds);
+        const std::string head = line_printf("%s: %-28s theta=%-3g dx=2^-%d h=%.4f K=%ld ",
+                                             ts.table.c_str(), wname.c_str(), th, k, h, r.K);
+        run.unit_done(0, head + (r.blew_up
+            ? line_printf("BLOW-UP at step %ld: ||U||/||U0|| = %.3g (x%.3g in the last step)  %.2f s",
+                          r.blowup_step, r.growth, r.amplification, r.seconds)
+            : line_printf("err=%.4e CG %.1f it/step  %.3g s/step  %.2f s", r.rel_error,
+                          r.mean_cg_iterations, r.seconds_per_step, r.seconds)));
+        if (cache.writes() && !rates_input.empty()) write_rates_input(cache, rates_input);
       }
     }
   }
-  cache.finish();
-  if (!cache.writes()) return 0;
-  if (!a.str("rates-input").empty()) write_rates_input(cache, a.str("rates-input"));
-  std::printf("thesis_heat %s: wrote %s (%zu rows, %zu reused, %.1f s computed)\n",
-              ts.table.c_str(), a.str("out").c_str(), cache.rows().size(), cache.reused(),
-              total);
+  if (!run.finish()) return 0;
+  if (!rates_input.empty()) write_rates_input(cache, rates_input);
   return 0;
 }
 

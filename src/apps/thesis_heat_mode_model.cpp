@@ -29,6 +29,7 @@
 
 #include "gpm/error.hpp"
 #include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/volumes.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/studies/heat_tables.hpp"
@@ -78,8 +79,8 @@ std::vector<Row> model(const std::string& path) {
     r.measured = d.number(i, d.require_column("rel_error"));
     const double dx = d.number(i, d.require_column("dx"));
     const double n = d.number(i, d.require_column("N"));
-    // δ = |Ω_H|/(N Δx²) − 1, volume_mismatch() of volumes.hpp from the row's N.
-    r.mismatch = cell ? 0.0 : dom.area_H() / (n * dx * dx) - 1;
+    // δ = |Ω_H|/(N Δx²) − 1 from the row's N.
+    r.mismatch = cell ? 0.0 : volume_mismatch(n, dx, dom);
     r.eps = laplacian_smoothing_error(weight(r.weight), kWaveNumber * r.h);
     const double theta = d.number(i, d.require_column("theta"));
     r.predicted = mode_error(theta, kMu * (1 + r.mismatch) * (1 - r.eps), r.dt, r.K);
@@ -106,7 +107,6 @@ int body(int argc, char** argv) {
       .output("rates", "", "TSV: per (weight, theta), rates reproduced, predicted, without the\n"
                            "  mismatch and with V_i = dx^2 (optional)");
   a.parse(argc, argv);
-  if (a.str("table").empty()) throw InputError("--table is required: 4.5, 4.6 or 4.7");
   const HeatTable& t = heat_table(a.str("table"));
   const std::string data = a.required("data"), out = a.required("out");
   const std::vector<Row> rows = model(data);

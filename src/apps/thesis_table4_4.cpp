@@ -20,15 +20,13 @@
 #include "gpm/geometry/domain.hpp"
 #include "gpm/geometry/influence_radius.hpp"
 #include "gpm/geometry/volumes.hpp"
-#include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/operators/testfunctions.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/solvers/poisson_probes.hpp"
 #include "gpm/studies/catalog.hpp"
-#include "gpm/studies/profile.hpp"
-#include "gpm/studies/store.hpp"
+#include "gpm/studies/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
 using namespace gpm;
@@ -38,49 +36,41 @@ namespace {
 // The levels per profile and the weights: poisson_table() and pde_weights() (catalog.hpp).
 
 int body(int argc, char** argv) {
-  Args a("thesis_table4_4",
-         "Discrete Poisson problem (thesis §4.2): relative l-infinity errors per weight,\n"
-         "level and reading of h (Figure 4.8, Table 4.4).");
-  a.opt("profile", "quick", poisson_table().levels.help())
-      .output("out", "", "data file (required)")
-      .opt("seed", "1", "jitter seed")
+  StudyRunner run("thesis_table4_4",
+                  "Discrete Poisson problem (thesis §4.2): relative l-infinity errors per weight,\n"
+                  "level and reading of h (Figure 4.8, Table 4.4).",
+                  poisson_table().levels.help());
+  run.args()
       .opt("tol", "1e-10", "CG relative residual on the symmetric form")
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
-      .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB); above: matrix-free")
-      .opt("levels", "", "override the profile's levels (comma-separated k, dx = 2^-k)");
-  add_cache_options(a);
-  a.parse(argc, argv);
-  a.required("out");
-  const CacheMode mode = cache_mode(a);
-  const Profile prof = parse_profile(a.str("profile"));
-  const uint64_t seed = a.seed();
-  const double tol = a.tolerance("tol");
-  const auto storage = parse_laplacian_storage(a.str("storage"));
-  const double max_bytes = a.positive("max-gb") * 1e9;
-  const std::vector<int> levels = levels_option(a, prof, poisson_table().levels.quick,
-                                                 poisson_table().levels.paper, 3, 13);
+      .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB); above: matrix-free");
+  run.parse(argc, argv);
+  const double tol = run.args().tolerance("tol");
+  const auto storage = parse_laplacian_storage(run.args().str("storage"));
+  const double max_bytes = run.args().positive("max-gb") * 1e9;
+  const std::vector<int> levels = run.levels(poisson_table().levels.quick, poisson_table().levels.paper);
 
-  // --- The data file: one row per (reading of h, weight, level), cached. ------------------
-  LevelCache cache(a.str("out"),
-                   {{"program", "thesis_table4_4"}, {"profile", profile_name(prof)},
-                    {"seed", fmt(static_cast<long long>(seed))}, {"tol", fmt(tol)},
-                    {"function", "sin2pi"}, {"volumes", "uniform |Omega_H|/N"},
-                    {"error", "max_Omega|u-U| / max_Omega|u|"},
-                    {"h10", pde_h_formula("h10")}, {"h15", pde_h_formula("h15")}},
-                   poisson_table().columns, 3, mode);
+  // --- The data file: one row per (reading of h, weight, level). ---------------------------
+  LevelCache& cache = run.open(
+      {{"program", "thesis_table4_4"}, {"profile", profile_name(run.profile())},
+       {"seed", fmt(static_cast<long long>(run.seed()))}, {"tol", fmt(tol)},
+       {"function", "sin2pi"}, {"volumes", "uniform |Omega_H|/N"},
+       {"error", "max_Omega|u-U| / max_Omega|u|"},
+       {"h10", pde_h_formula("h10")}, {"h15", pde_h_formula("h15")}},
+      poisson_table().columns, 3);
   const TestFunction& u = test_function("sin2pi");
   const Domain dom;
-  double total = 0;
   for (int k : levels) {
     const double dx = std::ldexp(1.0, -k);
     // Particles, volumes, data: shared by every weight and reading of h at this level.
-    const Particles p = jittered_grid(dx, seed);
+    const Particles p = jittered_grid(dx, run.seed());
     const auto V = uniform_volumes(p, dom);
     const PoissonData d = poisson_data(p, u);  // f = −Δu, g = u at every particle
     for (const auto& rule : pde_h_rules()) {
       const double h = pde_h(rule, dx);
       for (const auto& wname : pde_weights()) {
         if (cache.has({rule, wname, fmt(k)})) continue;
+        // Assemble −Δ_h (or keep it matrix-free), solve by CG, measure the error in Ω.
         const auto t0 = std::chrono::steady_clock::now();
         const DiscreteLaplacian L(p, V, weight(wname), h, storage, max_bytes);
         const PoissonResult r = solve_poisson(p, L, d.f, d.g, tol);
@@ -89,28 +79,21 @@ int body(int argc, char** argv) {
           if (p.in_omega[i]) err = std::max(err, std::fabs(d.g[i] - r.U[i]));
         const double secs =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        total += secs;
         cache.add({rule, wname, fmt(k), fmt(dx), fmt(h), fmt(p.size()),
                    fmt(L.n_unknowns()), fmt(static_cast<long long>(L.nnz())),
                    L.assembled() ? "assembled" : "matrix_free", fmt(err / d.umax),
                    fmt(r.cg.iterations), fmt(r.cg.rel_residual), fmt(L.assembly_seconds()),
                    fmt(r.solve_seconds), fmt(secs)});
-        cache.table().set("wall_time_s", total);
-        cache.table().set("peak_rss_mib", peak_rss_mib());  // of the process that computed the last row
-        cache.save();
-        std::fprintf(stderr,
-                     "thesis_table4_4: %s %-28s dx=2^-%d h=%.4f N=%zu nnz=%.3g %s  "
-                     "err=%.4e  CG %d it (res %.1e)  %.1f s\n",
-                     rule.c_str(), wname.c_str(), k, h, p.size(), static_cast<double>(L.nnz()),
-                     L.assembled() ? "assembled" : "matrix-free", err / d.umax,
-                     r.cg.iterations, r.cg.rel_residual, secs);
+        run.unit_done(0, line_printf("%s %-28s dx=2^-%d h=%.4f N=%zu nnz=%.3g %s  err=%.4e  "
+                                     "CG %d it (res %.1e)  %.1f s",
+                                     rule.c_str(), wname.c_str(), k, h, p.size(),
+                                     static_cast<double>(L.nnz()),
+                                     L.assembled() ? "assembled" : "matrix-free", err / d.umax,
+                                     r.cg.iterations, r.cg.rel_residual, secs));
       }
     }
   }
-  cache.finish();
-  if (!cache.writes()) return 0;
-  std::printf("thesis_table4_4: wrote %s (%zu rows, %zu reused, %.1f s computed)\n",
-              a.str("out").c_str(), cache.rows().size(), cache.reused(), total);
+  run.finish();
   return 0;
 }
 

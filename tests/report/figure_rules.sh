@@ -3,7 +3,9 @@
 #   * greyscale: no two titled series of one panel share both their dash pattern and their
 #     point symbol (in grey, colour is all that would tell them apart);
 #   * at most MAX titled series per panel (reference overlays - the published rates, the
-#     slope triangles - do not count).
+#     slope triangles - do not count);
+#   * no titled series whose line joins exactly two points (two points always make a straight
+#     line: a convergence plot needs a third to show a trend; two points without a line pass).
 # Geometric diagrams, whose elements differ by shape (cells, discs, edges), are listed in
 # figure_rules_exempt.tsv with the reason.  One line per violation; exit 1 if any.
 #   bash figure_rules.sh FIGURE_DIR [MAX]      (default MAX = 6)
@@ -29,6 +31,9 @@ for f in "${files[@]}"; do
       for (i = 1; i <= ns; i++) {
         if (title[i] == "" || title[i] ~ /^(published|slope)/) continue
         cnt++
+        # With the key drawn, the group also holds the sample symbol of the legend beside its text.
+        if (haspath[i] && npt[i] - (keytext[i] && npt[i] > 0) == 2)
+          printf "%s panel %d: \"%s\" is drawn through two points only\n", file, panel, title[i]
         for (j = 1; j < i; j++)
           if (title[j] != "" && title[j] !~ /^(published|slope)/ && style[i] == style[j])
             printf "%s panel %d: \"%s\" and \"%s\" differ only in colour (%s)\n", file, panel, title[j], title[i], style[i]
@@ -39,12 +44,20 @@ for f in "${files[@]}"; do
     match($0, /<g id="gnuplot_plot_[0-9]+/) {
       k = substr($0, RSTART + 20, RLENGTH - 20) + 0
       if (k == 1) { flush(); panel++ }
-      cur = ++ns; title[cur] = ""; dash[cur] = "solid"; pt[cur] = "none"; got_d[cur] = got_p[cur] = 0 }
+      cur = ++ns; title[cur] = ""; dash[cur] = "solid"; pt[cur] = "none"; got_d[cur] = got_p[cur] = npt[cur] = keytext[cur] = haspath[cur] = 0
+      depth = 0 }
+    # The group of a plot ends where its <g> closes; what follows (axes, labels) is not its own.
+    cur { depth += gsub(/<g[ >]/, "&") - gsub(/<\/g>/, "&"); if (depth < 0) depth = 0 }
     # gnuplot names an untitled plot by its id: not a series of the legend.
     cur && /<title>/ { t = $0; sub(/.*<title>/, "", t); sub(/<\/title>.*/, "", t); title[cur] = t ~ /^gnuplot_plot_/ ? "" : t }
     cur && !got_d[cur] && match($0, /stroke-dasharray=.[^ \/>'"'"']*/) { dash[cur] = substr($0, RSTART + 18, RLENGTH - 18); got_d[cur] = 1 }
     cur && !got_p[cur] && match($0, /#gpPt[0-9]+/) { pt[cur] = substr($0, RSTART + 1, RLENGTH - 1); got_p[cur] = 1 }
+    # Each data point of a series with symbols is one <use> of a point glyph in its group.
+    cur { npt[cur] += gsub(/<use xlink:href=.#gpPt/, "&") }
+    cur && /<text>/ { keytext[cur] = 1 }
+    cur && /<path/ { haspath[cur] = 1 }
     cur { style[cur] = "line " dash[cur] ", point " pt[cur] }
+    cur && depth == 0 { cur = 0 }
     END { flush() }' "$f")
   if [ -n "$out" ]; then echo "$out"; bad=$((bad + $(wc -l <<<"$out"))); fi
 done

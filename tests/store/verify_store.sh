@@ -38,6 +38,11 @@ verify thesis_table4_1.tsv     thesis_table4_1 --levels 5,6,7
 verify thesis_table4_2.tsv     thesis_table4_2 --levels 5,6,7
 verify thesis_table4_3.tsv     thesis_table4_3 --levels 5,6,7
 verify thesis_table4_4.tsv     thesis_table4_4 --levels 5,6
+for s in 2 3; do  # other jitter realizations, at the rate levels (seed bands)
+  verify thesis_table4_1_seed$s.tsv thesis_table4_1 --seed $s --levels 5,6,7
+  verify thesis_table4_3_seed$s.tsv thesis_table4_3 --seed $s --levels 5,6,7
+  verify thesis_table4_4_seed$s.tsv thesis_table4_4 --seed $s --levels 5,6
+done
 for t in 5 6 7; do
   verify thesis_table4_$t.tsv     thesis_heat --table 4.$t --levels 5
   verify thesis_table4_${t}_h15.tsv thesis_heat --table 4.$t --h-rule h15 --levels 5

@@ -13,7 +13,11 @@ std::vector<double> cell_volumes(const Particles& p, double dx) {
 }
 
 double volume_mismatch(const Particles& p, double dx, const Domain& dom) {
-  return dom.area_H() / (static_cast<double>(p.size()) * dx * dx) - 1;
+  return volume_mismatch(static_cast<double>(p.size()), dx, dom);
+}
+
+double volume_mismatch(double n_particles, double dx, const Domain& dom) {
+  return dom.area_H() / (n_particles * dx * dx) - 1;
 }
 
 std::string pde_volumes_description(const std::string& choice) {

@@ -18,6 +18,8 @@ std::vector<double> uniform_volumes(const Particles& p, const Domain& dom = Doma
 std::vector<double> cell_volumes(const Particles& p, double dx);
 // |Ω_H|/(N·Δx²) − 1: +0.79% at Δx = 2^-7, +0.13% at 2^-8, −0.20% at 2^-9 (N = 153², 307², 615²).
 double volume_mismatch(const Particles& p, double dx, const Domain& dom = Domain{});
+// The same from the particle count alone (a data file's N column).
+double volume_mismatch(double n_particles, double dx, const Domain& dom = Domain{});
 
 // The volume choices of the PDE studies, by name: "lattice" = (A.10), "cell" = Δx².
 std::vector<double> pde_volumes(const std::string& choice, const Particles& p, double dx,

@@ -50,10 +50,7 @@ struct FusedMix {
 };
 
 // The thesis' truncation tables: levels, readings and h from thesis_table_specs() (the
-// programs' own definitions); here only the calibration mix each table's pass is timed with.
-std::string thesis_mix(const std::string& program) {  // "thesis_table4_1" -> "thesis4_1"
-  return "thesis" + program.substr(std::string("thesis_table").size());
-}
+// programs' own definitions); each pass is timed with its table's own mix (spec.mix()).
 
 const std::vector<FusedMix>& fused_mixes() {
   static const std::vector<FusedMix> m = [] {
@@ -62,7 +59,7 @@ const std::vector<FusedMix>& fused_mixes() {
     // The thesis tables' mixes are their programs' own requests (thesis_table_specs()).
     std::vector<std::string> cases;
     for (auto& c : thesis_cases()) cases.push_back(c.function);
-    for (auto& t : thesis_table_specs()) v.push_back({thesis_mix(t.program), t.requests, cases});
+    for (auto& t : thesis_table_specs()) v.push_back({t.mix(), t.requests, cases});
     return v;
   }();
   return m;
@@ -336,7 +333,7 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
         for (const char* vol : {"voronoi", "uniform"})
           if (!(paper && std::string(vol) == "uniform" && k > t.paper_uniform_max_level)) {
             add_fused(t.program, h_reading_name(r) + "/" + vol, k,
-                      thesis_h(r, t.c, t.p, dx_of(k)), thesis_mix(t.program));
+                      thesis_h(r, t.c, t.p, dx_of(k)), t.mix());
             if (paper && r == HReading::printed && k > t.paper_printed_max_level)
               out.back().trimmed = "printed reading stops at 2^-" + fmt(t.paper_printed_max_level);
           }

@@ -12,11 +12,8 @@
 #include "gpm/geometry/domain.hpp"
 #include "gpm/geometry/volumes.hpp"
 #include "gpm/geometry/voronoi.hpp"
-#include "gpm/io/args.hpp"
-#include "gpm/io/progress.hpp"
 #include "gpm/io/tsv.hpp"
-#include "gpm/studies/profile.hpp"
-#include "gpm/studies/store.hpp"
+#include "gpm/studies/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
 namespace gpm {
@@ -147,23 +144,17 @@ const std::vector<std::string>& thesis_table_columns() {
 }
 
 int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
-  Args args(spec.program, spec.summary);
-  args.output("out", "", "output TSV file (required)")
-      .output("cost", "", "optional TSV: paper-profile time and peak memory per pass, "
-                       "measured where run, else extrapolated")
-      .opt("profile", "quick", "quick or paper (the thesis' levels)")
+  StudyRunner run(spec.program, spec.summary, "quick or paper (the thesis' levels)");
+  Args& args = run.args();
+  args.output("cost", "", "optional TSV: paper-profile time and peak memory per pass, "
+                          "measured where run, else extrapolated")
       .opt("readings", "", "comma-separated h readings: printed, scaled (default: the table's)")
       .opt("volumes", "voronoi,uniform", "comma-separated volume choices: voronoi, uniform")
-      .opt("max-level", "", "drop levels above this one (e.g. to bound a paper run)")
-      .opt("levels", "", "comma-separated levels k (dx = 2^-k), 3..13, for every reading;\n"
-                         "  default: by profile")
-      .opt("seed", "1", "jitter seed (non-negative integer)");
-  add_cache_options(args);
-  args.parse(argc, argv);
-  const CacheMode mode = cache_mode(args);
-  const std::string out = args.required("out");
-  const Profile profile = parse_profile(args.str("profile"));
-  const uint64_t seed = args.seed();
+      .opt("max-level", "", "drop levels above this one (e.g. to bound a paper run)");
+  run.parse(argc, argv);
+  const std::string& out = run.out();
+  const Profile profile = run.profile();
+  const uint64_t seed = run.seed();
   std::vector<HReading> readings = spec.readings;
   if (!args.str("readings").empty()) {
     readings.clear();
@@ -177,16 +168,16 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
   if (!args.str("max-level").empty()) {
     max_level = static_cast<int>(args.integer("max-level", 2, 13));
   }
-  const std::vector<int> given = args.str("levels").empty()
-                                    ? std::vector<int>{}
-                                    : levels_option(args, profile, {}, {}, 3, 13);
+  // --levels applies to every reading; by default each reading has the profile's own.
+  const bool given = run.levels_given();
+  const std::vector<int> given_levels = given ? run.levels({}, {}) : std::vector<int>{};
   auto levels_of = [&](HReading r) {
     std::vector<int> lv;
-    const auto& src = !given.empty() ? given
+    const auto& src = given ? given_levels
                       : profile == Profile::paper
                           ? spec.paper_levels
                           : (r == HReading::printed ? spec.quick_printed : spec.quick_scaled);
-    const int trim = given.empty() && profile == Profile::paper && r == HReading::printed
+    const int trim = !given && profile == Profile::paper && r == HReading::printed
                          ? spec.paper_printed_max_level
                          : 99;
     for (int k : src)
@@ -211,7 +202,7 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
   std::string wnames;
   for (auto& r : spec.requests) wnames += (wnames.empty() ? "" : ",") + r.weight + ":" + operator_name(r.op);
   params.push_back({"requests", wnames});
-  LevelCache cache(out, params, thesis_table_columns(), 3, mode);
+  LevelCache& cache = run.open(params, thesis_table_columns(), 3);
   const std::size_t rows_per_unit = spec.requests.size() * thesis_cases().size();
   cache.table().set("profile", profile_name(profile));
   cache.table().set("paper_uniform_max_level", fmt(spec.paper_uniform_max_level));
@@ -219,9 +210,6 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
     cache.table().set("paper_printed_max_level", fmt(spec.paper_printed_max_level));
   cache.table().set("time_s", "wall time of the fused pass (all weights, operators, cases)");
   cache.table().set("voronoi_s", "wall time of the Voronoi volumes of the level (0: uniform)");
-  if (cache.reused() > 0)
-    std::fprintf(stderr, "[%s] reusing %zu cached rows from %s\n", spec.program.c_str(),
-                 cache.reused(), out.c_str());
 
   // What is left to do, for the progress line's ETA.
   std::vector<int> all_levels;
@@ -231,7 +219,7 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
   all_levels.erase(std::unique(all_levels.begin(), all_levels.end()), all_levels.end());
   auto todo = [&](HReading r, Volumes v, int k) {
     const auto lv = levels_of(r);
-    if (profile == Profile::paper && v == Volumes::uniform && given.empty() &&
+    if (profile == Profile::paper && v == Volumes::uniform && !given &&
         k > spec.paper_uniform_max_level)
       return false;
     return std::find(lv.begin(), lv.end(), k) != lv.end() &&
@@ -245,12 +233,10 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
           const double dx = std::ldexp(1.0, -k);
           total += predicted_pairs(dx, thesis_h(r, spec.c, spec.p, dx));
         }
-  Progress progress(spec.program, total, "pairs", 0.0);
-  double done = 0;
+  run.expect(total, "pairs");
 
   std::vector<std::string> functions;
   for (auto& c : thesis_cases()) functions.push_back(c.function);
-  const auto t_start = std::chrono::steady_clock::now();
   for (int k : all_levels) {
     const double dx = std::ldexp(1.0, -k);
     std::unique_ptr<LevelData> level;  // built on the first pass of this level that runs
@@ -286,23 +272,15 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
                      fmt(p.size()), fmt(p.count_in_omega()), fmt(e.pairs), fmt(er.rel_error),
                      fmt(pass_s), fmt(vor_s), fmt(rss)});
         }
-        cache.table().set("wall_time_s", seconds_since(t_start));
-        cache.save();
-        done += predicted_pairs(dx, h);
-        std::fprintf(stderr,
-                     "[%s] level %d %s/%s h=%.5g%s N=%zu pairs=%.3g pass %.2fs voronoi %.2fs "
-                     "peak %.0f MiB\n",
-                     spec.program.c_str(), k, h_reading_name(r).c_str(), volumes_name(v).c_str(),
-                     h, h > dom.H ? " (h > H)" : "", p.size(), e.pairs, pass_s, vor_s, rss);
-        progress.update(done);
+        run.unit_done(predicted_pairs(dx, h),
+                      line_printf("level %d %s/%s h=%.5g%s N=%zu pairs=%.3g pass %.2fs "
+                                  "voronoi %.2fs peak %.0f MiB",
+                                  k, h_reading_name(r).c_str(), volumes_name(v).c_str(), h,
+                                  h > dom.H ? " (h > H)" : "", p.size(), e.pairs, pass_s, vor_s,
+                                  rss));
       }
   }
-  progress.finish();
-  cache.finish();
-  if (!cache.writes()) return 0;
-  if (cache.rows().empty()) throw InputError("no level selected (check --max-level)");
-  cache.table().set("wall_time_s", seconds_since(t_start));
-  cache.save();
+  if (!run.finish()) return 0;
 
   // Paper-profile cost: measured passes as they are; the others extrapolated from the finest
   // measured pass of the same reading and volumes (pairs per second, Voronoi seconds and peak
@@ -319,13 +297,16 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
     add_provenance(cost);
     cost.columns = {"h_reading", "volumes", "level", "dx", "h", "N", "pairs", "time_s",
                     "voronoi_s", "peak_rss_mib", "source"};
-    const int cr = 0, cv = 1, cl = 2, cn = 9, cp = 11, ct = 13, cvo = 14, cm = 15;
+    const TsvTable& st = cache.table();
+    const int cr = st.require_column("h_reading"), cv = st.require_column("volumes"),
+              cl = st.require_column("level"), cn = st.require_column("N"),
+              cp = st.require_column("pairs"), ct = st.require_column("time_s"),
+              cvo = st.require_column("voronoi_s"), cm = st.require_column("peak_rss_mib");
     double total_s = 0, peak = 0;
     for (HReading r : readings)
       for (Volumes v : volumes) {
-        // Finest measured pass of (r, v): one row per request × case; take the first.  Rows
-        // by index, so that a malformed cell is named by file, row and column.
-        const TsvTable& st = cache.table();
+        // Finest measured pass of (r, v): one row per request × case; take the first.  Cells
+        // by row and named column, so that a malformed one is named by file, row and column.
         std::map<int, std::size_t> measured;
         for (std::size_t i = 0; i < st.rows.size(); ++i)
           if (st.rows[i][cr] == h_reading_name(r) && st.rows[i][cv] == volumes_name(v))

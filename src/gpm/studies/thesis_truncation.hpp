@@ -24,6 +24,8 @@ const std::vector<ThesisCase>& thesis_cases();
 // One table of the thesis, as its program declares it.
 struct ThesisTableSpec {
   std::string program;                  // e.g. "thesis_table4_1"
+  // The name of the table's weight mix in the calibration and the benchmarks: "thesis4_1".
+  std::string mix() const { return "thesis" + program.substr(std::string("thesis_table").size()); }
   std::string summary;                  // --help text
   std::string table;                    // "Table 4.1 (Section 4.1.1)"
   int c = 3, p = 3;                     // h = (3.1^c · 2^-10 · Δx)^(1/p) as printed

@@ -1,0 +1,98 @@
+// One runner for every study program of the catalog.  It owns what the programs share, so
+// that a study program is left with its method (a loop over levels):
+//   * the common options: --out (required), --profile, --levels, --seed, --verify, --recheck;
+//   * the data file: its parameters and columns, the per-unit cache and the result store's
+//     fingerprints, lock and re-check (LevelCache, store.hpp);
+//   * one line per finished unit, a progress line with an ETA, the wall time and peak memory
+//     in the file's header, and the closing "wrote …" line.
+// No inheritance: a program makes a StudyRunner, adds its own options to args(), and calls
+// open() / unit_done() / finish() around its loop.
+//
+//   StudyRunner run("thesis_table4_4", "Discrete Poisson problem …", poisson_table().levels.help());
+//   run.args().opt("tol", "1e-10", "CG relative residual");
+//   run.parse(argc, argv);
+//   LevelCache& cache = run.open(params, columns, 3);
+//   for (int k : run.levels(quick, paper)) { …; cache.add(row); run.unit_done(work, line); }
+//   if (!run.finish()) return 0;   // verify/recheck mode: nothing more is written
+#pragma once
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gpm/io/args.hpp"
+#include "gpm/io/progress.hpp"
+#include "gpm/studies/profile.hpp"
+#include "gpm/studies/store.hpp"
+
+namespace gpm {
+
+class StudyRunner {
+ public:
+  // How a study keeps its data file.  `units`: one jitter realization (--seed) per run, its
+  // finished units cached in the result store (--verify, --recheck).  `whole_table`: the file
+  // is rewritten after each level (core_voronoi, whose seeds are a list of its own and which
+  // takes seconds); no --seed, no cache options.
+  enum class Kind { units, whole_table };
+  // `profile_help` is the --profile help (the catalog's ProfileLevels::help()).
+  StudyRunner(std::string program, std::string summary, std::string profile_help,
+              Kind kind = Kind::units);
+
+  // The study's own options, declared before parse().
+  Args& args() { return args_; }
+  // Parses the command line and checks the common options (bad input: InputError).
+  void parse(int argc, char** argv);
+
+  const std::string& program() const { return program_; }
+  const std::string& out() const { return out_; }
+  Profile profile() const { return profile_; }
+  uint64_t seed() const { return seed_; }
+  CacheMode mode() const { return mode_; }
+  // Whether --levels was given, and the levels a run uses: --levels, else the profile's.
+  bool levels_given() const { return !args_.str("levels").empty(); }
+  std::vector<int> levels(const std::vector<int>& quick, const std::vector<int>& paper,
+                          int lo = 3, int hi = 13) const;
+
+  // The data file: rows are reused only where `params` agree with its header; `columns` are
+  // the study's own (the store's provenance columns follow); a unit is keyed by the first
+  // `key_columns` of a row.  Says how many rows it reuses.
+  LevelCache& open(std::vector<std::pair<std::string, std::string>> params,
+                   std::vector<std::string> columns, int key_columns);
+  LevelCache& cache() { return *cache_; }
+
+  // The work still to do (pairs, steps, …: any additive measure), for the ETA.
+  void expect(double work, const char* unit);
+  // After the rows of one unit were added: wall time and peak memory into the header, the
+  // file written (atomically), `line` printed, the progress advanced by `work`.
+  void unit_done(double work, const std::string& line);
+  // After the last unit.  Verify/recheck mode: compares (throws StoreMismatch on a difference)
+  // and returns false: nothing else is to be written.  Run mode: the closing line; true.
+  bool finish();
+
+  // For a study without a unit cache (one table rewritten after each level): wall time and
+  // peak memory into `t`'s header, `t` written atomically to out(), `line` printed.
+  void save_level(TsvTable& t, double work, const std::string& line);
+
+  // Seconds since parse().
+  double elapsed_s() const;
+
+ private:
+  std::string program_;
+  Args args_;
+  std::string out_;
+  Profile profile_ = Profile::quick;
+  Kind kind_;
+  uint64_t seed_ = 1;
+  CacheMode mode_ = CacheMode::run;
+  std::unique_ptr<LevelCache> cache_;
+  std::unique_ptr<Progress> progress_;
+  double done_ = 0;
+  std::chrono::steady_clock::time_point start_;
+};
+
+// printf into a std::string: the one-line report of a finished unit.
+std::string line_printf(const char* format, ...) __attribute__((format(printf, 1, 2)));
+
+}  // namespace gpm
