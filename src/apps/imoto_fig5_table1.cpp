@@ -84,6 +84,86 @@ double printed_pi3_error(const Particles& p, const std::vector<double>& V, doubl
   return err / ref;
 }
 
+// The cost of the paper profile (--cost-out): the measured units as they are, the others
+// extrapolated from the estimated pair count at the mean kernel rate of the finest level run.
+void write_paper_cost(const TsvTable& st, Profile profile, double wall_s, const std::string& path) {
+  // (level, m) → row of the store; a malformed cell is named by file, row and column.
+  std::map<std::pair<int, std::string>, std::size_t> measured;
+  double rate = 0;
+  int finest = -1;
+  const int c_pairs = st.require_column("pairs"), c_kernel = st.require_column("kernel_s"),
+            c_time = st.require_column("time_s"), c_level = st.require_column("level");
+  for (std::size_t i = 0; i < st.rows.size(); ++i) {
+    const int lv = static_cast<int>(st.integer(i, c_level));
+    measured[{lv, st.text(i, "m")}] = i;
+    if (lv > finest) finest = lv, rate = 0;
+  }
+  double pairs_f = 0, secs_f = 0;
+  for (auto& [key, i] : measured)
+    if (key.first == finest) pairs_f += st.number(i, c_pairs), secs_f += st.number(i, c_kernel);
+  rate = secs_f > 0 ? pairs_f / secs_f : 0;
+  TsvTable t;
+  t.set("program", "imoto_fig5_table1 --cost-out");
+  t.set("profile", profile_name(profile));
+  t.set("rate_pairs_per_s", rate);
+  t.set("rate_note", "mean kernel rate (nine weights, one field) at the finest computed level " +
+                         std::to_string(finest));
+  add_provenance(t);
+  t.columns = {"level", "m", "pairs", "time_s", "source"};
+  double total = 0;
+  for (int level : kStudy.levels.paper)
+    for (double m : kStudy.orders) {
+      auto it = measured.find({level, fmt(m)});
+      double pairs = 0, secs = 0;
+      std::string src = "measured";
+      if (it != measured.end()) {
+        pairs = st.number(it->second, c_pairs);
+        secs = st.number(it->second, c_time);
+      } else {
+        pairs = estimated_pairs(level, m);
+        secs = rate > 0 ? pairs / rate : NAN;
+        src = "extrapolated";
+      }
+      total += secs;
+      t.add_row({fmt(level), fmt(m), fmt(pairs), fmt(secs), src});
+    }
+  t.set("paper_profile_total_s", total);
+  t.set("wall_time_s", wall_s);
+  t.save(path);
+}
+
+// The (Π3) constant check (--printed-out): the printed 5/π against the normalizing 6/π on the
+// coarse levels, for the same particles as the study.
+void write_printed_pi3(const std::vector<std::pair<std::string, std::string>>& params,
+                       Profile profile, const std::vector<int>& levels, long long printed_max,
+                       uint64_t seed, double jitter, const Domain& dom, const std::string& path) {
+  TsvTable t;
+  t.set("program", "imoto_fig5_table1 --printed-out");
+  for (auto& [k, v] : params) t.set(k, v);
+  t.set("profile", profile_name(profile));
+  t.set("note", "rel. l-inf error of Pi_h v with (Pi3) at the printed constant 5/pi and at "
+                "the normalizing 6/pi");
+  add_provenance(t);
+  t.columns = {"level", "m", "h", "printed_5_over_pi", "corrected_6_over_pi"};
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int level : levels) {
+    if (level > printed_max) continue;
+    const double dx = std::ldexp(1.0, -level);
+    const Particles p = jittered_grid(dx, seed, jitter, dom);
+    const std::vector<double> V = uniform_volumes(p, dom);
+    for (double m : kStudy.orders) {
+      const double h = imoto_h(m, dx);
+      const double printed = printed_pi3_error(p, V, h);
+      const double fixed = fused_errors(p, V, h, {{"Pi3", Operator::interp}}, {kStudy.function},
+                                        false).errors[0].rel_error;
+      t.add_row({fmt(level), fmt(m), fmt(h), fmt(printed), fmt(fixed)});
+    }
+  }
+  t.set("wall_time_s",
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  t.save(path);
+}
+
 int body(int argc, char** argv) {
   StudyRunner run("imoto_fig5_table1",
                   "imoto Sec. 5: relative l-inf errors of the interpolant, gradient and Laplacian\n"
@@ -138,20 +218,20 @@ int body(int argc, char** argv) {
     for (double m : kStudy.orders)
       if (!cache.has({fmt(k), fmt(m)}, nw)) total += estimated_pairs(k, m);
   run.expect(total, "pairs");
-  const auto t_start = std::chrono::steady_clock::now();
 
   const std::vector<ErrorRequest> requests = kStudy.requests();
 
   // The loop over resolutions: one particle set per level, shared by the three m.
   for (int level : levels) {
-    bool any = false;
-    for (double m : kStudy.orders) any |= !cache.has({fmt(level), fmt(m)}, nw);
-    if (!any) continue;
+    // The orders m of this level still to do, and of those the ones this process computes.
+    std::vector<double> orders;
+    for (double m : kStudy.orders)
+      if (!cache.has({fmt(level), fmt(m)}, nw) && run.claim()) orders.push_back(m);
+    if (orders.empty()) continue;
     const double dx = std::ldexp(1.0, -level);
     const Particles p = jittered_grid(dx, seed, jitter, dom);
     const std::vector<double> V = uniform_volumes(p, dom);
-    for (double m : kStudy.orders) {
-      if (cache.has({fmt(level), fmt(m)}, nw)) continue;
+    for (double m : orders) {
       // All nine weights in one pass over the particle pairs within h_N.
       const auto t0 = std::chrono::steady_clock::now();
       const double h = imoto_h(m, dx);
@@ -160,7 +240,7 @@ int body(int argc, char** argv) {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       for (std::size_t r = 0; r < nw; ++r) {
         const ImotoWeight& w = kStudy.weights[r];
-        cache.add({fmt(level), fmt(m), w.op_label, w.weight, fmt(dx), fmt(h), fmt(p.size()),
+        run.add({fmt(level), fmt(m), w.op_label, w.weight, fmt(dx), fmt(h), fmt(p.size()),
                    fmt(p.count_in_omega()), fmt(e.pairs), fmt(e.errors[r].rel_error),
                    w.op == Operator::interp ? fmt(interp_smoothing_error(w.weight, h))
                                             : std::string("NA"),
@@ -176,83 +256,12 @@ int body(int argc, char** argv) {
   }
   if (!run.finish()) return 0;
 
-  // The cost of the paper profile: measured units as they are, the others extrapolated from
-  // the estimated pair count at the mean kernel rate (pairs/s) of this run's finest level.
-  if (!args.str("cost-out").empty()) {
-    // (level, m) → row of the store; a malformed cell is named by file, row and column.
-    std::map<std::pair<int, std::string>, std::size_t> measured;
-    double rate = 0;
-    int finest = -1;
-    const TsvTable& st = cache.table();
-    const int c_pairs = st.require_column("pairs"), c_kernel = st.require_column("kernel_s"),
-              c_time = st.require_column("time_s"), c_level = st.require_column("level");
-    for (std::size_t i = 0; i < st.rows.size(); ++i) {
-      const int lv = static_cast<int>(st.integer(i, c_level));
-      measured[{lv, st.text(i, "m")}] = i;
-      if (lv > finest) finest = lv, rate = 0;
-    }
-    double pairs_f = 0, secs_f = 0;
-    for (auto& [key, i] : measured)
-      if (key.first == finest) pairs_f += st.number(i, c_pairs), secs_f += st.number(i, c_kernel);
-    rate = secs_f > 0 ? pairs_f / secs_f : 0;
-    TsvTable t;
-    t.set("program", "imoto_fig5_table1 --cost-out");
-    t.set("profile", profile_name(profile));
-    t.set("rate_pairs_per_s", rate);
-    t.set("rate_note", "mean kernel rate (nine weights, one field) at the finest computed level " +
-                           std::to_string(finest));
-    add_provenance(t);
-    t.columns = {"level", "m", "pairs", "time_s", "source"};
-    double total = 0;
-    for (int level : kStudy.levels.paper)
-      for (double m : kStudy.orders) {
-        auto it = measured.find({level, fmt(m)});
-        double pairs = 0, secs = 0;
-        std::string src = "measured";
-        if (it != measured.end()) {
-          pairs = st.number(it->second, c_pairs);
-          secs = st.number(it->second, c_time);
-        } else {
-          pairs = estimated_pairs(level, m);
-          secs = rate > 0 ? pairs / rate : NAN;
-          src = "extrapolated";
-        }
-        total += secs;
-        t.add_row({fmt(level), fmt(m), fmt(pairs), fmt(secs), src});
-      }
-    t.set("paper_profile_total_s", total);
-    t.set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count());
-    t.save(args.str("cost-out"));
-  }
-
-  // The (Π3) constant check: printed 5/π against the corrected 6/π on coarse levels.
-  if (!args.str("printed-out").empty()) {
-    TsvTable t;
-    t.set("program", "imoto_fig5_table1 --printed-out");
-    for (auto& [k, v] : params) t.set(k, v);
-    t.set("profile", profile_name(profile));
-    t.set("note", "rel. l-inf error of Pi_h v with (Pi3) at the printed constant 5/pi and at "
-                  "the normalizing 6/pi");
-    add_provenance(t);
-    t.columns = {"level", "m", "h", "printed_5_over_pi", "corrected_6_over_pi"};
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int level : levels) {
-      if (level > printed_max) continue;
-      const double dx = std::ldexp(1.0, -level);
-      const Particles p = jittered_grid(dx, seed, jitter, dom);
-      const std::vector<double> V = uniform_volumes(p, dom);
-      for (double m : kStudy.orders) {
-        const double h = imoto_h(m, dx);
-        const double printed = printed_pi3_error(p, V, h);
-        const double fixed = fused_errors(p, V, h, {{"Pi3", Operator::interp}}, {kStudy.function},
-                                          false).errors[0].rel_error;
-        t.add_row({fmt(level), fmt(m), fmt(h), fmt(printed), fmt(fixed)});
-      }
-    }
-    t.set("wall_time_s",
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    t.save(args.str("printed-out"));
-  }
+  // Side reports: the paper profile's cost, and the printed (Π3) constant.
+  if (!args.str("cost-out").empty())
+    write_paper_cost(cache.table(), profile, run.elapsed_s(), args.str("cost-out"));
+  if (!args.str("printed-out").empty())
+    write_printed_pi3(params, profile, levels, printed_max, seed, jitter, dom,
+                      args.str("printed-out"));
   return 0;
 }
 

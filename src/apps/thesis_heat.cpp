@@ -126,20 +126,21 @@ int body(int argc, char** argv) {
     const auto V = pde_volumes(volumes, p, dx, dom);
     bool checked = false;
     for (const auto& wname : pde_weights()) {
-      bool todo = false;
-      for (double th : ts.thetas) todo = todo || !cache.has({wname, fmt(th), fmt(k)});
-      if (!todo) continue;
+      // The θ of this weight still to do, and of those the ones this process computes.
+      std::vector<double> thetas;
+      for (double th : ts.thetas)
+        if (!cache.has({wname, fmt(th), fmt(k)}) && run.claim()) thetas.push_back(th);
+      if (thetas.empty()) continue;
       if (!checked) require_h_connectivity(p, h), checked = true;
       // One Laplacian per (level, weight), reused by every θ and every step.
       const DiscreteLaplacian L(p, V, weight(wname), h, storage, max_bytes);
-      for (double th : ts.thetas) {
-        if (cache.has({wname, fmt(th), fmt(k)})) continue;
+      for (double th : thetas) {
         // K steps of the θ-method from the exact initial value; the error (4.2) as it runs.
         hs.theta = th;
         hs.dt_nominal = dt0;
         const HeatResult r = solve_heat(p, L, hs);
         const std::string na = "NA";
-        cache.add({wname, fmt(th), fmt(k), fmt(dx), fmt(h), fmt(p.size()), fmt(L.n_unknowns()),
+        run.add({wname, fmt(th), fmt(k), fmt(dx), fmt(h), fmt(p.size()), fmt(L.n_unknowns()),
                    L.assembled() ? "assembled" : "matrix_free", fmt(static_cast<long long>(r.K)), fmt(r.dt),
                    r.blew_up ? na : fmt(r.rel_error), r.blew_up ? na : fmt(r.rel_error_max),
                    fmt(r.growth_max), r.blew_up ? "yes" : "no", r.blew_up ? fmt(static_cast<long long>(r.blowup_step)) : na,

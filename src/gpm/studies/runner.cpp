@@ -1,7 +1,14 @@
 #include "gpm/studies/runner.hpp"
 
+#include <algorithm>
 #include <cstdarg>
 #include <cstdio>
+#include <exception>
+#include <sstream>
+
+#ifdef GPM_MPI
+#include <mpi.h>
+#endif
 
 #include "gpm/error.hpp"
 #include "gpm/io/tsv.hpp"
@@ -11,10 +18,32 @@ namespace gpm {
 StudyRunner::StudyRunner(std::string program, std::string summary, std::string profile_help,
                          Kind kind)
     : program_(std::move(program)), args_(program_, std::move(summary)), kind_(kind) {
+#ifdef GPM_MPI
+  int started = 0;
+  MPI_Initialized(&started);
+  if (!started) {
+    MPI_Init(nullptr, nullptr);
+    mpi_started_ = true;
+  }
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+#endif
   args_.output("out", "", "data file (required)")
       .opt("profile", "quick", profile_help)
       .opt("levels", "", "comma-separated levels k (dx = 2^-k); default: the profile's");
   if (kind_ == Kind::units) args_.opt("seed", "1", "jitter seed (non-negative integer)");
+}
+
+StudyRunner::~StudyRunner() {
+#ifdef GPM_MPI
+  if (size_ > 1 && std::uncaught_exceptions() > 0) {
+    std::fprintf(stderr, "[%s] rank %d of %d failed (its error follows); stopping the others\n",
+                 program_.c_str(), rank_, size_);
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, 3);
+  }
+  if (mpi_started_) MPI_Finalize();
+#endif
 }
 
 void StudyRunner::parse(int argc, char** argv) {
@@ -26,6 +55,9 @@ void StudyRunner::parse(int argc, char** argv) {
     mode_ = cache_mode(args_);
     seed_ = args_.seed();
   }
+  if (size_ > 1 && mode_ != CacheMode::run)
+    throw InputError("--verify and --recheck run on one process, not on " +
+                     std::to_string(size_) + " ranks");
   start_ = std::chrono::steady_clock::now();
 }
 
@@ -37,8 +69,8 @@ std::vector<int> StudyRunner::levels(const std::vector<int>& quick,
 LevelCache& StudyRunner::open(std::vector<std::pair<std::string, std::string>> params,
                               std::vector<std::string> columns, int key_columns) {
   cache_ = std::make_unique<LevelCache>(out_, std::move(params), std::move(columns),
-                                        key_columns, mode_);
-  if (cache_->reused() > 0)
+                                        key_columns, mode_, rank_ == 0);
+  if (cache_->reused() > 0 && rank_ == 0)
     std::fprintf(stderr, "[%s] reusing %zu stored rows of %s\n", program_.c_str(),
                  cache_->reused(), out_.c_str());
   return *cache_;
@@ -48,11 +80,28 @@ void StudyRunner::expect(double work, const char* unit) {
   progress_ = std::make_unique<Progress>(program_, work, unit, 0.0);
 }
 
+bool StudyRunner::claim() {
+  const long unit = next_unit_++;
+  return unit % size_ == rank_;
+}
+
+void StudyRunner::add(std::vector<std::string> row) {
+  if (size_ == 1)
+    cache_->add(std::move(row));
+  else
+    mine_.emplace_back(next_unit_ - 1, std::move(row));
+}
+
 void StudyRunner::unit_done(double work, const std::string& line) {
-  cache_->table().set("wall_time_s", elapsed_s());
-  cache_->table().set("peak_rss_mib", peak_rss_mib());
-  cache_->save();
-  std::fprintf(stderr, "[%s] %s\n", program_.c_str(), line.c_str());
+  if (size_ == 1) {  // several ranks: rank 0 writes everything in finish()
+    cache_->table().set("wall_time_s", elapsed_s());
+    cache_->table().set("peak_rss_mib", peak_rss_mib());
+    cache_->save();
+  }
+  if (size_ > 1)
+    std::fprintf(stderr, "[%s rank %d] %s\n", program_.c_str(), rank_, line.c_str());
+  else
+    std::fprintf(stderr, "[%s] %s\n", program_.c_str(), line.c_str());
   done_ += work;
   if (progress_) progress_->update(done_);
 }
@@ -60,15 +109,62 @@ void StudyRunner::unit_done(double work, const std::string& line) {
 void StudyRunner::save_level(TsvTable& t, double work, const std::string& line) {
   t.set("wall_time_s", elapsed_s());
   t.set("peak_rss_mib", peak_rss_mib());
-  t.save(out_);
+  if (rank_ == 0) t.save(out_);  // (such a study is not divided: every rank runs it all)
   std::fprintf(stderr, "[%s] %s\n", program_.c_str(), line.c_str());
   done_ += work;
   if (progress_) progress_->update(done_);
 }
 
+// Every rank's rows to rank 0, which adds them in the order of their units (the order one
+// process computes them in) and writes the file.  Rows travel as text: the cells are the
+// file's own, so rank 0 writes what the computing rank formatted.
+void StudyRunner::gather_rows() {
+#ifdef GPM_MPI
+  std::string text;
+  for (auto& [unit, row] : mine_) {
+    text += std::to_string(unit);
+    for (auto& cell : row) text += "\t" + cell;
+    text += "\n";
+  }
+  int len = static_cast<int>(text.size());
+  std::vector<int> lens(size_), offs(size_, 0);
+  MPI_Gather(&len, 1, MPI_INT, lens.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  std::string all;
+  if (rank_ == 0) {
+    for (int r = 1; r < size_; ++r) offs[r] = offs[r - 1] + lens[r - 1];
+    all.resize(static_cast<std::size_t>(offs[size_ - 1] + lens[size_ - 1]));
+  }
+  MPI_Gatherv(text.data(), len, MPI_CHAR, all.data(), lens.data(), offs.data(), MPI_CHAR, 0,
+              MPI_COMM_WORLD);
+  if (rank_ != 0) return;
+  std::vector<std::pair<long, std::vector<std::string>>> rows;
+  std::istringstream in(all);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::istringstream ls(line);
+    for (std::string c; std::getline(ls, c, '\t');) cells.push_back(c);
+    const long unit = std::stol(cells.front());
+    cells.erase(cells.begin());
+    rows.emplace_back(unit, std::move(cells));
+  }
+  // Within a unit the rows keep their order (stable sort): one rank made them all.
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (auto& [unit, row] : rows) cache_->add(std::move(row));
+  cache_->table().set("wall_time_s", elapsed_s());
+  cache_->table().set("peak_rss_mib", peak_rss_mib());
+  cache_->table().set("mpi_ranks", std::to_string(size_));
+  cache_->save();
+#endif
+}
+
 bool StudyRunner::finish() {
   if (progress_) progress_->finish();
   if (!cache_) return true;
+  if (size_ > 1) {
+    gather_rows();
+    if (rank_ != 0) return false;  // rank 0 alone writes (the file and what derives from it)
+  }
   cache_->finish();
   if (!cache_->writes()) return false;
   if (cache_->rows().empty()) throw InputError("no level selected: nothing to write to " + out_);

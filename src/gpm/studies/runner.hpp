@@ -6,7 +6,14 @@
 //   * one line per finished unit, a progress line with an ETA, the wall time and peak memory
 //     in the file's header, and the closing "wrote …" line.
 // No inheritance: a program makes a StudyRunner, adds its own options to args(), and calls
-// open() / unit_done() / finish() around its loop.
+// open() / claim() / add() / unit_done() / finish() around its loop.
+//
+// On a cluster (built with -DGPM_MPI=ON, started by mpirun): every rank runs the same loop;
+// claim() deals the units still to do round-robin over the ranks in loop order, each rank
+// computes its own, and finish() gathers every row to rank 0, which adds them in loop order
+// and alone writes the data file (holding its lock).  The file is then the one a single
+// process writes, timing columns aside.  An MPI run writes at its end only (a job should be
+// sized to its time limit: one table per job, see bench/slurm_paper.sh).
 //
 //   StudyRunner run("thesis_table4_4", "Discrete Poisson problem …", poisson_table().levels.help());
 //   run.args().opt("tol", "1e-10", "CG relative residual");
@@ -39,6 +46,10 @@ class StudyRunner {
   // `profile_help` is the --profile help (the catalog's ProfileLevels::help()).
   StudyRunner(std::string program, std::string summary, std::string profile_help,
               Kind kind = Kind::units);
+  // Several ranks: a rank leaving by an exception stops the others (they would wait forever).
+  ~StudyRunner();
+  StudyRunner(const StudyRunner&) = delete;
+  StudyRunner& operator=(const StudyRunner&) = delete;
 
   // The study's own options, declared before parse().
   Args& args() { return args_; }
@@ -61,6 +72,15 @@ class StudyRunner {
   LevelCache& open(std::vector<std::pair<std::string, std::string>> params,
                    std::vector<std::string> columns, int key_columns);
   LevelCache& cache() { return *cache_; }
+
+  // Whether this process computes the next unit still to do.  Called, in loop order, for every
+  // unit not in the cache (the same sequence on every rank); always true on one process.
+  bool claim();
+  // One row of a unit this process computed (LevelCache::add on one process; kept for the
+  // gathering in finish() on several).
+  void add(std::vector<std::string> row);
+  int rank() const { return rank_; }
+  int ranks() const { return size_; }
 
   // The work still to do (pairs, steps, …: any additive measure), for the ETA.
   void expect(double work, const char* unit);
@@ -90,6 +110,12 @@ class StudyRunner {
   std::unique_ptr<Progress> progress_;
   double done_ = 0;
   std::chrono::steady_clock::time_point start_;
+  int rank_ = 0, size_ = 1;
+  bool mpi_started_ = false;  // this runner initialized MPI (and finalizes it)
+  long next_unit_ = 0;        // claim() counter
+  // Rows computed here while several ranks run: (unit number, row).
+  std::vector<std::pair<long, std::vector<std::string>>> mine_;
+  void gather_rows();
 };
 
 // printf into a std::string: the one-line report of a finished unit.

@@ -79,18 +79,20 @@ double cell_difference(const std::string& a, const std::string& b, bool residual
 }  // namespace
 
 LevelCache::LevelCache(std::string path, std::vector<std::pair<std::string, std::string>> params,
-                       std::vector<std::string> columns, int key_columns, CacheMode mode)
+                       std::vector<std::string> columns, int key_columns, CacheMode mode,
+                       bool writer)
     : path_(std::move(path)),
       key_columns_(key_columns),
       mode_(mode),
       code_(code_fingerprint()),
-      made_on_(machine_summary()) {
+      made_on_(machine_summary()),
+      writer_(writer) {
   if (path_.empty()) throw InputError("--out PATH is required (see --help)");
   std::error_code ec;
   const auto st = fs::symlink_status(path_, ec);
   if (fs::exists(st) && !fs::is_regular_file(st))
     throw InputError("--out " + path_ + " exists and is not a regular file");
-  if (mode_ != CacheMode::verify) {
+  if (mode_ != CacheMode::verify && writer_) {
     // The writer's lock: a second process on the same file is refused, not raced.
     const std::string lock = path_ + ".lock";
     if (fs::path(path_).has_parent_path()) fs::create_directories(fs::path(path_).parent_path());
@@ -206,7 +208,7 @@ void LevelCache::add(std::vector<std::string> row) {
 }
 
 void LevelCache::save() {
-  if (mode_ != CacheMode::run) return;
+  if (mode_ != CacheMode::run || !writer_) return;
   add_provenance(table_);
   table_.save(path_);
 }

@@ -54,8 +54,11 @@ class LevelCache {
   // `columns` are the study's own; the provenance columns are appended.  An existing file is
   // read if its `# key = value` header agrees with `params` on every key; otherwise its rows
   // are not reused (and, in run mode, are replaced at the first save).
+  // `writer` false: a reader only (the ranks of an MPI run other than rank 0): no lock, and
+  // save() writes nothing.
   LevelCache(std::string path, std::vector<std::pair<std::string, std::string>> params,
-             std::vector<std::string> columns, int key_columns, CacheMode mode = CacheMode::run);
+             std::vector<std::string> columns, int key_columns, CacheMode mode = CacheMode::run,
+             bool writer = true);
   ~LevelCache();
   LevelCache(const LevelCache&) = delete;
   LevelCache& operator=(const LevelCache&) = delete;
@@ -75,7 +78,7 @@ class LevelCache {
   // a difference.  Run mode: nothing.  Call once, after the last unit.
   void finish();
   // Whether this run writes the data file (and so may write the outputs derived from it).
-  bool writes() const { return mode_ == CacheMode::run; }
+  bool writes() const { return mode_ == CacheMode::run && writer_; }
 
   TsvTable& table() { return table_; }
   const std::vector<std::vector<std::string>>& rows() const { return table_.rows; }
@@ -97,6 +100,7 @@ class LevelCache {
   std::set<std::vector<std::string>> started_;  // units added by this run
   std::vector<std::vector<std::string>> fresh_;  // verify/recheck: the recomputed rows
   bool params_match_ = false;
+  bool writer_ = true;
 };
 
 }  // namespace gpm

@@ -1,0 +1,22 @@
+#!/bin/bash
+# The paper profile on a Slurm cluster: one array task per catalog study (gpm study --list),
+# each on RANKS MPI ranks; the rows land in the result store results/paper/ (rank 0 writes,
+# holding the file's lock), where `make report` reads them.  Build once with MPI first:
+#   cmake -S . -B build-mpi -DGPM_MPI=ON && cmake --build build-mpi -j
+#   sbatch --array=0-7 bench/slurm_paper.sh            (8 studies; core_voronoi runs alone)
+# Size the time limit from `make plan PROFILE=paper` (it prints the time on P processes): an MPI
+# run writes its file when it ends, so a task cut by its limit keeps only the units of earlier
+# runs.  A finished study's rerun computes nothing (its units are in the store).
+#SBATCH --job-name=gpm-paper
+#SBATCH --ntasks=8
+#SBATCH --cpus-per-task=4
+#SBATCH --time=04:00:00
+#SBATCH --output=gpm-paper-%A_%a.log
+set -euo pipefail
+BUILD=${BUILD:-build-mpi}
+studies=(imoto_fig5_table1 thesis_table4_1 thesis_table4_2 thesis_table4_3 thesis_table4_4
+         thesis_table4_5 thesis_table4_6 thesis_table4_7)
+name=${studies[${SLURM_ARRAY_TASK_ID:-0}]}
+export OMP_NUM_THREADS=${SLURM_CPUS_PER_TASK:-1}
+echo "study $name on ${SLURM_NTASKS:-1} ranks x $OMP_NUM_THREADS threads, $(date -u +%FT%TZ)"
+srun "$BUILD/gpm" study "$name" --profile paper --out "results/paper/$name.tsv"
