@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cstdarg>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <stdexcept>
 #include <sstream>
 
 #ifdef GPM_MPI
@@ -15,6 +17,20 @@
 
 namespace gpm {
 
+#ifdef GPM_MPI
+namespace {
+// MPI is started once per process, by its first runner, and finished at exit, unless a rank
+// failed: then MPI_Finalize would wait for the others, which wait for its rows; it exits
+// non-zero instead, upon which mpirun stops the rest.
+bool g_rank_failed = false;
+void finalize_mpi() {
+  int done = 0;
+  MPI_Finalized(&done);
+  if (!done && !g_rank_failed) MPI_Finalize();
+}
+}  // namespace
+#endif
+
 StudyRunner::StudyRunner(std::string program, std::string summary, std::string profile_help,
                          Kind kind)
     : program_(std::move(program)), args_(program_, std::move(summary)), kind_(kind) {
@@ -23,7 +39,7 @@ StudyRunner::StudyRunner(std::string program, std::string summary, std::string p
   MPI_Initialized(&started);
   if (!started) {
     MPI_Init(nullptr, nullptr);
-    mpi_started_ = true;
+    std::atexit(finalize_mpi);
   }
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
@@ -36,13 +52,10 @@ StudyRunner::StudyRunner(std::string program, std::string summary, std::string p
 
 StudyRunner::~StudyRunner() {
 #ifdef GPM_MPI
-  if (size_ > 1 && std::uncaught_exceptions() > 0) {
-    std::fprintf(stderr, "[%s] rank %d of %d failed (its error follows); stopping the others\n",
-                 program_.c_str(), rank_, size_);
-    std::fflush(stderr);
-    MPI_Abort(MPI_COMM_WORLD, 3);
+  if (std::uncaught_exceptions() > 0) {
+    g_rank_failed = true;
+    if (size_ > 1) std::fprintf(stderr, "[%s] rank %d of %d failed:\n", program_.c_str(), rank_, size_);
   }
-  if (mpi_started_) MPI_Finalize();
 #endif
 }
 
@@ -82,14 +95,20 @@ void StudyRunner::expect(double work, const char* unit) {
 
 bool StudyRunner::claim() {
   const long unit = next_unit_++;
-  return unit % size_ == rank_;
+  if (unit % size_ != rank_) return false;
+  claimed_.push_back(unit);
+  return true;
 }
 
+// A program may claim several units before computing them (the θ of one Laplacian): their
+// rows come in the order of the claims, each unit closed by unit_done().
 void StudyRunner::add(std::vector<std::string> row) {
-  if (size_ == 1)
+  if (size_ == 1) {
     cache_->add(std::move(row));
-  else
-    mine_.emplace_back(next_unit_ - 1, std::move(row));
+    return;
+  }
+  if (claimed_.empty()) throw std::logic_error("StudyRunner::add: a row of no claimed unit");
+  mine_.emplace_back(claimed_.front(), std::move(row));
 }
 
 void StudyRunner::unit_done(double work, const std::string& line) {
@@ -102,6 +121,7 @@ void StudyRunner::unit_done(double work, const std::string& line) {
     std::fprintf(stderr, "[%s rank %d] %s\n", program_.c_str(), rank_, line.c_str());
   else
     std::fprintf(stderr, "[%s] %s\n", program_.c_str(), line.c_str());
+  if (!claimed_.empty()) claimed_.pop_front();
   done_ += work;
   if (progress_) progress_->update(done_);
 }

@@ -23,6 +23,7 @@
 //   if (!run.finish()) return 0;   // verify/recheck mode: nothing more is written
 #pragma once
 #include <chrono>
+#include <deque>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -46,7 +47,8 @@ class StudyRunner {
   // `profile_help` is the --profile help (the catalog's ProfileLevels::help()).
   StudyRunner(std::string program, std::string summary, std::string profile_help,
               Kind kind = Kind::units);
-  // Several ranks: a rank leaving by an exception stops the others (they would wait forever).
+  // MPI: a rank leaving by an exception skips MPI_Finalize at exit (its non-zero exit makes
+  // mpirun stop the others, which would otherwise wait for its rows).
   ~StudyRunner();
   StudyRunner(const StudyRunner&) = delete;
   StudyRunner& operator=(const StudyRunner&) = delete;
@@ -111,8 +113,8 @@ class StudyRunner {
   double done_ = 0;
   std::chrono::steady_clock::time_point start_;
   int rank_ = 0, size_ = 1;
-  bool mpi_started_ = false;  // this runner initialized MPI (and finalizes it)
   long next_unit_ = 0;        // claim() counter
+  std::deque<long> claimed_;  // units claimed here and not yet done, in claim order
   // Rows computed here while several ranks run: (unit number, row).
   std::vector<std::pair<long, std::vector<std::string>>> mine_;
   void gather_rows();
