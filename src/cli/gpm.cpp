@@ -377,26 +377,33 @@ int cmd_heat(int argc, char** argv) {
 int cmd_smoothing(int argc, char** argv) {
   Args a("gpm smoothing", "The smoothing error of the Laplacian, eps(kh) = 1 - (8 pi/(kh)^2) int_0^1\n"
                           "(1 - J0(kh s)) w(s)/s ds, or of the gradient, 1 - (4 pi/(kh)) int_0^1\n"
-                          "J1(kh s) w(s) ds, for a weight and radii (no particles).");
+                          "J1(kh s) w(s) ds, for a weight and radii (no particles); or of the\n"
+                          "interpolant for the thesis' Case 1 (X^4 + Y^4): max over Omega of\n"
+                          "|3 m2 h^2 (X^2+Y^2) + (3/4) m4 h^4| / (1/8), m_q = 2 pi int s^(q+1) w.");
   a.opt("weight", "quartic_polynomial", "registry weight (gpm weights lists them)")
       .opt("h", "", "comma-separated influence radii (required)")
       .opt("k", fmt(kSin2piWaveNumber), "wave number |k| (default 2 pi sqrt 2, for sin 2pi(x+y))")
-      .opt("operator", "lap", "lap or grad");
+      .opt("operator", "lap", "lap, grad or interp-case1 (--k unused)");
   a.parse(argc, argv, 2);
   if (a.str("h").empty()) throw InputError("--h is required (see --help)");
   const std::string op = a.str("operator");
-  if (op != "lap" && op != "grad") throw InputError("--operator: '" + op + "' is not lap or grad");
+  if (op != "lap" && op != "grad" && op != "interp-case1")
+    throw InputError("--operator: '" + op + "' is not lap, grad or interp-case1");
   const double k = a.positive("k");
   const WeightFunction& w = weight(a.str("weight"));
   TsvTable t = header_from(a, "smoothing");
   t.set("eps", op == "lap" ? "1 - (8 pi/(kh)^2) int_0^1 (1 - J0(kh s)) w(s)/s ds: relative error "
                              "of the continuous Laplacian on the mode"
-                           : "1 - (4 pi/(kh)) int_0^1 J1(kh s) w(s) ds: relative error of the "
-                             "continuous gradient on the mode");
+               : op == "grad" ? "1 - (4 pi/(kh)) int_0^1 J1(kh s) w(s) ds: relative error of the "
+                                "continuous gradient on the mode"
+                              : "max_Omega |3 m2 h^2 (X^2+Y^2) + (3/4) m4 h^4| / max_Omega |v|, "
+                                "v = X^4 + Y^4: relative error of the continuous interpolant");
   t.columns = {"h", "kh", "eps"};
   for (double h : a.nums("h")) {
     require_positive(h, "--h");
-    const double e = op == "lap" ? laplacian_smoothing_error(w, k * h) : gradient_smoothing_error(w, k * h);
+    const double e = op == "lap"    ? laplacian_smoothing_error(w, k * h)
+                     : op == "grad" ? gradient_smoothing_error(w, k * h)
+                                    : interpolant_smoothing_error_case1(w, h);
     t.add_row({fmt(h), fmt(k * h), fmt(e)});
   }
   print(t);

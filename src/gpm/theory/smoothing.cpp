@@ -4,6 +4,7 @@
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_sf_bessel.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -62,6 +63,22 @@ double laplacian_smoothing_error(const WeightFunction& w, double kh) {
 double gradient_smoothing_error(const WeightFunction& w, double kh) {
   require_positive(kh, "kh");
   return 1 - 4 * std::numbers::pi / kh * integrate_pieces(w, kh, &integrand_grad);
+}
+
+double radial_moment(const WeightFunction& w, int q) {
+  double m = 0;
+  for (const PolyPiece& pc : w.scaled_pieces())
+    for (std::size_t k = 0; k < pc.c.size(); ++k) {
+      const int e = pc.p_min + static_cast<int>(k) + q + 2;  // ∫ s^(p+k+q+1) ds = s^e / e
+      m += pc.c[k] * (std::pow(pc.r_end, e) - std::pow(pc.r_begin, e)) / e;
+    }
+  return 2 * M_PI * m;
+}
+
+double interpolant_smoothing_error_case1(const WeightFunction& w, double h) {
+  const double a = 3 * radial_moment(w, 2) * h * h, b = 0.75 * radial_moment(w, 4) * std::pow(h, 4);
+  // Over Ω, X² + Y² runs through [0, ½]: the extremes of a (X² + Y²) + b are at the ends.
+  return std::max(std::fabs(b), std::fabs(0.5 * a + b)) / 0.125;
 }
 
 }  // namespace gpm

@@ -20,4 +20,16 @@ double laplacian_smoothing_error(const WeightFunction& w, double kh);
 // again ~ c(kh)² for small kh (the normalization 2π∫ s w = 1 makes ε_∇(0) = 0).
 double gradient_smoothing_error(const WeightFunction& w, double kh);
 
+// The even radial moments m_q = 2π ∫₀¹ s^(q+1) w(s) ds of a weight (m_0 = 1 when normalized).
+double radial_moment(const WeightFunction& w, int q);
+
+// The smoothing part of the interpolant Π_h v = ∫ v(y) w_h(|y − x|) dy for thesis §4.1.1's
+// Case 1, v = X⁴ + Y⁴ (X = x − ½, Y = y − ½).  Expanding v(x − y) about x, the odd moments
+// vanish and
+//   Π_h v − v = 3 m_2 h² (X² + Y²) + (3/4) m_4 h⁴,
+// exactly (v is a quartic).  Relative to max_Ω |v| = 1/8, its maximum over Ω = (0,1)² sits at
+// a corner (X² + Y² = ½) or at the centre.  A weight of order k = 3 (m_2 = 0: the cubic spike)
+// leaves the constant (3/4) m_4 h⁴: the O(h⁴) of Theorem 1.11.
+double interpolant_smoothing_error_case1(const WeightFunction& w, double h);
+
 }  // namespace gpm
