@@ -38,6 +38,24 @@ set -euo pipefail
 store=$1 out=$2 build=${3:?usage: checked_reasons.sh STORE_DIR OUT BUILD_DIR}
 source "$(dirname "$0")/store_lib.sh"  # heat_file, heat_label
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
+# smoothing_rows STORE_FILE PUBLISHED READING OPERATOR FUNCTION GPM_OPERATOR: for the Voronoi rows
+# of one reading, operator (interp, grad, …) and function at the document's two rate levels,
+# "weight level h rel_error smoothing_part" (gpm smoothing --operator GPM_OPERATOR at that h),
+# sorted by weight and level.
+smoothing_rows() {
+  local lv
+  lv=$(awk '/^# rate_levels = / { print substr($0, 17); exit }' "$2")
+  awk -F'\t' -v r="$3" -v op="$4" -v fn="$5" -v lv="$lv" 'BEGIN { split(lv, L, ",") } /^#/ { next }
+    !h++ { for (i = 1; i <= NF; i++) c[$i] = i; next }
+    $c["h_reading"] == r && $c["volumes"] == "voronoi" && $c["operator"] == op &&
+    $c["function"] == fn && ($c["level"] == L[1] || $c["level"] == L[2]) {
+      print $c["weight"] "\t" $c["level"] "\t" $c["h"] "\t" $c["rel_error"] }' "$1" |
+    sort -k1,1 -k2,2n |
+    while IFS=$'\t' read -r w l h e; do
+      printf '%s\t%s\t%s\t%s\t%s\n' "$w" "$l" "$h" "$e" \
+        "$("$build/gpm" smoothing --operator "$6" --weight "$w" --h "$h" | awk -F'\t' '/^#/ { next } !n++ { next } { print $3 }')"
+    done
+}
 pub=tables/published
 tol=0.15  # the agreement tolerance of rate_table
 {
@@ -79,19 +97,8 @@ tol=0.15  # the agreement tolerance of rate_table
   fi
   f43=$store/thesis_table4_3.tsv
   if [ -f "$f43" ]; then
-    lv=$(awk '/^# rate_levels = / { print substr($0, 17); exit }' "$pub/thesis_table4_3_long.tsv")
     for reading in printed scaled; do
-      awk -F'\t' -v r="$reading" -v lv="$lv" 'BEGIN { split(lv, L, ",") } /^#/ { next }
-        !h++ { for (i = 1; i <= NF; i++) c[$i] = i; next }
-        $c["h_reading"] == r && $c["volumes"] == "voronoi" && $c["operator"] == "grad" &&
-        $c["function"] == "case2" && ($c["level"] == L[1] || $c["level"] == L[2]) {
-          print $c["weight"] "\t" $c["level"] "\t" $c["h"] "\t" $c["rel_error"] }' "$f43" |
-        sort -k1,1 -k2,2n > "$work/grad.tsv"
-      while IFS=$'\t' read -r w l h e; do
-        eps=$("$build/gpm" smoothing --operator grad --weight "$w" --h "$h" |
-              awk -F'\t' '/^#/ { next } !n++ { next } { print $3 }')
-        printf '%s\t%s\t%s\t%s\t%s\n' "$w" "$l" "$h" "$e" "$eps"
-      done < "$work/grad.tsv" > "$work/grad_eps.tsv"
+      smoothing_rows "$f43" "$pub/thesis_table4_3_long.tsv" $reading grad case2 grad > "$work/grad_eps.tsv"
       awk -F'\t' -v tol="$tol" -v slice="${reading}_voronoi" '
         function abs(x) { return x < 0 ? -x : x }
         FNR == 1 { file++ }
@@ -115,17 +122,7 @@ tol=0.15  # the agreement tolerance of rate_table
   if [ -f "$f42" ]; then
     lv=$(awk '/^# rate_levels = / { print substr($0, 17); exit }' "$pub/thesis_table4_2_long.tsv")
     for reading in printed scaled; do
-      awk -F'\t' -v r="$reading" -v lv="$lv" 'BEGIN { split(lv, L, ",") } /^#/ { next }
-        !h++ { for (i = 1; i <= NF; i++) c[$i] = i; next }
-        $c["h_reading"] == r && $c["volumes"] == "voronoi" && $c["function"] == "case1" &&
-        ($c["level"] == L[1] || $c["level"] == L[2]) {
-          print $c["weight"] "\t" $c["level"] "\t" $c["h"] "\t" $c["rel_error"] }' "$f42" |
-        sort -k1,1 -k2,2n > "$work/interp.tsv"
-      while IFS=$'\t' read -r w l h e; do
-        sm=$("$build/gpm" smoothing --operator interp-case1 --weight "$w" --h "$h" |
-             awk -F'\t' '/^#/ { next } !n++ { next } { print $3 }')
-        printf '%s\t%s\t%s\t%s\t%s\n' "$w" "$l" "$h" "$e" "$sm"
-      done < "$work/interp.tsv" > "$work/interp_sm.tsv"
+      smoothing_rows "$f42" "$pub/thesis_table4_2_long.tsv" $reading interp case1 interp-case1 > "$work/interp_sm.tsv"
       awk -F'\t' -v tol="$tol" -v slice="${reading}_voronoi" -v lv="$lv" '
         function abs(x) { return x < 0 ? -x : x }
         FNR == 1 { file++ }
