@@ -34,7 +34,7 @@
 #include "gpm/solvers/stability.hpp"
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/profile.hpp"
-#include "gpm/studies/store.hpp"
+#include "gpm/studies/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
 using namespace gpm;
@@ -59,35 +59,30 @@ constexpr double kBelow = 0.9, kAbove = 1.1;
 constexpr double kTableT = 0.1;        // Table 4.6: Δt = T/⌈T/(0.5h²)⌉
 
 int body(int argc, char** argv) {
-  Args a("thesis_stability",
-         "Measured time-step limit of the theta-method (theta = 0 and 1/4) for the thesis'\n"
-         "heat problem, from the largest eigenvalue of the discrete Laplacian (Lanczos),\n"
-         "confirmed by runs at 0.9 and 1.1 times the limit, against the bound (3.3).");
-  a.opt("profile", "quick", "quick (dx = 2^-4..2^-6) or paper (2^-5..2^-9)")
-      .output("out", "", "data file (required)")
-      .opt("seed", "1", "jitter seed of the particles (the start vectors use seed 1)")
-      .opt("tol", "1e-4", "Lanczos: stop when the Ritz residual <= tol * lambda_max")
+  StudyRunner run("thesis_stability",
+                  "Measured time-step limit of the theta-method (theta = 0 and 1/4) for the thesis'\n"
+                  "heat problem, from the largest eigenvalue of the discrete Laplacian (Lanczos),\n"
+                  "confirmed by runs at 0.9 and 1.1 times the limit, against the bound (3.3).\n"
+                  "--seed jitters the particles; the start vectors use seed 1.",
+                  "quick (dx = 2^-4..2^-6) or paper (2^-5..2^-9)");
+  Args& a = run.args();
+  a.opt("tol", "1e-4", "Lanczos: stop when the Ritz residual <= tol * lambda_max")
       .opt("steps", "100", "confirmation runs: at most this many steps")
       .opt("stop-growth", "100", "confirmation runs: stop when ||U^k|| > this * ||U^0||")
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
-      .opt("max-gb", "4", "memory budget of an assembled Laplacian (GB)")
-      .opt("levels", "", "override the profile's levels (comma-separated k)");
-  add_cache_options(a);
-  a.parse(argc, argv);
-  a.required("out");
-  const CacheMode mode = cache_mode(a);
-  const Profile prof = parse_profile(a.str("profile"));
-  const uint64_t seed = a.seed();
+      .opt("max-gb", "4", "memory budget of an assembled Laplacian (GB)");
+  run.parse(argc, argv);
+  const Profile prof = run.profile();
+  const uint64_t seed = run.seed();
   const double tol = a.tolerance("tol"), stop_growth = a.positive("stop-growth");
   const long steps = static_cast<long>(a.integer("steps", 1, 1000000000));
   if (!(stop_growth > 1)) throw InputError("--stop-growth must exceed 1, got " + a.str("stop-growth"));
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
-  const std::vector<int> levels = levels_option(a, prof, kQuick, kPaper, 3, 13);
+  const std::vector<int> levels = run.levels(kQuick, kPaper);
 
-  // --- The data file: one row per (weight, h rule, level), cached. ------------------------
-  LevelCache cache(
-      a.str("out"),
+  // --- The data file: one row per (weight, h rule, level). --------------------------------
+  LevelCache& cache = run.open(
       {{"program", "thesis_stability"}, {"profile", profile_name(prof)},
        {"seed", fmt(static_cast<long long>(seed))}, {"kappa", fmt(kKappa)},
        {"theta_q", fmt(kThetaQ)}, {"lanczos_tol", fmt(tol)},
@@ -106,9 +101,8 @@ int body(int argc, char** argv) {
        "growth_below_0", "growth_above_0", "steps_above_0", "factor_above_0", "predicted_0",
        "growth_below_q", "growth_above_q", "steps_above_q", "factor_above_q", "predicted_q",
        "confirmed", "time_s"},
-      3, mode);
+      3);
   const Domain dom;
-  double total = 0;
   for (int k : levels) {
     const double dx = std::ldexp(1.0, -k);
     bool built = false;
@@ -117,7 +111,7 @@ int body(int argc, char** argv) {
     for (const auto& rule : kHRules) {
       const double h = pde_h(rule.rule, dx);
       for (const auto& wname : kWeights) {
-        if (cache.has({wname, rule.name, fmt(k)})) continue;
+        if (cache.has({wname, rule.name, fmt(k)}) || !run.claim()) continue;
         if (!built) p = jittered_grid(dx, seed), V = uniform_volumes(p, dom), built = true;
         const auto t0 = std::chrono::steady_clock::now();
         const WeightFunction& w = weight(wname);
@@ -135,20 +129,19 @@ int body(int argc, char** argv) {
         const double dt46 = kTableT / static_cast<double>(heat_steps(kTableT, 0.5 * h * h));
 
         // Confirmation runs just below and just above each limit.
-        auto run = [&](double theta, double dt) {
+        auto runs = [&](double theta, double dt) {
           return run_homogeneous(L, kKappa, theta, dt, steps, stop_growth, 1);
         };
-        const StabilityRun s0 = run(0, kBelow * lim0), u0 = run(0, kAbove * lim0);
-        const StabilityRun sq = run(kThetaQ, kBelow * limq), uq = run(kThetaQ, kAbove * limq);
+        const StabilityRun s0 = runs(0, kBelow * lim0), u0 = runs(0, kAbove * lim0);
+        const StabilityRun sq = runs(kThetaQ, kBelow * limq), uq = runs(kThetaQ, kAbove * limq);
         const double pred0 = std::fabs(theta_amplification(kAbove * 2, 0));
         const double predq = std::fabs(theta_amplification(kAbove * 2 / (1 - 2 * kThetaQ), kThetaQ));
         const bool confirmed = s0.growth_max <= 1 && sq.growth_max <= 1 && u0.growth_final > 1 &&
                                uq.growth_final > 1;
         const double secs =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        total += secs;
         const double h2 = h * h;
-        cache.add({wname, rule.name, fmt(k), fmt(dx), fmt(h), fmt(L.n_unknowns()),
+        run.add({wname, rule.name, fmt(k), fmt(dx), fmt(h), fmt(L.n_unknowns()),
                    L.assembled() ? "assembled" : "matrix_free", fmt(lz.lambda_max),
                    fmt(lz.iterations), fmt(lz.residual), fmt(b0), fmt(bq), fmt(c37), fmt(lim0),
                    fmt(limq), fmt(b0 / h2), fmt(lim0 / h2), fmt(bq / h2), fmt(limq / h2),
@@ -157,23 +150,17 @@ int body(int argc, char** argv) {
                    fmt(u0.last_factor), fmt(pred0), fmt(sq.growth_max), fmt(uq.growth_final),
                    fmt(static_cast<long long>(uq.steps)), fmt(uq.last_factor), fmt(predq),
                    confirmed ? "yes" : "no", fmt(secs)});
-        cache.table().set("wall_time_s", total);
-        cache.save();
-        std::fprintf(stderr,
-                     "thesis_stability: %-28s %-7s dx=2^-%d h=%.4f lambda_max=%.5g (%d it) "
-                     "limit/h^2 = %.4f (theta 0), %.4f (1/4); bound/h^2 = %.4f, %.4f; "
-                     "growth %.3g / %.3g (theta 0), %.3g / %.3g (1/4) %s  %.1f s\n",
-                     wname.c_str(), rule.name.c_str(), k, h, lz.lambda_max, lz.iterations,
-                     lim0 / h2, limq / h2, b0 / h2, bq / h2, s0.growth_max, u0.growth_final,
-                     sq.growth_max, uq.growth_final, confirmed ? "confirmed" : "NOT CONFIRMED",
-                     secs);
+        run.unit_done(0, line_printf(
+            "%-28s %-7s dx=2^-%d h=%.4f lambda_max=%.5g (%d it) limit/h^2 = %.4f (theta 0), "
+            "%.4f (1/4); bound/h^2 = %.4f, %.4f; growth %.3g / %.3g (theta 0), %.3g / %.3g (1/4) "
+            "%s  %.1f s",
+            wname.c_str(), rule.name.c_str(), k, h, lz.lambda_max, lz.iterations, lim0 / h2,
+            limq / h2, b0 / h2, bq / h2, s0.growth_max, u0.growth_final, sq.growth_max,
+            uq.growth_final, confirmed ? "confirmed" : "NOT CONFIRMED", secs));
       }
     }
   }
-  cache.finish();
-  if (!cache.writes()) return 0;
-  std::printf("thesis_stability: wrote %s (%zu rows, %zu reused, %.1f s computed)\n",
-              a.str("out").c_str(), cache.rows().size(), cache.reused(), total);
+  run.finish();
   return 0;
 }
 
