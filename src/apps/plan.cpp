@@ -162,9 +162,11 @@ int body(int argc, char** argv) {
     makespan.push_back(*std::max_element(load.begin(), load.end()));
   }
   s.set("processes_note", "'P processes': the units run whole, longest first to the least "
-                          "loaded process, each at this machine's calibrated speed; a "
-                          "prediction (one process runs today), bounded below by the longest "
-                          "unit (" + human_time(unit_times.empty() ? 0 : unit_times[0]) + ")");
+                          "loaded process, each at this machine's calibrated speed; bounded "
+                          "below by the longest unit (" +
+                              human_time(unit_times.empty() ? 0 : unit_times[0]) +
+                              "); an MPI run (-DGPM_MPI=ON) deals each study's units "
+                              "round-robin in loop order, which can fall short of this");
   for (std::size_t i = 0; i < ranks.size(); ++i) {
     Agg g = all;
     g.time_s = makespan[i];
