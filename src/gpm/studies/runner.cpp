@@ -111,28 +111,35 @@ void StudyRunner::add(std::vector<std::string> row) {
   mine_.emplace_back(claimed_.front(), std::move(row));
 }
 
-void StudyRunner::unit_done(double work, const std::string& line) {
-  if (size_ == 1) {  // several ranks: rank 0 writes everything in finish()
-    cache_->table().set("wall_time_s", elapsed_s());
-    cache_->table().set("peak_rss_mib", peak_rss_mib());
-    cache_->save();
-  }
+// The header's record of the run so far: wall time and peak memory.
+void StudyRunner::stamp(TsvTable& t) const {
+  t.set("wall_time_s", elapsed_s());
+  t.set("peak_rss_mib", peak_rss_mib());
+}
+
+// One finished unit: its line, and the progress advanced by its work.
+void StudyRunner::report(double work, const std::string& line) {
   if (size_ > 1)
     std::fprintf(stderr, "[%s rank %d] %s\n", program_.c_str(), rank_, line.c_str());
   else
     std::fprintf(stderr, "[%s] %s\n", program_.c_str(), line.c_str());
-  if (!claimed_.empty()) claimed_.pop_front();
   done_ += work;
   if (progress_) progress_->update(done_);
 }
 
+void StudyRunner::unit_done(double work, const std::string& line) {
+  if (size_ == 1) {  // several ranks: rank 0 writes everything in finish()
+    stamp(cache_->table());
+    cache_->save();
+  }
+  if (!claimed_.empty()) claimed_.pop_front();
+  report(work, line);
+}
+
 void StudyRunner::save_level(TsvTable& t, double work, const std::string& line) {
-  t.set("wall_time_s", elapsed_s());
-  t.set("peak_rss_mib", peak_rss_mib());
+  stamp(t);
   if (rank_ == 0) t.save(out_);  // (such a study is not divided: every rank runs it all)
-  std::fprintf(stderr, "[%s] %s\n", program_.c_str(), line.c_str());
-  done_ += work;
-  if (progress_) progress_->update(done_);
+  report(work, line);
 }
 
 // Every rank's rows to rank 0, which adds them in the order of their units (the order one
@@ -171,8 +178,7 @@ void StudyRunner::gather_rows() {
   std::stable_sort(rows.begin(), rows.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   for (auto& [unit, row] : rows) cache_->add(std::move(row));
-  cache_->table().set("wall_time_s", elapsed_s());
-  cache_->table().set("peak_rss_mib", peak_rss_mib());
+  stamp(cache_->table());
   cache_->table().set("mpi_ranks", std::to_string(size_));
   cache_->save();
 #endif

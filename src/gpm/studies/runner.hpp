@@ -118,6 +118,8 @@ class StudyRunner {
   // Rows computed here while several ranks run: (unit number, row).
   std::vector<std::pair<long, std::vector<std::string>>> mine_;
   void gather_rows();
+  void stamp(TsvTable& t) const;
+  void report(double work, const std::string& line);
 };
 
 // printf into a std::string: the one-line report of a finished unit.
