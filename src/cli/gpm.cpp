@@ -273,15 +273,16 @@ PdeSetup read_pde_options(const Args& a) {
 }
 
 // The particles and their volumes, once the machine's memory is known to hold them and the
-// Laplacian the caller builds.  Matrix-free: peak RSS / N was 264 bytes at dx = 2^-8; an assembled matrix adds 12
-// bytes per non-zero (11.8 measured), about pi (h/dx)^2 per unknown, |Omega|/|Omega_H| of the
-// particles; `auto` assembles only within the 8 GB budget of DiscreteLaplacian.
+// Laplacian the caller builds.  Matrix-free: peak RSS / N was 264 bytes at dx = 2^-8; an
+// assembled one adds kAssembledBytesPerNonzero per non-zero of the Omega x all matrix, about
+// pi (h/dx)^2 per unknown, |Omega|/|Omega_H| of the particles; `auto` assembles only within the
+// 8 GB budget of DiscreteLaplacian.
 struct PdeProblem {
   Particles p;
   std::vector<double> V;
 };
 PdeProblem make_pde_problem(const Args& a, const PdeSetup& s) {
-  const double nnz_bytes = 12 * kPi * (s.h / s.dx) * (s.h / s.dx) / Domain{}.area_H();
+  const double nnz_bytes = kAssembledBytesPerNonzero * kPi * (s.h / s.dx) * (s.h / s.dx) / Domain{}.area_H();
   const double matrix_bytes = s.storage == LaplacianStorage::matrix_free ? 0
                               : s.storage == LaplacianStorage::assembled
                                   ? nnz_bytes

@@ -36,3 +36,20 @@ TEST_CASE("locate_error finds a planted error and separates the boundary layer",
     if (!p.in_omega[i]) U[i] += 10;
   CHECK(locate_error(p, exact, U, h).rel_error == Approx(0.25));
 }
+
+TEST_CASE("locate_error: a tie at rounding level goes to the first particle", "[unit][poisson]") {
+  // Two errors that differ by 1e-13 relative (the size a change of summation order makes on
+  // a symmetric setting): the lower index is named, whichever of the two is larger.
+  const Particles p = jittered_grid(std::ldexp(1.0, -5), 1);
+  std::vector<double> exact(p.size(), 1.0), U(p.size(), 1.0);
+  std::size_t a = 0, b = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.in_omega[i]) (a == 0 ? a : b) = i;
+  REQUIRE(a < b);
+  for (double later : {1 + 1e-13, 1 - 1e-13}) {
+    U[a] = 1.5, U[b] = 1 + 0.5 * later;
+    CHECK(locate_error(p, exact, U, 0.1).argmax == a);
+  }
+  U[b] = 1 + 0.5 * (1 + 1e-6);  // a real difference still wins
+  CHECK(locate_error(p, exact, U, 0.1).argmax == b);
+}

@@ -41,7 +41,8 @@ LaplacianStorage parse_laplacian_storage(const std::string& s) {
   if (s == "auto" || s == "automatic") return LaplacianStorage::automatic;
   if (s == "assembled") return LaplacianStorage::assembled;
   if (s == "matrix_free" || s == "matrix-free") return LaplacianStorage::matrix_free;
-  throw InputError("unknown storage '" + s + "'; valid: auto, assembled, matrix_free");
+  if (s == "full") return LaplacianStorage::full;
+  throw InputError("unknown storage '" + s + "'; valid: auto, assembled, matrix_free, full");
 }
 
 std::string laplacian_storage_name(LaplacianStorage s) {
@@ -49,6 +50,7 @@ std::string laplacian_storage_name(LaplacianStorage s) {
     case LaplacianStorage::automatic: return "auto";
     case LaplacianStorage::assembled: return "assembled";
     case LaplacianStorage::matrix_free: return "matrix_free";
+    case LaplacianStorage::full: return "full";
   }
   return "?";
 }
@@ -80,13 +82,17 @@ DiscreteLaplacian::DiscreteLaplacian(const Particles& p, const std::vector<doubl
 
   nnz_estimate_ = estimated_laplacian_nnz(n_, omega_.size(), h);
   const auto t0 = std::chrono::steady_clock::now();
-  const bool fits = 12.0 * nnz_estimate_ <= max_bytes && nnz_estimate_ < 2.0e9;
-  if (storage == LaplacianStorage::assembled && !fits)
-    throw InputError("the assembled Laplacian needs about " +
-                     std::to_string(12.0 * nnz_estimate_ / 1e9) + " GB (budget " +
+  const double need = (storage == LaplacianStorage::full ? 12.0 : kAssembledBytesPerNonzero) *
+                      nnz_estimate_;
+  const bool fits = need <= max_bytes && (storage != LaplacianStorage::full || nnz_estimate_ < 2e9);
+  if ((storage == LaplacianStorage::assembled || storage == LaplacianStorage::full) && !fits)
+    throw InputError("the assembled Laplacian needs about " + std::to_string(need / 1e9) +
+                     " GB (budget " +
                      std::to_string(max_bytes / 1e9) + " GB); use matrix_free");
-  if (storage == LaplacianStorage::assembled ||
-      (storage == LaplacianStorage::automatic && fits)) {
+  if (storage == LaplacianStorage::full) {
+    assemble_full(p, w);
+  } else if (storage == LaplacianStorage::assembled ||
+             (storage == LaplacianStorage::automatic && fits)) {
     assemble(p, w);
   } else {
     kernel_ = std::make_unique<FusedKernel>(p, V_, h_, std::vector<KernelWeight>{{w, kLap}});
@@ -99,9 +105,73 @@ DiscreteLaplacian::DiscreteLaplacian(const Particles& p, const std::vector<doubl
 DiscreteLaplacian::~DiscreteLaplacian() = default;
 DiscreteLaplacian::DiscreteLaplacian(DiscreteLaplacian&&) noexcept = default;
 
-// Two passes over the rows: count the neighbours, then fill values and column indices in
-// place (no per-row temporary lists: the matrix is the only large allocation).
+// Two passes over the rows: count the entries of each part, then fill values and column
+// indices in place (no per-row lists kept: the storage is the only large allocation).  The
+// diagonal is summed as before, over every neighbour in the cell list's order.
 void DiscreteLaplacian::assemble(const Particles& p, const WeightFunction& w) {
+  const CellList cl(p.x, p.y, h_ / 2, Domain{}.lo(), Domain{}.lo());
+  const auto& index = cl.index();
+  const int64_t rows = static_cast<int64_t>(omega_.size());
+  std::vector<int64_t> up(rows + 1, 0), bd(rows + 1, 0), all(rows, 0);
+#pragma omp parallel for schedule(dynamic, 64)
+  for (int64_t k = 0; k < rows; ++k) {
+    const int32_t j = omega_[k];
+    int64_t cu = 0, cb = 0, ca = 0;
+    cl.for_each_neighbour(p.x[j], p.y[j], h_, [&](int32_t slot, double, double, double) {
+      const int32_t i = index[slot];
+      ++ca;  // the target itself is counted: it holds the diagonal
+      if (i == j) return;
+      if (unknown_[i] < 0) ++cb;
+      else if (i > j) ++cu;
+    });
+    up[k + 1] = cu, bd[k + 1] = cb, all[k] = ca;
+  }
+  nnz_ = 0;
+  for (int64_t k = 0; k < rows; ++k) up[k + 1] += up[k], bd[k + 1] += bd[k], nnz_ += all[k];
+  up_ptr_ = up, b_ptr_ = bd;
+  up_col_.resize(static_cast<std::size_t>(up[rows]));
+  up_val_.resize(up_col_.size());
+  b_col_.resize(static_cast<std::size_t>(bd[rows]));
+  b_val_.resize(b_col_.size());
+
+  const RadialG G(w);
+  const double scale = 2 * kD / (h_ * h_ * h_ * h_);  // 2d·w(q)/(h² r²) = 2d·G(q)/h⁴
+  diag_.resize(rows);
+#pragma omp parallel
+  {
+    std::vector<std::pair<int32_t, double>> row_up, row_b;
+#pragma omp for schedule(dynamic, 64)
+    for (int64_t k = 0; k < rows; ++k) {
+      const int32_t j = omega_[k];
+      row_up.clear(), row_b.clear();
+      double d = 0;
+      cl.for_each_neighbour(p.x[j], p.y[j], h_, [&](int32_t slot, double, double, double r2) {
+        const int32_t i = index[slot];
+        if (i == j) return;
+        const double g = G(std::sqrt(r2) / h_);
+        const double c = scale * V_[i] * g;
+        d -= c;
+        if (unknown_[i] < 0) row_b.emplace_back(i, c);
+        else if (i > j) row_up.emplace_back(unknown_[i], scale * g);
+      });
+      std::sort(row_up.begin(), row_up.end());
+      std::sort(row_b.begin(), row_b.end());
+      int64_t o = up[k];
+      for (auto& [l, c] : row_up) up_col_[o] = l, up_val_[o] = c, ++o;
+      o = bd[k];
+      for (auto& [i, c] : row_b) b_col_[o] = i, b_val_[o] = c, ++o;
+      diag_[k] = d;
+    }
+  }
+  vol_.resize(rows);
+  for (int64_t k = 0; k < rows; ++k) vol_[k] = V_[omega_[k]];
+  plan_blocks();
+  assembled_ = true;
+}
+
+// The full Ω × all matrix (LaplacianStorage::full), as the solvers stored it before the half:
+// two passes, count then fill in place; each row sorted by column.
+void DiscreteLaplacian::assemble_full(const Particles& p, const WeightFunction& w) {
   const CellList cl(p.x, p.y, h_ / 2, Domain{}.lo(), Domain{}.lo());
   const auto& index = cl.index();
   const int64_t rows = static_cast<int64_t>(omega_.size());
@@ -111,20 +181,20 @@ void DiscreteLaplacian::assemble(const Particles& p, const WeightFunction& w) {
     const int32_t j = omega_[k];
     int64_t c = 0;
     cl.for_each_neighbour(p.x[j], p.y[j], h_, [&](int32_t, double, double, double) { ++c; });
-    count[k + 1] = c;  // the target itself is counted: it holds the diagonal
+    count[k + 1] = c;
   }
   for (int64_t k = 0; k < rows; ++k) count[k + 1] += count[k];
-  if (count[rows] > 2147483647LL)
-    throw InputError("the assembled Laplacian has more than 2^31 non-zeros; use matrix_free");
-
-  M_.resize(rows, static_cast<Eigen::Index>(n_));
-  M_.resizeNonZeros(count[rows]);
-  int* outer = M_.outerIndexPtr();
+  nnz_ = count[rows];
+  full_ = std::make_unique<Eigen::SparseMatrix<double, Eigen::RowMajor, int>>(
+      rows, static_cast<Eigen::Index>(n_));
+  auto& M = *full_;
+  M.resizeNonZeros(nnz_);
+  int* outer = M.outerIndexPtr();
   for (int64_t k = 0; k <= rows; ++k) outer[k] = static_cast<int>(count[k]);
-  int* inner = M_.innerIndexPtr();
-  double* val = M_.valuePtr();
+  int* inner = M.innerIndexPtr();
+  double* val = M.valuePtr();
   const RadialG G(w);
-  const double scale = 2 * kD / (h_ * h_ * h_ * h_);  // 2d·w(q)/(h² r²) = 2d·G(q)/h⁴
+  const double scale = 2 * kD / (h_ * h_ * h_ * h_);
   diag_.resize(rows);
 #pragma omp parallel
   {
@@ -148,7 +218,42 @@ void DiscreteLaplacian::assemble(const Particles& p, const WeightFunction& w) {
       diag_[k] = d;
     }
   }
-  assembled_ = true;
+  assembled_ = full_storage_ = true;
+}
+
+// Fixed blocks of about equal stored entries, their count set by the matrix alone (never by
+// the threads): at most 32, at least 256 rows each.  A block's partial sums reach from its
+// first row to the largest column any of its rows touches (made non-decreasing over the
+// blocks, so that the blocks covering an unknown are consecutive).
+void DiscreteLaplacian::plan_blocks() {
+  const int64_t rows = static_cast<int64_t>(omega_.size());
+  const int64_t blocks = std::clamp<int64_t>(rows / 256, 1, 32);
+  const double per_block = static_cast<double>(up_ptr_[rows]) / static_cast<double>(blocks);
+  block_row_.assign(1, 0);
+  for (int64_t k = 0; k < rows; ++k)
+    if (static_cast<int64_t>(block_row_.size()) < blocks &&
+        static_cast<double>(up_ptr_[k + 1]) >= per_block * static_cast<double>(block_row_.size()) &&
+        k + 1 < rows)
+      block_row_.push_back(k + 1);
+  block_row_.push_back(rows);
+  const std::size_t nb = block_row_.size() - 1;
+  block_reach_.assign(nb, 0);
+  block_offset_.assign(nb + 1, 0);
+  int64_t reach = 0;
+  for (std::size_t b = 0; b < nb; ++b) {
+    reach = std::max(reach, block_row_[b + 1] - 1);
+    for (int64_t o = up_ptr_[block_row_[b]]; o < up_ptr_[block_row_[b + 1]]; ++o)
+      reach = std::max<int64_t>(reach, up_col_[o]);
+    block_reach_[b] = reach;
+    block_offset_[b + 1] = block_offset_[b] + (reach - block_row_[b] + 1);
+  }
+  part_.assign(static_cast<std::size_t>(block_offset_[nb]), 0.0);
+  first_block_.assign(static_cast<std::size_t>(rows), 0);
+  std::size_t b = 0;
+  for (int64_t k = 0; k < rows; ++k) {
+    while (block_reach_[b] < k) ++b;
+    first_block_[k] = static_cast<int32_t>(b);
+  }
 }
 
 void DiscreteLaplacian::compute_diagonal(const Particles& p, const WeightFunction& w) {
@@ -171,16 +276,86 @@ void DiscreteLaplacian::compute_diagonal(const Particles& p, const WeightFunctio
 }
 
 int64_t DiscreteLaplacian::nnz() const {
-  return assembled_ ? static_cast<int64_t>(M_.nonZeros()) : static_cast<int64_t>(nnz_estimate_);
+  return assembled_ ? nnz_ : static_cast<int64_t>(nnz_estimate_);
+}
+
+int64_t DiscreteLaplacian::stored_entries() const {
+  if (full_storage_) return nnz_;
+  return assembled_ ? static_cast<int64_t>(up_col_.size() + b_col_.size() + omega_.size()) : 0;
 }
 
 double DiscreteLaplacian::bytes() const {
-  return assembled_ ? 12.0 * static_cast<double>(M_.nonZeros()) + 4.0 * (M_.rows() + 1) : 0.0;
+  if (!assembled_) return 0.0;
+  const double rows = static_cast<double>(omega_.size());
+  if (full_storage_) return 12.0 * static_cast<double>(nnz_) + 4.0 * (rows + 1);
+  return 12.0 * static_cast<double>(up_col_.size() + b_col_.size()) + 16.0 * (rows + 1) +
+         16.0 * rows + 8.0 * static_cast<double>(part_.size()) + 4.0 * rows;
 }
 
 const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& DiscreteLaplacian::matrix() const {
   if (!assembled_) throw InputError("the Laplacian is matrix-free: no assembled matrix");
-  return M_;
+  if (!full_) {
+    // M_kl = K_kl V_l and M_lk = K_kl V_k from the half; the Ω × B block as stored.
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(static_cast<std::size_t>(nnz_));
+    const int64_t rows = static_cast<int64_t>(omega_.size());
+    for (int64_t k = 0; k < rows; ++k) {
+      t.emplace_back(static_cast<int>(k), omega_[k], diag_[k]);
+      for (int64_t o = up_ptr_[k]; o < up_ptr_[k + 1]; ++o) {
+        const int32_t l = up_col_[o];
+        t.emplace_back(static_cast<int>(k), omega_[l], up_val_[o] * vol_[l]);
+        t.emplace_back(l, omega_[k], up_val_[o] * vol_[k]);
+      }
+      for (int64_t o = b_ptr_[k]; o < b_ptr_[k + 1]; ++o)
+        t.emplace_back(static_cast<int>(k), b_col_[o], b_val_[o]);
+    }
+    full_ = std::make_unique<Eigen::SparseMatrix<double, Eigen::RowMajor, int>>(
+        rows, static_cast<Eigen::Index>(n_));
+    full_->setFromTriplets(t.begin(), t.end());
+  }
+  return *full_;
+}
+
+// y = M_ΩΩ x from the half: every stored K_kl gives K_kl z_l to row k and K_kl z_k to row l
+// (z = V x).  Block b adds both into its own partial sums; a row's total is its diagonal
+// term plus the partial sums of the blocks that reach it, in block order.
+void DiscreteLaplacian::apply_assembled(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  const int64_t rows = static_cast<int64_t>(omega_.size());
+  z_ = (vol_.array() * x.array()).matrix();
+  const double* z = z_.data();
+  const int64_t* ptr = up_ptr_.data();
+  const int32_t* col = up_col_.data();
+  const double* val = up_val_.data();
+  const int64_t nb = static_cast<int64_t>(block_reach_.size());
+  // Threads only pay off for large products: a parallel region costs microseconds (and
+  // much more on a loaded machine), a row of a small matrix nanoseconds.
+  const bool threaded = up_col_.size() > 1000000;
+#pragma omp parallel for schedule(dynamic, 1) if (threaded)
+  for (int64_t b = 0; b < nb; ++b) {
+    double* t = part_.data() + block_offset_[b] - block_row_[b];  // t[k], k ∈ [row, reach]
+    std::fill(t + block_row_[b], t + block_reach_[b] + 1, 0.0);
+    for (int64_t k = block_row_[b]; k < block_row_[b + 1]; ++k) {
+      const double zk = z[k];
+      double s = 0;
+      // A row's columns are distinct, so its scatter into t has no conflicts: vectors of
+      // gathers and scatters (AVX-512), the row sum in vector lanes.
+#pragma omp simd reduction(+ : s)
+      for (int64_t o = ptr[k]; o < ptr[k + 1]; ++o) {
+        const int32_t l = col[o];
+        s += val[o] * z[l];
+        t[l] += val[o] * zk;
+      }
+      t[k] += s;
+    }
+  }
+  y.resize(rows);
+#pragma omp parallel for schedule(static, 1024) if (threaded)
+  for (int64_t k = 0; k < rows; ++k) {
+    double s = diag_[k] * x[k];
+    for (int64_t b = first_block_[k]; b < nb && block_row_[b] <= k; ++b)
+      s += part_[static_cast<std::size_t>(block_offset_[b] + k - block_row_[b])];
+    y[k] = s;
+  }
 }
 
 void DiscreteLaplacian::apply_full(const Eigen::VectorXd& v, Eigen::VectorXd& y) const {
@@ -189,20 +364,27 @@ void DiscreteLaplacian::apply_full(const Eigen::VectorXd& v, Eigen::VectorXd& y)
     throw InputError("apply_full: vector of size " + std::to_string(v.size()) + ", expected " +
                      std::to_string(n_));
   y.resize(rows);
-  if (assembled_) {
-    const int* outer = M_.outerIndexPtr();
-    const int* inner = M_.innerIndexPtr();
-    const double* val = M_.valuePtr();
+  if (full_storage_) {
+    const int* outer = full_->outerIndexPtr();
+    const int* inner = full_->innerIndexPtr();
+    const double* val = full_->valuePtr();
     const double* x = v.data();
-    // Threads only pay off for large products: a parallel region costs microseconds (and
-    // much more on a loaded machine), a row of a small matrix nanoseconds.
-    const bool threaded = M_.nonZeros() > 2000000;
+    const bool threaded = full_->nonZeros() > 2000000;
 #pragma omp parallel for schedule(static, 256) if (threaded)
     for (int64_t k = 0; k < rows; ++k) {
       double s = 0;
       for (int o = outer[k]; o < outer[k + 1]; ++o) s += val[o] * x[inner[o]];
       y[k] = s;
     }
+    return;
+  }
+  if (assembled_) {
+    // The Ω × Ω part from the half, then the boundary columns.
+    Eigen::VectorXd x(rows);
+    for (int64_t k = 0; k < rows; ++k) x[k] = v[omega_[k]];
+    apply_assembled(x, y);
+    for (int64_t k = 0; k < rows; ++k)
+      for (int64_t o = b_ptr_[k]; o < b_ptr_[k + 1]; ++o) y[k] += b_val_[o] * v[b_col_[o]];
     return;
   }
   // Matrix-free: the fused kernel's Δ_h at the particles in Ω.
@@ -213,6 +395,7 @@ void DiscreteLaplacian::apply_full(const Eigen::VectorXd& v, Eigen::VectorXd& y)
 }
 
 void DiscreteLaplacian::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  if (assembled_ && !full_storage_) return apply_assembled(x, y);
   work_.setZero();
   for (std::size_t k = 0; k < omega_.size(); ++k) work_[omega_[k]] = x[static_cast<Eigen::Index>(k)];
   apply_full(work_, y);

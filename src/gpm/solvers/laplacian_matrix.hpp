@@ -13,10 +13,18 @@
 // (thesis Theorem 2.2).  The solvers run conjugate gradients on S (for V_i = |Ω_H|/N, D is
 // a constant and S is M_ΩΩ up to the factor −V).
 //
-// Storage.  Assembled: an Eigen row-major sparse matrix Ω × all, 12 bytes per non-zero
-// (value + column index).  At Δx = 2^-9 with h ≈ 0.097 each row has ~7,700 entries and the
-// matrix would need ~24 GB, so above a memory budget (default 8 GB) the map is applied
-// matrix-free by the fused kernel (kernel.hpp), recomputing the weights on every product.
+// Storage.  Assembled: the symmetric half of the Ω × Ω block, written without the volumes,
+//   K_kl = 2d·G(r/h)/h⁴ (l > k, one entry per pair), so that
+//   (M_ΩΩ x)_k = M_kk x_k + Σ_{l≠k} K_kl V_l x_l   for any volumes,
+// plus the small Ω × B block (particles outside Ω) in full, for the boundary values; 12 bytes
+// per stored entry (value + column index).  A product streams about half the bytes of the
+// full Ω × all matrix (the heat steps run at the speed of memory: bench/bench_laplacian).
+// The product's sums are split into fixed blocks of rows, each with its own partial sums,
+// added in block order: the result is the same for any number of threads.  It differs from
+// the full matrix's row sums at rounding level only (another order of the same terms).
+// At Δx = 2^-9 with h ≈ 0.097 each row has ~7,700 entries and even the half would need
+// ~14 GB, so above a memory budget (default 8 GB) the map is applied matrix-free by the
+// fused kernel (kernel.hpp), recomputing the weights on every product.
 #pragma once
 #include <algorithm>
 #include <Eigen/Core>
@@ -35,7 +43,9 @@ namespace gpm {
 
 class FusedKernel;
 
-enum class LaplacianStorage { automatic, assembled, matrix_free };
+// assembled: the symmetric half (above); full: the whole Ω × all matrix in CSR, 12 B per
+// non-zero, the storage before the half (kept for bench_laplacian and the plan's "before").
+enum class LaplacianStorage { automatic, assembled, matrix_free, full };
 LaplacianStorage parse_laplacian_storage(const std::string& s);  // InputError if unknown
 std::string laplacian_storage_name(LaplacianStorage s);
 
@@ -43,11 +53,17 @@ std::string laplacian_storage_name(LaplacianStorage s);
 // count of particles within h (the disc may be cut by the edge of Ω_H: an over-estimate).
 double estimated_laplacian_nnz(std::size_t n, std::size_t n_omega, double h,
                                const Domain& dom = Domain{});
+// Memory of the assembled storage for nnz non-zeros of the Ω × all matrix: 12 B per stored
+// entry, 0.6 stored entries per non-zero (half of the Ω × Ω off-diagonal entries, all of the
+// Ω × B ones; measured 0.48–0.57 for both readings of h at 2^-4…2^-9, test [laplacian]).
+// The one rule of the memory budget, for the solvers, the plan and `gpm`.
+constexpr double kAssembledBytesPerNonzero = 12 * 0.6;
 
 class DiscreteLaplacian {
  public:
   // Throws InputError for h ≤ 0, sizes that differ, a non-positive volume or no particle in Ω.
-  // `automatic` assembles when 12·nnz estimated ≤ max_bytes, else goes matrix-free.
+  // `automatic` assembles when kAssembledBytesPerNonzero·nnz estimated ≤ max_bytes, else
+  // goes matrix-free.
   DiscreteLaplacian(const Particles& p, const std::vector<double>& V, const WeightFunction& w,
                     double h, LaplacianStorage storage = LaplacianStorage::automatic,
                     double max_bytes = 8e9);
@@ -60,12 +76,14 @@ class DiscreteLaplacian {
   const std::vector<int32_t>& unknown_of() const { return unknown_; }  // particle → unknown, −1
   const std::vector<double>& volumes() const { return V_; }
   double h() const { return h_; }
-  bool assembled() const { return assembled_; }
+  bool assembled() const { return assembled_; }  // the half or the full matrix
   double nnz_estimate() const { return nnz_estimate_; }
-  int64_t nnz() const;             // exact when assembled, else the estimate
-  double bytes() const;            // memory of the assembled matrix (0 if matrix-free)
+  int64_t nnz() const;             // of the Ω × all matrix: exact when assembled, else the estimate
+  int64_t stored_entries() const;  // entries kept by the assembled storage (0 if matrix-free)
+  double bytes() const;            // memory of the assembled storage (0 if matrix-free)
   double assembly_seconds() const { return assembly_s_; }
-  // The assembled matrix Ω × all (InputError when matrix-free).
+  // The full matrix Ω × all, built from the assembled storage on the first call (for the
+  // diagnostics that read its entries; InputError when matrix-free).
   const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& matrix() const;
 
   // y = (M v)_Ω for v over all particles (size N).
@@ -82,18 +100,37 @@ class DiscreteLaplacian {
 
  private:
   void assemble(const Particles& p, const WeightFunction& w);
+  void assemble_full(const Particles& p, const WeightFunction& w);
   void compute_diagonal(const Particles& p, const WeightFunction& w);
+  void plan_blocks();
+  void apply_assembled(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
 
   std::size_t n_ = 0;
   double h_ = 0;
   std::vector<double> V_;
   std::vector<int32_t> omega_, unknown_;
-  bool assembled_ = false;
+  bool assembled_ = false, full_storage_ = false;
   double nnz_estimate_ = 0, assembly_s_ = 0;
-  Eigen::SparseMatrix<double, Eigen::RowMajor, int> M_;
+  int64_t nnz_ = 0;  // Ω × all, counted during assembly
+  // The symmetric half: row k's entries (l > k, ascending) at up_ptr_[k] … up_ptr_[k+1].
+  std::vector<int64_t> up_ptr_;
+  std::vector<int32_t> up_col_;
+  std::vector<double> up_val_;
+  // The Ω × B block: particle index and M_ki = 2d·V_i·G/h⁴.
+  std::vector<int64_t> b_ptr_;
+  std::vector<int32_t> b_col_;
+  std::vector<double> b_val_;
+  Eigen::VectorXd vol_;   // V at the unknowns
   Eigen::VectorXd diag_;
+  // Fixed blocks of rows for the product: block b holds rows [row_[b], row_[b+1]) and its
+  // partial sums cover unknowns [row_[b], reach_[b]] at part_ + offset_[b].
+  std::vector<int64_t> block_row_, block_reach_, block_offset_;
+  std::vector<int32_t> first_block_;  // per unknown: the first block whose reach covers it
+  mutable std::vector<double> part_;
+  mutable Eigen::VectorXd z_;
+  mutable std::unique_ptr<Eigen::SparseMatrix<double, Eigen::RowMajor, int>> full_;
   std::unique_ptr<FusedKernel> kernel_;
-  mutable Eigen::VectorXd work_;  // full-length scratch for apply()
+  mutable Eigen::VectorXd work_;  // full-length scratch for the matrix-free apply()
 };
 
 // Conjugate gradients for S x = b with a symmetric positive definite S given as a map

@@ -181,24 +181,51 @@ Calibration calibrate() {
     const double total = since(t0), nnz = static_cast<double>(L.nnz());
     const Eigen::VectorXd x = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(L.n_unknowns()));
     Eigen::VectorXd y;
-    c.spmv_s_per_nnz = best_of(5, [&] { L.apply(x, y); }) / nnz;
-    c.setup_s_per_nnz = std::max(0.0, total - (r.cg.iterations + 2) * c.spmv_s_per_nnz * nnz) / nnz;
+    const double product = best_of(5, [&] { L.apply(x, y); });
+    c.setup_s_per_nnz = std::max(0.0, total - (r.cg.iterations + 2) * product) / nnz;
     log("Laplacian set-up s/nnz", c.setup_s_per_nnz);
-    log("assembled product s/nnz", c.spmv_s_per_nnz);
   }
-  // The matrix-free product on a larger level (Δx = 2^-7, ~1.6e7 pairs): on 2^-6 one product
-  // is a few milliseconds, and on a loaded machine the threads' barrier makes that unstable.
+  // The assembled product at Δx = 2^-7 (1.6e7 non-zeros: the storage is ~100 MB, beyond the
+  // caches, as at the paper's levels; at 2^-6 it nearly fits and the rate came out ~1.2x
+  // too fast for Table 4.5 at 2^-8), the half and the full storage.
   {
     const double dx = dx_of(7), h = pde_h("h10", dx);
     const Particles p = jittered_grid(dx, 1);
     const auto V = uniform_volumes(p, dom);
-    const DiscreteLaplacian M(p, V, weight("piecewise_cubic_polynomial"), h,
-                              LaplacianStorage::matrix_free);
-    const Eigen::VectorXd x = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(M.n_unknowns()));
-    Eigen::VectorXd y;
-    M.apply(x, y);  // warm-up
-    c.matrix_free_s_per_pair = best_of(3, [&] { M.apply(x, y); }) / predicted_pairs(dx, h, dom);
-    log("matrix-free product s/pair", c.matrix_free_s_per_pair);
+    for (auto storage : {LaplacianStorage::assembled, LaplacianStorage::full}) {
+      const DiscreteLaplacian L(p, V, weight("piecewise_cubic_polynomial"), h, storage);
+      const Eigen::VectorXd x = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(L.n_unknowns()));
+      Eigen::VectorXd y;
+      L.apply(x, y);  // warm-up
+      const double per_nnz = best_of(5, [&] { L.apply(x, y); }) / static_cast<double>(L.nnz());
+      (storage == LaplacianStorage::full ? c.spmv_full_s_per_nnz : c.spmv_s_per_nnz) = per_nnz;
+    }
+    log("assembled product s/nnz", c.spmv_s_per_nnz);
+    log("full-matrix product s/nnz", c.spmv_full_s_per_nnz);
+  }
+  // The matrix-free product, like the fused passes: per target and per pair, fitted through
+  // two h at Δx = 2^-8 (6Δx and 30Δx, ~110 and ~2,700 neighbours).  A per-pair rate alone,
+  // taken at 2^-7, overstated Table 4.6's units at 2^-9 (7,700 neighbours) 2.3-fold: the
+  // per-target work is a large share at a few hundred neighbours and a small one there.
+  {
+    const double dx = dx_of(8);
+    const Particles p = jittered_grid(dx, 1);
+    const auto V = uniform_volumes(p, dom);
+    double pairs[2], secs[2], targets = 0;
+    for (int i = 0; i < 2; ++i) {
+      const double h = (i == 0 ? 6 : 30) * dx;
+      const DiscreteLaplacian M(p, V, weight("piecewise_cubic_polynomial"), h,
+                                LaplacianStorage::matrix_free);
+      const Eigen::VectorXd x = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(M.n_unknowns()));
+      Eigen::VectorXd y;
+      M.apply(x, y);  // warm-up
+      secs[i] = best_of(3, [&] { M.apply(x, y); });
+      pairs[i] = predicted_pairs(dx, h, dom);
+      targets = static_cast<double>(M.n_unknowns());
+    }
+    c.matrix_free = PassCost::fit(targets, pairs[0], secs[0], pairs[1], secs[1]);
+    std::fprintf(stderr, "[plan] calibration matrix-free product: %.3g s/target, %.3g pairs/s\n",
+                 c.matrix_free.per_target_s, 1 / c.matrix_free.per_pair_s);
   }
 
   // CG iterations at Δx = 2^-5: Poisson per (h rule, weight); heat per step per
@@ -247,7 +274,9 @@ void Calibration::write(TsvTable& t) const {
   t.set("cal.voronoi_s_per_particle", voronoi_s_per_particle);
   t.set("cal.setup_s_per_nnz", setup_s_per_nnz);
   t.set("cal.spmv_s_per_nnz", spmv_s_per_nnz);
-  t.set("cal.matrix_free_s_per_pair", matrix_free_s_per_pair);
+  t.set("cal.spmv_full_s_per_nnz", spmv_full_s_per_nnz);
+  t.set("cal.matrix_free.per_target_s", matrix_free.per_target_s);
+  t.set("cal.matrix_free.per_pair_s", matrix_free.per_pair_s);
   for (auto& [k, v] : poisson_its) t.set("cal.poisson_its." + k, v);
   for (auto& [k, v] : heat_its) t.set("cal.heat_its." + k, v);
 }
@@ -271,7 +300,8 @@ Calibration Calibration::read(const TsvTable& t) {
   c.voronoi_s_per_particle = num("cal.voronoi_s_per_particle");
   c.setup_s_per_nnz = num("cal.setup_s_per_nnz");
   c.spmv_s_per_nnz = num("cal.spmv_s_per_nnz");
-  c.matrix_free_s_per_pair = num("cal.matrix_free_s_per_pair");
+  c.spmv_full_s_per_nnz = num("cal.spmv_full_s_per_nnz");
+  c.matrix_free = {num("cal.matrix_free.per_target_s"), num("cal.matrix_free.per_pair_s")};
   for (auto& [k, v] : t.meta) {
     if (k.rfind("cal.poisson_its.", 0) == 0) c.poisson_its[k.substr(16)] = parse_number(v, k);
     if (k.rfind("cal.heat_its.", 0) == 0) c.heat_its[k.substr(13)] = parse_number(v, k);
@@ -305,7 +335,7 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
     PlanUnit u = base(study, variant, k, h);
     const FusedMix& m = mix(mix_name);
     u.method = "fused";
-    u.time_s = c.fused.at(mix_name).seconds(u.targets, u.pairs);
+    u.time_s = u.time_before_s = c.fused.at(mix_name).seconds(u.targets, u.pairs);
     u.mem_mib = fused_mib(u, m);
     u.basis = "a*N_omega + b*pairs, mix " + mix_name;
     out.push_back(u);
@@ -313,7 +343,7 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
   auto add_voronoi = [&](const std::string& study, const std::string& variant, int k) {
     PlanUnit u = base(study, variant, k, 0);
     u.method = "voronoi";
-    u.time_s = c.voronoi_s_per_particle * u.N;
+    u.time_s = u.time_before_s = c.voronoi_s_per_particle * u.N;
     u.mem_mib = c.base_mib + 190.0 * u.N / kMiB;
     u.basis = "s/particle * N";
     out.push_back(u);
@@ -343,22 +373,31 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
     for (int k : all) add_voronoi(t.program, "voronoi", k);
   }
 
-  // The Laplacian products: assembled (12 B per non-zero) unless over the programs' memory
-  // budget, then matrix-free.  `pairs` is the non-zero count (self included = diagonal).
+  // The Laplacian products: assembled (kAssembledBytesPerNonzero) unless over the programs'
+  // memory budget, then matrix-free.  `pairs` is the non-zero count (self included = diagonal).
   auto product_s = [&](const PlanUnit& u, bool assembled) {
-    return assembled ? u.pairs * c.spmv_s_per_nnz : u.pairs * c.matrix_free_s_per_pair;
+    return assembled ? u.pairs * c.spmv_s_per_nnz : c.matrix_free.seconds(u.targets, u.pairs);
+  };
+  // Before the symmetric half: the full matrix where 12 B per non-zero fit the budget.
+  auto product_before_s = [&](const PlanUnit& u) {
+    const bool full = 12.0 * estimated_laplacian_nnz(static_cast<std::size_t>(u.N),
+                                                     static_cast<std::size_t>(u.targets), u.h,
+                                                     dom) <= kMaxAssembledBytes;
+    return full ? u.pairs * c.spmv_full_s_per_nnz : c.matrix_free.seconds(u.targets, u.pairs);
   };
   auto is_assembled = [&](const PlanUnit& u) {
-    return 12.0 * estimated_laplacian_nnz(static_cast<std::size_t>(u.N),
-                                          static_cast<std::size_t>(u.targets), u.h, dom) <=
+    return kAssembledBytesPerNonzero *
+               estimated_laplacian_nnz(static_cast<std::size_t>(u.N),
+                                       static_cast<std::size_t>(u.targets), u.h, dom) <=
            kMaxAssembledBytes;
   };
   // Memory: particles and volumes 25 B, ~8 vectors over the particles (data, solution,
-  // right-hand side) 64 B, CG's 6 vectors over Ω 48 B, the matrix 12 B per non-zero (or the
-  // kernel's sorted copies ~40 B per particle).
+  // right-hand side) 64 B, CG's 6 vectors over Ω 48 B, the assembled storage per non-zero
+  // and its diagonal, volumes and row pointers (or the kernel's sorted copies ~40 B per particle).
   auto pde_mib = [&](const PlanUnit& u, bool assembled) {
     return c.base_mib + (u.N * (25 + 64) + u.targets * 48 +
-                         (assembled ? 12 * u.pairs + 8 * u.targets : 40 * u.N)) / kMiB;
+                         (assembled ? kAssembledBytesPerNonzero * u.pairs + 36 * u.targets
+                                    : 40 * u.N)) / kMiB;
   };
 
   // Poisson (Table 4.4): set-up + (CG iterations + 2) products; iterations ∝ 1/h.
@@ -370,8 +409,9 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
         const double its = c.poisson_its.at(std::string(rule) + "/" + w) * pde_h(rule, dx_of(5)) / u.h;
         u.products = its + 2;
         u.method = as ? "assembled" : "matrix_free";
-        const double setup = as ? u.pairs * c.setup_s_per_nnz : u.pairs * c.matrix_free_s_per_pair * 2;
+        const double setup = as ? u.pairs * c.setup_s_per_nnz : 2 * product_s(u, false);
         u.time_s = setup + u.products * product_s(u, as);
+        u.time_before_s = setup + u.products * product_before_s(u);
         u.mem_mib = pde_mib(u, as);
         u.basis = "setup + (CG its " + fmt(std::round(its)) + " + 2) products";
         out.push_back(u);
@@ -397,7 +437,8 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
           PlanUnit a = base(study, "setup/" + w, k, h);
           const bool as = is_assembled(a);
           a.method = as ? "assembled" : "matrix_free";
-          a.time_s = as ? a.pairs * c.setup_s_per_nnz : a.pairs * c.matrix_free_s_per_pair * 2;
+          a.time_s = as ? a.pairs * c.setup_s_per_nnz : 2 * product_s(a, false);
+          a.time_before_s = a.time_s;
           a.mem_mib = pde_mib(a, as);
           a.recorded = false;
           a.basis = "Laplacian set-up (not in the rows' seconds)";
@@ -414,6 +455,7 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
             u.products = K * (1 + its);
             u.method = a.method;
             u.time_s = u.products * product_s(u, as);
+            u.time_before_s = u.products * product_before_s(u);
             u.mem_mib = a.mem_mib;
             u.basis = "K=" + fmt(K) + " steps, " + fmt(std::round(its * 10) / 10) + " CG its/step";
             u.trimmed = trimmed;

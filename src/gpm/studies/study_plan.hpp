@@ -52,8 +52,9 @@ struct Calibration {
   std::map<std::string, PassCost> fused;  // per weight mix (imoto9, thesis4_1, …)
   double voronoi_s_per_particle = 0;
   double setup_s_per_nnz = 0;             // Laplacian assembly + solver set-up, per non-zero
-  double spmv_s_per_nnz = 0;              // one assembled product, per non-zero
-  double matrix_free_s_per_pair = 0;      // one matrix-free product, per pair
+  double spmv_s_per_nnz = 0;              // one assembled product (symmetric half), per non-zero
+  double spmv_full_s_per_nnz = 0;         // the same with the full matrix (the plan's "before")
+  PassCost matrix_free;                   // one matrix-free product, per target and per pair
   std::map<std::string, double> poisson_its;  // "h10/<weight>" → CG iterations at Δx = 2^-5
   std::map<std::string, double> heat_its;     // "4.5/h10/<weight>/<θ>" → mean per step, 2^-5
   double seconds = 0;                     // wall time of the calibration
@@ -77,6 +78,7 @@ struct PlanUnit {
   double products = 0;  // operator applications (Poisson, heat), else 0
   std::string method;   // fused, voronoi, assembled, matrix_free
   double time_s = 0, mem_mib = 0;
+  double time_before_s = 0;  // the same unit with the full-matrix product (before the half)
   bool recorded = true;  // the study's data file records this unit's time (else plan only)
   std::string basis;     // how the time was predicted
   std::string trimmed;   // why the profile skips this unit (a trim of the catalog); empty: it runs
