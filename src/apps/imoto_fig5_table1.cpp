@@ -223,10 +223,10 @@ int body(int argc, char** argv) {
 
   // The loop over resolutions: one particle set per level, shared by the three m.
   for (int level : levels) {
-    // The orders m of this level still to do, and of those the ones this process computes.
+    // The orders m of this level still to do (on a cluster every rank takes a share of each).
     std::vector<double> orders;
     for (double m : kStudy.orders)
-      if (!cache.has({fmt(level), fmt(m)}, nw) && run.claim()) orders.push_back(m);
+      if (!cache.has({fmt(level), fmt(m)}, nw) && run.claim_shared()) orders.push_back(m);
     if (orders.empty()) continue;
     const double dx = std::ldexp(1.0, -level);
     const Particles p = jittered_grid(dx, seed, jitter, dom);
@@ -235,7 +235,9 @@ int body(int argc, char** argv) {
       // All nine weights in one pass over the particle pairs within h_N.
       const auto t0 = std::chrono::steady_clock::now();
       const double h = imoto_h(m, dx);
-      const FusedErrors e = fused_errors(p, V, h, requests, {kStudy.function});
+      ErrorMaxima maxima = fused_error_maxima(p, V, h, requests, {kStudy.function}, true, run.share());
+      run.reduce(maxima);
+      const FusedErrors e = relative_errors(maxima, requests, {kStudy.function});
       const double secs =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       for (std::size_t r = 0; r < nw; ++r) {

@@ -35,6 +35,7 @@
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/heat_tables.hpp"
+#include "gpm/studies/cost_model.hpp"
 #include "gpm/studies/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -129,7 +130,9 @@ int body(int argc, char** argv) {
       // The θ of this weight still to do, and of those the ones this process computes.
       std::vector<double> thetas;
       for (double th : ts.thetas)
-        if (!cache.has({wname, fmt(th), fmt(k)}) && run.claim()) thetas.push_back(th);
+        if (!cache.has({wname, fmt(th), fmt(k)}) &&
+            run.claim(heat_unit_work(dx, h, dt0, hs.T, th)))
+          thetas.push_back(th);
       if (thetas.empty()) continue;
       if (!checked) require_h_connectivity(p, h), checked = true;
       // One Laplacian per (level, weight), reused by every θ and every step.

@@ -34,6 +34,7 @@
 #include "gpm/solvers/stability.hpp"
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/profile.hpp"
+#include "gpm/studies/cost_model.hpp"
 #include "gpm/studies/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -111,7 +112,7 @@ int body(int argc, char** argv) {
     for (const auto& rule : kHRules) {
       const double h = pde_h(rule.rule, dx);
       for (const auto& wname : kWeights) {
-        if (cache.has({wname, rule.name, fmt(k)}) || !run.claim()) continue;
+        if (cache.has({wname, rule.name, fmt(k)}) || !run.claim(predicted_pairs(dx, h))) continue;
         if (!built) p = jittered_grid(dx, seed), V = uniform_volumes(p, dom), built = true;
         const auto t0 = std::chrono::steady_clock::now();
         const WeightFunction& w = weight(wname);

@@ -26,6 +26,7 @@
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/solvers/poisson_probes.hpp"
 #include "gpm/studies/catalog.hpp"
+#include "gpm/studies/cost_model.hpp"
 #include "gpm/studies/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -69,7 +70,7 @@ int body(int argc, char** argv) {
     for (const auto& rule : pde_h_rules()) {
       const double h = pde_h(rule, dx);
       for (const auto& wname : pde_weights()) {
-        if (cache.has({rule, wname, fmt(k)}) || !run.claim()) continue;
+        if (cache.has({rule, wname, fmt(k)}) || !run.claim(poisson_unit_work(dx, h))) continue;
         // Assemble −Δ_h (or keep it matrix-free), solve by CG, measure the error in Ω.
         const auto t0 = std::chrono::steady_clock::now();
         const DiscreteLaplacian L(p, V, weight(wname), h, storage, max_bytes);

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 #include "gpm/error.hpp"
 #include "gpm/kernel/kernel.hpp"
@@ -33,9 +34,13 @@ std::vector<KernelWeight> kernel_weights(const std::vector<ErrorRequest>& reques
   return kw;
 }
 
-FusedErrors fused_errors(const Particles& p, const std::vector<double>& V, double h,
-                         const std::vector<ErrorRequest>& requests,
-                         const std::vector<std::string>& functions, bool count_pairs) {
+ErrorMaxima fused_error_maxima(const Particles& p, const std::vector<double>& V, double h,
+                               const std::vector<ErrorRequest>& requests,
+                               const std::vector<std::string>& functions, bool count_pairs,
+                               TargetShare share) {
+  if (share.parts < 1 || share.part < 0 || share.part >= share.parts)
+    throw InputError("target share " + std::to_string(share.part) + " of " +
+                     std::to_string(share.parts) + " does not exist");
   if (functions.empty() || functions.size() > FusedKernel::kMaxFields)
     throw InputError("between 1 and " + std::to_string(FusedKernel::kMaxFields) +
                      " test functions per pass, got " + std::to_string(functions.size()));
@@ -50,17 +55,25 @@ FusedErrors fused_errors(const Particles& p, const std::vector<double>& V, doubl
     for (std::size_t i = 0; i < p.size(); ++i) v[i] = tf.back()->v(p.x[i], p.y[i]);
     fields.push_back(std::move(v));
   }
-  const auto targets = omega_targets(p);
-  if (targets.empty()) throw InputError("no particle lies inside Omega");
+  const auto all_targets = omega_targets(p);
+  if (all_targets.empty()) throw InputError("no particle lies inside Omega");
+  const std::size_t nt = all_targets.size();
+  const auto cut = [&](int part) { return nt * static_cast<std::size_t>(part) / static_cast<std::size_t>(share.parts); };
+  const std::vector<int32_t> targets(all_targets.begin() + static_cast<std::ptrdiff_t>(cut(share.part)),
+                                     all_targets.begin() + static_cast<std::ptrdiff_t>(cut(share.part + 1)));
 
   FusedKernel kernel(p, V, h, kw);
-  FusedErrors out;
-  if (count_pairs) out.pairs = static_cast<double>(kernel.count_pairs(targets).accepted);
+  ErrorMaxima out;
+  if (count_pairs && !targets.empty())
+    out.pairs = static_cast<double>(kernel.count_pairs(targets).accepted);
 
   // Running maxima of |error| and |exact| per (request, function).
   const std::size_t nrf = requests.size() * tf.size();
-  std::vector<double> err(nrf, 0), ref(nrf, 0);
-  std::vector<int32_t> worst(nrf, -1);
+  std::vector<double>& err = out.error;
+  std::vector<double>& ref = out.exact;
+  std::vector<int32_t>& worst = out.worst;
+  err.assign(nrf, 0), ref.assign(nrf, 0), worst.assign(nrf, -1);
+  if (targets.empty()) return out;
   auto accumulate = [&](const std::vector<int32_t>& tg, const KernelResult& res) {
     for (std::size_t ri = 0; ri < requests.size(); ++ri) {
       const auto& r = requests[ri];
@@ -138,19 +151,45 @@ FusedErrors fused_errors(const Particles& p, const std::vector<double>& V, doubl
     }
   }
   out.kernel_seconds = kernel_s;
+  return out;
+}
 
+void ErrorMaxima::merge_following(const ErrorMaxima& later) {
+  if (later.error.size() != error.size())
+    throw std::logic_error("ErrorMaxima::merge_following: passes of different requests");
+  for (std::size_t i = 0; i < error.size(); ++i) {
+    if (later.worst[i] >= 0 && (worst[i] < 0 || later.error[i] > error[i]))
+      error[i] = later.error[i], worst[i] = later.worst[i];
+    exact[i] = std::max(exact[i], later.exact[i]);
+  }
+  pairs += later.pairs;
+}
+
+FusedErrors relative_errors(const ErrorMaxima& m, const std::vector<ErrorRequest>& requests,
+                            const std::vector<std::string>& functions) {
+  FusedErrors out;
+  out.pairs = m.pairs;
+  out.kernel_seconds = m.kernel_seconds;
+  const std::size_t nf = functions.size();
   for (std::size_t ri = 0; ri < requests.size(); ++ri) {
     const auto& r = requests[ri];
-    for (std::size_t f = 0; f < tf.size(); ++f) {
-      const double q = ref[ri * tf.size() + f];
+    for (std::size_t f = 0; f < nf; ++f) {
+      const double q = m.exact[ri * nf + f];
       if (!(q > 0))
         throw InputError("the exact " + operator_name(r.op) + " of '" + functions[f] +
                          "' vanishes on Omega: relative error undefined");
-      out.errors.push_back({r.weight, functions[f], r.op, err[ri * tf.size() + f] / q,
-                            worst[ri * tf.size() + f]});
+      out.errors.push_back({r.weight, functions[f], r.op, m.error[ri * nf + f] / q,
+                            m.worst[ri * nf + f]});
     }
   }
   return out;
+}
+
+FusedErrors fused_errors(const Particles& p, const std::vector<double>& V, double h,
+                         const std::vector<ErrorRequest>& requests,
+                         const std::vector<std::string>& functions, bool count_pairs) {
+  return relative_errors(fused_error_maxima(p, V, h, requests, functions, count_pairs),
+                         requests, functions);
 }
 
 }  // namespace gpm

@@ -65,4 +65,11 @@ PassCost PassCost::fit(double targets, double pairs_a, double secs_a, double pai
   return c;
 }
 
+double poisson_unit_work(double dx, double h) { return predicted_pairs(dx, h) / h; }
+
+double heat_unit_work(double dx, double h, double dt0, double T, double theta) {
+  const double its = theta > 0 ? 30 * std::sqrt(dt0 / (h * h)) : 0;
+  return std::ceil(T / dt0) * (1 + its) * predicted_pairs(dx, h);
+}
+
 }  // namespace gpm

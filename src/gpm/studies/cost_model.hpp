@@ -37,6 +37,14 @@ double mean_disc_area(double h, const Domain& dom = Domain{});
 // Predicted pairs of one pass over the targets in Ω: (1/Δx²) · A(h)/Δx².
 double predicted_pairs(double dx, double h, const Domain& dom = Domain{});
 
+// Relative work of the PDE units, for dealing them over the ranks of a cluster (the plan has
+// the calibrated model; these need only be in proportion).  A product costs the non-zeros,
+// predicted_pairs.  A Poisson solve: iterations ∝ 1/h.  A heat run: K = ⌈T/Δt₀⌉ steps of one
+// product plus (θ > 0) CG iterations ≈ 30·√(Δt₀/h²) (measured 3 at Δt₀ = 0.0025h², 14–22 at
+// 0.5h²).
+double poisson_unit_work(double dx, double h);
+double heat_unit_work(double dx, double h, double dt0, double T, double theta);
+
 // t = per_target·targets + per_pair·pairs, seconds.
 struct PassCost {
   double per_target_s = 0, per_pair_s = 0;

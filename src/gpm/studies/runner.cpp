@@ -93,11 +93,55 @@ void StudyRunner::expect(double work, const char* unit) {
   progress_ = std::make_unique<Progress>(program_, work, unit, 0.0);
 }
 
-bool StudyRunner::claim() {
+bool StudyRunner::claim(double cost) {
   const long unit = next_unit_++;
-  if (unit % size_ != rank_) return false;
-  claimed_.push_back(unit);
+  if (load_.empty()) load_.assign(static_cast<std::size_t>(size_), 0.0);
+  const auto least = std::min_element(load_.begin(), load_.end());
+  *least += cost;
+  if (least - load_.begin() != rank_) return false;
+  claimed_.push_back({unit, false});
   return true;
+}
+
+bool StudyRunner::claim_shared() {
+  claimed_.push_back({next_unit_++, size_ > 1});
+  return true;
+}
+
+TargetShare StudyRunner::share() const {
+  if (claimed_.empty() || !claimed_.front().shared) return {};
+  return {rank_, size_};
+}
+
+void StudyRunner::reduce(ErrorMaxima& m) const {
+  if (share().parts == 1) return;
+#ifdef GPM_MPI
+  // Every share as one array of doubles (maxima, exact maxima, worst particles, pairs; the
+  // particle indices are exact in a double), gathered on every rank and merged in rank order.
+  const std::size_t n = m.error.size(), len = 3 * n + 2;
+  std::vector<double> mine(len), all(len * static_cast<std::size_t>(size_));
+  for (std::size_t i = 0; i < n; ++i)
+    mine[i] = m.error[i], mine[n + i] = m.exact[i], mine[2 * n + i] = m.worst[i];
+  mine[3 * n] = m.pairs, mine[3 * n + 1] = m.kernel_seconds;
+  MPI_Allgather(mine.data(), static_cast<int>(len), MPI_DOUBLE, all.data(),
+                static_cast<int>(len), MPI_DOUBLE, MPI_COMM_WORLD);
+  ErrorMaxima merged;
+  for (int r = 0; r < size_; ++r) {
+    const double* a = all.data() + len * static_cast<std::size_t>(r);
+    ErrorMaxima part;
+    part.error.assign(a, a + n);
+    part.exact.assign(a + n, a + 2 * n);
+    for (std::size_t i = 0; i < n; ++i) part.worst.push_back(static_cast<int32_t>(a[2 * n + i]));
+    part.pairs = a[3 * n];
+    part.kernel_seconds = a[3 * n + 1];
+    if (r == 0) merged = std::move(part);
+    else merged.merge_following(part);
+  }
+  merged.kernel_seconds = m.kernel_seconds;  // a timing: this rank's own share
+  m = std::move(merged);
+#else
+  (void)m;  // one process: share() is always the whole
+#endif
 }
 
 // A program may claim several units before computing them (the θ of one Laplacian): their
@@ -108,7 +152,8 @@ void StudyRunner::add(std::vector<std::string> row) {
     return;
   }
   if (claimed_.empty()) throw std::logic_error("StudyRunner::add: a row of no claimed unit");
-  mine_.emplace_back(claimed_.front(), std::move(row));
+  if (claimed_.front().shared && rank_ != 0) return;  // every rank has them: rank 0's are kept
+  mine_.emplace_back(claimed_.front().unit, std::move(row));
 }
 
 // The header's record of the run so far: wall time and peak memory.

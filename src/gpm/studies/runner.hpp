@@ -8,12 +8,19 @@
 // No inheritance: a program makes a StudyRunner, adds its own options to args(), and calls
 // open() / claim() / add() / unit_done() / finish() around its loop.
 //
-// On a cluster (built with -DGPM_MPI=ON, started by mpirun): every rank runs the same loop;
-// claim() deals the units still to do round-robin over the ranks in loop order, each rank
-// computes its own, and finish() gathers every row to rank 0, which adds them in loop order
-// and alone writes the data file (holding its lock).  The file is then the one a single
-// process writes, timing columns aside.  An MPI run writes at its end only (a job should be
-// sized to its time limit: one table per job, see bench/slurm_paper.sh).
+// On a cluster (built with -DGPM_MPI=ON, started by mpirun): every rank runs the same loop,
+// and a unit is done one of two ways.
+//   * Dealt: claim(cost) gives the unit to one rank, the one with the least predicted work
+//     so far (ties: the lowest rank; with equal costs this is round-robin in loop order).
+//     Units whose arithmetic cannot be split without changing its result (a CG solve, a
+//     heat run) are dealt.
+//   * Shared: claim_shared() gives the unit to every rank; each computes its share() of the
+//     targets and reduce() combines the shares in rank order, exactly (maxima: the fused
+//     truncation passes), so that the largest unit (2^-12) no longer bounds the run.
+// finish() gathers every row to rank 0, which adds them in loop order and alone writes the
+// data file (holding its lock).  The file is then the one a single process writes, timing
+// columns aside.  An MPI run writes at its end only (a job should be sized to its time
+// limit: one table per job, see bench/slurm_paper.sh).
 //
 //   StudyRunner run("thesis_table4_4", "Discrete Poisson problem …", poisson_table().levels.help());
 //   run.args().opt("tol", "1e-10", "CG relative residual");
@@ -32,6 +39,7 @@
 
 #include "gpm/io/args.hpp"
 #include "gpm/io/progress.hpp"
+#include "gpm/operators/fused_errors.hpp"
 #include "gpm/studies/profile.hpp"
 #include "gpm/studies/store.hpp"
 
@@ -76,8 +84,17 @@ class StudyRunner {
   LevelCache& cache() { return *cache_; }
 
   // Whether this process computes the next unit still to do.  Called, in loop order, for every
-  // unit not in the cache (the same sequence on every rank); always true on one process.
-  bool claim();
+  // unit not in the cache (the same sequence on every rank, with the same costs); always
+  // true on one process.  `cost`: the unit's predicted work, any additive measure.
+  bool claim(double cost = 1);
+  // The next unit, for every rank: each computes its share() of the targets and calls
+  // reduce() on its maxima; the unit's rows are kept from rank 0 (every rank may add them).
+  // Always true.
+  bool claim_shared();
+  TargetShare share() const;  // of the unit being computed: {rank, ranks} if shared, else all
+  // Every share of the current shared unit merged in rank order (the result of one pass over
+  // all targets), on every rank.  One process: unchanged.
+  void reduce(ErrorMaxima& m) const;
   // One row of a unit this process computed (LevelCache::add on one process; kept for the
   // gathering in finish() on several).
   void add(std::vector<std::string> row);
@@ -114,7 +131,12 @@ class StudyRunner {
   std::chrono::steady_clock::time_point start_;
   int rank_ = 0, size_ = 1;
   long next_unit_ = 0;        // claim() counter
-  std::deque<long> claimed_;  // units claimed here and not yet done, in claim order
+  std::vector<double> load_;  // predicted work dealt to each rank so far
+  struct Claimed {
+    long unit;
+    bool shared;
+  };
+  std::deque<Claimed> claimed_;  // units claimed here and not yet done, in claim order
   // Rows computed here while several ranks run: (unit number, row).
   std::vector<std::pair<long, std::vector<std::string>>> mine_;
   void gather_rows();

@@ -317,7 +317,7 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
     std::unique_ptr<LevelData> level;  // built on the first pass of this level that runs
     for (HReading r : readings)
       for (Volumes v : volumes) {
-        if (!todo(r, v, k) || !run.claim()) continue;
+        if (!todo(r, v, k) || !run.claim_shared()) continue;
         if (!level) {
           level = std::make_unique<LevelData>();
           level->p = jittered_grid(dx, seed, 0.25, dom);
@@ -335,7 +335,10 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
           V = &uniform;
         }
         const auto t0 = std::chrono::steady_clock::now();
-        const FusedErrors e = fused_errors(p, *V, h, spec.requests, functions, true);
+        // One pass (on a cluster: this rank's share of the targets, then all shares merged).
+        ErrorMaxima maxima = fused_error_maxima(p, *V, h, spec.requests, functions, true, run.share());
+        run.reduce(maxima);
+        const FusedErrors e = relative_errors(maxima, spec.requests, functions);
         const double pass_s = seconds_since(t0);
         const double rss = peak_rss_mib();
         for (auto& er : e.errors) {
