@@ -68,6 +68,18 @@ if(GPM_CUDA)
   target_include_directories(gpm_cuda PUBLIC ${CMAKE_SOURCE_DIR}/src)
   target_link_libraries(gpm_cuda PUBLIC $<LINK_ONLY:gpm_core> CUDA::cudart_static)
 
+  # Every study program and the gpm tool get the device (src/cuda/device_install.cpp installs
+  # it at start-up, so the library is linked whole); --device cuda selects it.
+  foreach(app_src ${GPM_APPS})
+    get_filename_component(app ${app_src} NAME_WE)
+    if(TARGET ${app})
+      target_link_libraries(${app} PRIVATE "$<LINK_LIBRARY:WHOLE_ARCHIVE,gpm_cuda>")
+    endif()
+  endforeach()
+  if(TARGET gpm)
+    target_link_libraries(gpm PRIVATE "$<LINK_LIBRARY:WHOLE_ARCHIVE,gpm_cuda>")
+  endif()
+
   add_executable(bench_cuda ${CMAKE_SOURCE_DIR}/src/cuda/bench_cuda.cpp)
   # C++20 stated here too: through CMAKE_PROJECT_INCLUDE (below) this file runs before the
   # top level sets CMAKE_CXX_STANDARD.

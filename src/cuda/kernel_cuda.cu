@@ -148,6 +148,25 @@ __global__ void truncation_kernel(const __grid_constant__ GridView g,
   if constexpr ((OPS & kOpLap) != 0) out[3 * n + pos] = o[3];
 }
 
+// A study's fused pass: one thread per target, every weight and field (fused_target_sums);
+// the weights' tables in device memory (9 weights' tables exceed the 4 KB of parameters),
+// the fields one after another in sorted order (field f at fields + f·n).
+__global__ void fused_pass_kernel(const __grid_constant__ GridView g,
+                                  const WeightEntry* __restrict__ we, int nw,
+                                  const double* __restrict__ fields, int nf, int64_t n,
+                                  const int32_t* __restrict__ tslot,
+                                  const int32_t* __restrict__ tpos, int32_t nt,
+                                  double* __restrict__ out) {
+  const int32_t it = static_cast<int32_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (it >= nt) return;
+  const double* v[kMaxFieldsDevice];
+  for (int f = 0; f < nf; ++f) v[f] = fields + static_cast<int64_t>(f) * n;
+  double o[kMaxWeights * kMaxFieldsDevice * 4];
+  fused_target_sums(g, we, nw, v, nf, tslot[it], o);
+  const std::size_t pos = static_cast<std::size_t>(tpos[it]), m = static_cast<std::size_t>(nt);
+  for (int c = 0; c < nw * nf * 4; ++c) out[static_cast<std::size_t>(c) * m + pos] = o[c];
+}
+
 // field[slot[u]] = x[u]: the unknowns into the (otherwise zero) sorted field.
 __global__ void scatter_kernel(const double* __restrict__ x, const int32_t* __restrict__ slot,
                                int32_t nu, double* __restrict__ field) {
@@ -392,6 +411,85 @@ void CudaLaplacian::apply(const std::vector<double>& x, std::vector<double>& y) 
   L.last_ms = K.run(K.field.get(), nu, kOpLap);
   y.resize(nu);
   K.out.download(y.data(), nu, 3 * nu);
+}
+
+// ---------------------------------------------------------------------------------
+
+struct CudaFusedPass::Impl {
+  CudaKernel k;  // the particles, cells and target ordering (its own weight unused)
+  std::vector<WeightEntry> entries;
+  DeviceArray<WeightEntry> we;
+  mutable DeviceArray<double> fields, out;
+  Impl(const Particles& p, const std::vector<double>& V, const WeightFunction& w0, double h,
+       int cells_per_h)
+      : k(p, V, w0, h, kOpLap, cells_per_h) {}
+};
+
+CudaFusedPass::CudaFusedPass(const Particles& p, const std::vector<double>& V, double h,
+                             const std::vector<std::pair<WeightFunction, unsigned>>& weights,
+                             int cells_per_h) {
+  if (weights.empty() || weights.size() > static_cast<std::size_t>(kMaxWeights))
+    throw InputError("CUDA fused pass: between 1 and " + std::to_string(kMaxWeights) +
+                     " weights, got " + std::to_string(weights.size()));
+  std::vector<WeightEntry> entries;
+  for (auto& [w, ops] : weights) {
+    if ((ops & kOpAll) == 0) throw InputError("CUDA fused pass: no operator for weight '" + w.name + "'");
+    const WeightEntry e = weight_entry(w, ops);
+    if ((e.ops & kOpInterp) && e.w.negative_power)
+      throw InputError("weight '" + w.name + "' is unbounded at r = 0: no interpolant with it");
+    entries.push_back(e);
+  }
+  impl_ = std::make_unique<Impl>(p, V, weights.front().first, h, cells_per_h);
+  impl_->entries = entries;
+  impl_->we.allocate(entries.size(), "the weights' tables");
+  impl_->we.upload(entries.data(), entries.size());
+}
+
+CudaFusedPass::~CudaFusedPass() = default;
+CudaFusedPass::CudaFusedPass(CudaFusedPass&&) noexcept = default;
+CudaFusedPass& CudaFusedPass::operator=(CudaFusedPass&&) noexcept = default;
+
+CudaPassResult CudaFusedPass::apply(const std::vector<int32_t>& targets,
+                                    const std::vector<std::vector<double>>& fields) const {
+  const Impl& I = *impl_;
+  const CudaKernel::Impl& K = *I.k.impl_;
+  const std::size_t n = K.cl.size();
+  if (fields.empty() || fields.size() > static_cast<std::size_t>(kMaxFieldsDevice))
+    throw InputError("CUDA fused pass: between 1 and " + std::to_string(kMaxFieldsDevice) +
+                     " fields, got " + std::to_string(fields.size()));
+  for (auto& f : fields)
+    if (f.size() != n)
+      throw InputError("CUDA fused pass: a field's size differs from the number of particles");
+  CudaPassResult r;
+  r.nw = static_cast<int>(I.entries.size());
+  r.nf = static_cast<int>(fields.size());
+  r.nt = targets.size();
+  std::vector<int32_t> slot, pos;
+  K.order_targets(targets, slot, pos);
+  if (r.nt == 0) return r;
+  if (r.nt > static_cast<std::size_t>(INT32_MAX))
+    throw InputError("CUDA fused pass: more than 2^31 - 1 targets");
+  K.prepare(slot, pos);
+  std::vector<double> sorted;
+  sorted.reserve(n * fields.size());
+  for (auto& f : fields) {
+    const std::vector<double> s = K.cl.gather(f, 0.0);
+    sorted.insert(sorted.end(), s.begin(), s.end());
+  }
+  if (I.fields.size() < sorted.size()) I.fields.allocate(sorted.size(), "the fields");
+  I.fields.upload(sorted.data(), sorted.size());
+  const std::size_t ncol = static_cast<std::size_t>(r.nw * r.nf * 4);
+  if (I.out.size() < ncol * r.nt) I.out.allocate(ncol * r.nt, "the pass's results");
+  K.ev->start();
+  fused_pass_kernel<<<blocks_for(r.nt), kThreads>>>(
+      K.dev, I.we.get(), r.nw, I.fields.get(), r.nf, static_cast<int64_t>(n), K.tslot.get(),
+      K.tpos.get(), static_cast<int32_t>(r.nt), I.out.get());
+  GPM_CUDA_CHECK(cudaGetLastError());
+  K.ev->stop();
+  r.kernel_ms = K.ev->elapsed_ms();
+  r.data.resize(ncol * r.nt);
+  I.out.download(r.data.data(), r.data.size());
+  return r;
 }
 
 }  // namespace gpm::cuda

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gpm/geometry/domain.hpp"
@@ -67,6 +68,7 @@ class CudaKernel {
 
  private:
   friend class CudaLaplacian;
+  friend class CudaFusedPass;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
@@ -87,6 +89,42 @@ class CudaLaplacian {
   // InputError if x.size() differs from n_unknowns(); y is resized.
   void apply(const std::vector<double>& x, std::vector<double>& y) const;
   double last_kernel_ms() const;  // device time of the last apply's kernel
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// A study's whole fused truncation pass on the device: several weights (each with its own
+// operators, bits 1 Π, 2 ∇, 4 Δ) and several fields in one pass over the pairs, the arithmetic
+// of fused_target_sums (kernel_cuda_body.hpp; tests/unit/test_cuda_body.cpp checks it on the
+// CPU against gpm::FusedKernel for imoto's and the thesis tables' mixes).  At most
+// kMaxWeights = 9 weights and kMaxFieldsDevice = 4 fields (the studies use 9 and 3).
+struct CudaPassResult {
+  int nw = 0, nf = 0;
+  std::size_t nt = 0;           // targets, in the caller's order
+  std::vector<double> data;     // column ((w·nf + f)·4 + c), c = Π, ∂x ∇, ∂y ∇, Δ: nt values each
+  double kernel_ms = 0;         // device time of the kernel alone
+  const double* column(int w, int f, int c) const {
+    return data.data() + (static_cast<std::size_t>((w * nf + f) * 4 + c)) * nt;
+  }
+};
+
+class CudaFusedPass {
+ public:
+  // InputError for h ≤ 0, sizes that differ, no weight or more than kMaxWeights, a weight
+  // unbounded at 0 asked for Π, or no CUDA device.
+  CudaFusedPass(const Particles& p, const std::vector<double>& V, double h,
+                const std::vector<std::pair<WeightFunction, unsigned>>& weights,
+                int cells_per_h = 4);
+  ~CudaFusedPass();
+  CudaFusedPass(CudaFusedPass&&) noexcept;
+  CudaFusedPass& operator=(CudaFusedPass&&) noexcept;
+
+  // Every weight's operators of every field (one value per particle, original order) at the
+  // targets (particle indices).  InputError for a bad target, field size or field count.
+  CudaPassResult apply(const std::vector<int32_t>& targets,
+                       const std::vector<std::vector<double>>& fields) const;
 
  private:
   struct Impl;

@@ -224,4 +224,87 @@ inline void target_sums_any(unsigned ops, const GridView& g, const PieceTable& w
   }
 }
 
+// ---------------------------------------------------------------------------------
+// A study's fused pass: several weights and fields in one loop over the pairs (imoto's nine
+// weights and one field; the thesis tables' up to six weights, three operators and their
+// test functions).  Per pair the distance is computed once, per weight W and G once, per
+// field the sums of the operators that weight asks for — the work gpm::FusedKernel does,
+// summed in slot order (deterministic for a cell size).
+
+constexpr int kMaxWeights = 9, kMaxFieldsDevice = 4;
+
+// One weight of the pass: its tables, G mode and operators (bits kOpInterp, kOpGrad, kOpLap).
+struct WeightEntry {
+  PieceTable w, gq;
+  int gmode = kGOwnTable;
+  unsigned ops = kOpAll;
+};
+
+inline WeightEntry weight_entry(const WeightFunction& w, unsigned ops) {
+  WeightEntry e;
+  e.w = piece_table(w, 0);
+  e.gq = piece_table(w, 2);
+  e.ops = ops & kOpAll;
+  e.gmode = g_mode(e.gq, e.ops);
+  return e;
+}
+
+// The sums of one target for every weight and field, scaled like target_sums:
+// out[(wi·nf + f)·4 + c], c = Π, ∂x ∇, ∂y ∇, Δ (0 where weight wi does not ask for it).
+// v[f]: field f in sorted order.  nw ≤ kMaxWeights, nf ≤ kMaxFieldsDevice.
+GPM_HD inline void fused_target_sums(const GridView& g, const WeightEntry* we, int nw,
+                                     const double* const* v, int nf, int32_t slot, double* out) {
+  double acc[kMaxWeights * kMaxFieldsDevice * 4];
+  for (int i = 0; i < nw * nf * 4; ++i) acc[i] = 0;
+  double vt[kMaxFieldsDevice];
+  for (int f = 0; f < nf; ++f) vt[f] = v[f][slot];
+  const double px = g.xs[slot], py = g.ys[slot];
+  const double hm = g.h + g.margin;
+  const int64_t r0 = clamp_cell((py - hm - g.y0) * g.inv_c, g.ny);
+  const int64_t r1 = clamp_cell((py + hm - g.y0) * g.inv_c, g.ny);
+  for (int64_t cy = r0; cy <= r1; ++cy) {
+    const double ylo = g.y0 + static_cast<double>(cy) * g.c, yhi = ylo + g.c;
+    double dyb = ylo - py > py - yhi ? ylo - py : py - yhi;
+    dyb = dyb - g.margin > 0 ? dyb - g.margin : 0.0;
+    if (dyb >= g.h) continue;
+    const double half = std::sqrt(g.h2 - dyb * dyb) + g.margin;
+    const int64_t c0 = clamp_cell((px - half - g.x0) * g.inv_c, g.nx);
+    const int64_t c1 = clamp_cell((px + half - g.x0) * g.inv_c, g.nx);
+    const int32_t b = g.start[cy * g.nx + c0], e = g.start[cy * g.nx + c1 + 1];
+    for (int32_t k = b; k < e; ++k) {
+      const double dx = g.xs[k] - px, dy = g.ys[k] - py;
+      const double r2 = dx * dx + dy * dy;
+      if (!(r2 < g.h2)) continue;
+      const double q = std::sqrt(r2) * g.inv_h;
+      const double Vk = g.Vs[k];
+      for (int wi = 0; wi < nw; ++wi) {
+        const WeightEntry& E = we[wi];
+        const bool pi = (E.ops & kOpInterp) != 0, gr = (E.ops & (kOpGrad | kOpLap)) != 0;
+        double W = 0;
+        if (pi || (gr && E.gmode == kGFromW)) W = eval_pieces(E.w, q);
+        double G = 0;
+        if (gr && r2 > 0) G = E.gmode == kGFromW ? W * (g.h2 / r2) : eval_pieces(E.gq, q);
+        for (int f = 0; f < nf; ++f) {
+          double* a = acc + (wi * nf + f) * 4;
+          const double vk = v[f][k];
+          if (pi) a[0] += Vk * vk * W;
+          if (gr && r2 > 0) {  // Λ excludes r = 0
+            const double t = G * (Vk * (vk - vt[f]));
+            if (E.ops & kOpGrad) a[1] += t * dx, a[2] += t * dy;
+            if (E.ops & kOpLap) a[3] += t;
+          }
+        }
+      }
+    }
+  }
+  constexpr double kD = 2.0;
+  const double h4 = g.h2 * g.h2;
+  for (int i = 0; i < nw * nf; ++i) {
+    out[4 * i + 0] = acc[4 * i + 0] / g.h2;
+    out[4 * i + 1] = kD * acc[4 * i + 1] / h4;
+    out[4 * i + 2] = kD * acc[4 * i + 2] / h4;
+    out[4 * i + 3] = 2.0 * kD * acc[4 * i + 3] / h4;
+  }
+}
+
 }  // namespace gpm::cuda

@@ -48,6 +48,7 @@ for t in 5 6 7; do
   verify thesis_table4_${t}_h15.tsv thesis_heat --table 4.$t --h-rule h15 --levels 5
 done
 verify thesis_table4_7_dtexact.tsv thesis_heat --table 4.7 --dt-rule exact --levels 5
+verify thesis_table4_5_cellvol.tsv thesis_heat --table 4.5 --volumes cell --levels 5
 verify thesis_table4_6_cellvol.tsv thesis_heat --table 4.6 --volumes cell --levels 5
 verify thesis_table4_7_cellvol.tsv thesis_heat --table 4.7 --volumes cell --levels 5
 verify thesis_table4_7_dtexact_cellvol.tsv thesis_heat --table 4.7 --dt-rule exact --volumes cell --levels 5

@@ -23,7 +23,10 @@
 #include "gpm/geometry/cells.hpp"
 #include "gpm/geometry/domain.hpp"
 #include "gpm/kernel/kernel.hpp"
+#include "gpm/operators/fused_errors.hpp"
 #include "gpm/operators/testfunctions.hpp"
+#include "gpm/studies/catalog.hpp"
+#include "gpm/studies/thesis_truncation.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -119,5 +122,79 @@ TEST_CASE("CUDA piece tables: the divide only where w/q^2 needs it", "[cuda]") {
     // Values agree with the weight itself away from the pieces' ends.
     for (double q : {0.05, 0.3, 0.55, 0.8, 0.95})
       CHECK(cuda::eval_pieces(t, q) == Approx(w.value(q)).epsilon(1e-12).margin(1e-12));
+  }
+}
+
+// The studies' own fused passes (issue 15: every paper-profile truncation pass): imoto's nine
+// weights on one field and the thesis tables' mixes on their test functions, with uneven
+// volumes (the Voronoi volumes of Tables 4.2/4.3 enter the same way), at once through
+// fused_target_sums, against gpm::FusedKernel for every requested weight, operator and field.
+TEST_CASE("CUDA body on the CPU: the studies' multi-weight passes equal the fused kernel", "[cuda]") {
+  struct Mix {
+    std::string name;
+    std::vector<ErrorRequest> requests;
+    std::vector<std::string> functions;
+  };
+  std::vector<Mix> mixes = {{"imoto9", imoto_study().requests(), {imoto_study().function}}};
+  std::vector<std::string> cases;
+  for (auto& c : thesis_cases()) cases.push_back(c.function);
+  for (auto& t : thesis_table_specs()) mixes.push_back({t.mix(), t.requests, cases});
+
+  const Particles p = jittered_grid(std::pow(2.0, -6), 2);
+  std::vector<double> V(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i)
+    V[i] = std::pow(2.0, -12) * (0.8 + 0.4 * std::fabs(std::sin(7.0 * static_cast<double>(i))));
+  const std::vector<int32_t> targets = omega_targets(p);
+  const double h = 0.1;
+  const CellList cl(p.x, p.y, h / 4);
+  const std::vector<double> Vs = cl.gather(V);
+  const cuda::GridView g = cuda::grid_view(cl, Vs.data(), h);
+  for (const Mix& m : mixes) {
+    INFO("mix " << m.name);
+    const std::vector<KernelWeight> kw = kernel_weights(m.requests);
+    REQUIRE(kw.size() <= static_cast<std::size_t>(cuda::kMaxWeights));
+    REQUIRE(m.functions.size() <= static_cast<std::size_t>(cuda::kMaxFieldsDevice));
+    std::vector<cuda::WeightEntry> we;
+    for (auto& k : kw) we.push_back(cuda::weight_entry(k.weight, k.ops));
+    std::vector<std::vector<double>> fields, sorted;
+    for (auto& f : m.functions) {
+      const TestFunction& tf = test_function(f);
+      std::vector<double> v(p.size());
+      for (std::size_t i = 0; i < p.size(); ++i) v[i] = tf.v(p.x[i], p.y[i]);
+      sorted.push_back(cl.gather(v));
+      fields.push_back(std::move(v));
+    }
+    std::vector<const double*> vp;
+    for (auto& s : sorted) vp.push_back(s.data());
+    const int nw = static_cast<int>(we.size()), nf = static_cast<int>(vp.size());
+    // The emulated device pass: column (w, f, c) at every target.
+    std::vector<std::vector<double>> cols(static_cast<std::size_t>(nw * nf * 4),
+                                          std::vector<double>(targets.size()));
+    std::vector<double> o(static_cast<std::size_t>(nw * nf * 4));
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      cuda::fused_target_sums(g, we.data(), nw, vp.data(), nf, cl.slot()[targets[t]], o.data());
+      for (std::size_t c = 0; c < o.size(); ++c) cols[c][t] = o[c];
+    }
+    const FusedKernel fk(p, V, h, kw);
+    const KernelResult ref = fk.apply(targets, fields);
+    int compared = 0;
+    for (int w = 0; w < nw; ++w)
+      for (int f = 0; f < nf; ++f) {
+        auto col = [&](int c) { return cols[static_cast<std::size_t>((w * nf + f) * 4 + c)]; };
+        if (kw[w].ops & kInterp) {
+          CHECK(max_rel_diff(col(0), ref.interpolant(w, f)) < 1e-11);
+          ++compared;
+        }
+        if (kw[w].ops & kGrad) {
+          CHECK(max_rel_diff(col(1), ref.grad_x(w, f)) < 1e-11);
+          CHECK(max_rel_diff(col(2), ref.grad_y(w, f)) < 1e-11);
+          ++compared;
+        }
+        if (kw[w].ops & kLap) {
+          CHECK(max_rel_diff(col(3), ref.laplacian(w, f)) < 1e-11);
+          ++compared;
+        }
+      }
+    CHECK(compared >= nw * nf);
   }
 }

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "gpm/error.hpp"
+#include "gpm/kernel/device_pass.hpp"
 #include "gpm/kernel/kernel.hpp"
 #include "gpm/operators/testfunctions.hpp"
 #include "gpm/weights/weights.hpp"
@@ -74,11 +75,18 @@ ErrorMaxima fused_error_maxima(const Particles& p, const std::vector<double>& V,
   std::vector<int32_t>& worst = out.worst;
   err.assign(nrf, 0), ref.assign(nrf, 0), worst.assign(nrf, -1);
   if (targets.empty()) return out;
-  auto accumulate = [&](const std::vector<int32_t>& tg, const KernelResult& res) {
+  // col(w, f, c): the operator c (0 Π, 1 ∂x ∇, 2 ∂y ∇, 3 Δ) of weight w, field f at the
+  // chunk's targets, from the CPU kernel's result or the device's columns.
+  auto accumulate = [&](const std::vector<int32_t>& tg, auto col) {
     for (std::size_t ri = 0; ri < requests.size(); ++ri) {
       const auto& r = requests[ri];
       const int w = slot.at(r.weight);
       for (std::size_t f = 0; f < tf.size(); ++f) {
+        const int fi = static_cast<int>(f);
+        const double* pi = col(w, fi, 0);
+        const double* gx = col(w, fi, 1);
+        const double* gy = col(w, fi, 2);
+        const double* lap = col(w, fi, 3);
         double& em = err[ri * tf.size() + f];
         int32_t& where = worst[ri * tf.size() + f];
         double& qm = ref[ri * tf.size() + f];
@@ -88,18 +96,17 @@ ErrorMaxima fused_error_maxima(const Particles& p, const std::vector<double>& V,
           double e = 0, q = 0;
           switch (r.op) {
             case Operator::interp:
-              e = std::fabs(tf[f]->v(x, y) - res.interpolant(w, f)[k]);
+              e = std::fabs(tf[f]->v(x, y) - pi[k]);
               q = std::fabs(tf[f]->v(x, y));
               break;
             case Operator::grad:
               // Euclidean length of the error vector (imoto §1: |x| is the Euclidean
               // norm on R^d; thesis (1.27) [C]^d and [ℓ∞(Ω)]² inherit it).
-              e = std::hypot(tf[f]->vx(x, y) - res.grad_x(w, f)[k],
-                             tf[f]->vy(x, y) - res.grad_y(w, f)[k]);
+              e = std::hypot(tf[f]->vx(x, y) - gx[k], tf[f]->vy(x, y) - gy[k]);
               q = std::hypot(tf[f]->vx(x, y), tf[f]->vy(x, y));
               break;
             case Operator::lap:
-              e = std::fabs(tf[f]->lap(x, y) - res.laplacian(w, f)[k]);
+              e = std::fabs(tf[f]->lap(x, y) - lap[k]);
               q = std::fabs(tf[f]->lap(x, y));
               break;
           }
@@ -123,23 +130,44 @@ ErrorMaxima fused_error_maxima(const Particles& p, const std::vector<double>& V,
   auto since = [](std::chrono::steady_clock::time_point a) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
   };
+  // The operators of a chunk of targets: the CPU kernel, or the installed device
+  // (device_pass.hpp) when this process uses one.
+  std::unique_ptr<DevicePass> device;
+  if (using_device()) device = make_device_pass(p, V, h, kw);
+  KernelResult res;
+  DeviceColumns dc;
+  std::vector<const std::vector<double>*> fp;
+  for (auto& v : fields) fp.push_back(&v);
+  auto evaluate = [&](const std::vector<int32_t>& tg) {
+    const auto tk = std::chrono::steady_clock::now();
+    if (device) {
+      dc = device->apply(tg, fields);
+      kernel_s += since(tk);
+      accumulate(tg, [&](int w, int f, int c) { return dc.column(w, f, c); });
+      return;
+    }
+    kernel.apply(tg, fp, res);
+    kernel_s += since(tk);
+    accumulate(tg, [&](int w, int f, int c) -> const double* {
+      static constexpr KernelOp kOpOf[4] = {kInterp, kGrad, kGrad, kLap};
+      if (!res.has(w, kOpOf[c])) return nullptr;  // not requested: never read
+      switch (c) {
+        case 0: return res.interpolant(w, f).data();
+        case 1: return res.grad_x(w, f).data();
+        case 2: return res.grad_y(w, f).data();
+        default: return res.laplacian(w, f).data();
+      }
+    });
+  };
   if (targets.size() <= kChunkTargets) {
-    const KernelResult res = kernel.apply(targets, fields);
-    kernel_s = since(t0);
-    accumulate(targets, res);
+    evaluate(targets);
   } else {
     const std::size_t per = (targets.size() + kChunks - 1) / kChunks;
     auto last = t0;
-    KernelResult res;
-    std::vector<const std::vector<double>*> fp;
-    for (auto& v : fields) fp.push_back(&v);
     for (std::size_t b = 0; b < targets.size(); b += per) {
       const std::vector<int32_t> tg(targets.begin() + b,
                                     targets.begin() + std::min(targets.size(), b + per));
-      const auto tk = std::chrono::steady_clock::now();
-      kernel.apply(tg, fp, res);
-      kernel_s += since(tk);
-      accumulate(tg, res);
+      evaluate(tg);
       const auto now = std::chrono::steady_clock::now();
       if (std::chrono::duration<double>(now - last).count() >= 30) {
         const double done = static_cast<double>(b + tg.size()) / static_cast<double>(targets.size());

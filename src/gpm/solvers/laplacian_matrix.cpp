@@ -11,6 +11,7 @@
 
 #include "gpm/error.hpp"
 #include "gpm/geometry/cells.hpp"
+#include "gpm/kernel/device_pass.hpp"
 #include "gpm/kernel/kernel.hpp"
 
 namespace gpm {
@@ -95,7 +96,10 @@ DiscreteLaplacian::DiscreteLaplacian(const Particles& p, const std::vector<doubl
              (storage == LaplacianStorage::automatic && fits)) {
     assemble(p, w);
   } else {
-    kernel_ = std::make_unique<FusedKernel>(p, V_, h_, std::vector<KernelWeight>{{w, kLap}});
+    if (using_device())
+      device_ = make_device_pass(p, V_, h_, std::vector<KernelWeight>{{w, kLap}});
+    else
+      kernel_ = std::make_unique<FusedKernel>(p, V_, h_, std::vector<KernelWeight>{{w, kLap}});
     compute_diagonal(p, w);
   }
   assembly_s_ = seconds_since(t0);
@@ -387,8 +391,14 @@ void DiscreteLaplacian::apply_full(const Eigen::VectorXd& v, Eigen::VectorXd& y)
       for (int64_t o = b_ptr_[k]; o < b_ptr_[k + 1]; ++o) y[k] += b_val_[o] * v[b_col_[o]];
     return;
   }
-  // Matrix-free: the fused kernel's Δ_h at the particles in Ω.
+  // Matrix-free: the fused kernel's Δ_h at the particles in Ω (or the device's).
   const std::vector<double> field(v.data(), v.data() + v.size());
+  if (device_) {
+    const DeviceColumns c = device_->apply(omega_, std::vector<std::vector<double>>{field});
+    const double* lap = c.column(0, 0, 3);
+    for (int64_t k = 0; k < rows; ++k) y[k] = lap[k];
+    return;
+  }
   const KernelResult r = kernel_->apply(omega_, std::vector<std::vector<double>>{field});
   const auto lap = r.laplacian(0, 0);
   for (int64_t k = 0; k < rows; ++k) y[k] = lap[k];

@@ -24,7 +24,8 @@
 // the full matrix's row sums at rounding level only (another order of the same terms).
 // At Δx = 2^-9 with h ≈ 0.097 each row has ~7,700 entries and even the half would need
 // ~14 GB, so above a memory budget (default 8 GB) the map is applied matrix-free by the
-// fused kernel (kernel.hpp), recomputing the weights on every product.
+// fused kernel (kernel.hpp), recomputing the weights on every product — on the device when
+// this process uses one (device_pass.hpp), the conjugate gradients staying on the host.
 #pragma once
 #include <algorithm>
 #include <Eigen/Core>
@@ -42,6 +43,7 @@
 namespace gpm {
 
 class FusedKernel;
+class DevicePass;
 
 // assembled: the symmetric half (above); full: the whole Ω × all matrix in CSR, 12 B per
 // non-zero, the storage before the half (kept for bench_laplacian and the plan's "before").
@@ -130,6 +132,7 @@ class DiscreteLaplacian {
   mutable Eigen::VectorXd z_;
   mutable std::unique_ptr<Eigen::SparseMatrix<double, Eigen::RowMajor, int>> full_;
   std::unique_ptr<FusedKernel> kernel_;
+  std::unique_ptr<DevicePass> device_;  // matrix-free on a device (device_pass.hpp), if used
   mutable Eigen::VectorXd work_;  // full-length scratch for the matrix-free apply()
 };
 

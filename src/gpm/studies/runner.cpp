@@ -14,6 +14,7 @@
 
 #include "gpm/error.hpp"
 #include "gpm/io/tsv.hpp"
+#include "gpm/kernel/device_pass.hpp"
 
 namespace gpm {
 
@@ -46,7 +47,10 @@ StudyRunner::StudyRunner(std::string program, std::string summary, std::string p
 #endif
   args_.output("out", "", "data file (required)")
       .opt("profile", "quick", profile_help)
-      .opt("levels", "", "comma-separated levels k (dx = 2^-k); default: the profile's");
+      .opt("levels", "", "comma-separated levels k (dx = 2^-k); default: the profile's")
+      .opt("device", "cpu",
+           "where the kernel passes run: cpu, or cuda (a build configured with -DGPM_CUDA=ON "
+           "on a machine with an NVIDIA GPU; matrix-free Laplacians only, see --storage)");
   if (kind_ == Kind::units) args_.opt("seed", "1", "jitter seed (non-negative integer)");
 }
 
@@ -64,6 +68,10 @@ void StudyRunner::parse(int argc, char** argv) {
   args_.parse(argc, argv);
   out_ = args_.required("out");
   profile_ = parse_profile(args_.str("profile"));
+  const std::string device = args_.str("device");
+  if (device != "cpu" && device != "cuda")
+    throw InputError("unknown --device '" + device + "'; valid: cpu, cuda");
+  use_device(device == "cuda");
   if (kind_ == Kind::units) {
     mode_ = cache_mode(args_);
     seed_ = args_.seed();

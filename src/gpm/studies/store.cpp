@@ -17,6 +17,7 @@
 #include "gpm/error.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/provenance.hpp"
+#include "gpm/kernel/device_pass.hpp"
 
 namespace gpm {
 
@@ -85,7 +86,7 @@ LevelCache::LevelCache(std::string path, std::vector<std::pair<std::string, std:
       key_columns_(key_columns),
       mode_(mode),
       code_(code_fingerprint()),
-      made_on_(machine_summary()),
+      made_on_(machine_summary() + (using_device() ? ", device " + device_name() : "")),
       writer_(writer) {
   if (path_.empty()) throw InputError("--out PATH is required (see --help)");
   std::error_code ec;

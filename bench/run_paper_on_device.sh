@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# The paper profile on a GPU (issue 15, item 2), for a session or a machine with one:
+# configure and build a -DGPM_CUDA=ON tree, then run every catalog study with --device cuda
+# (truncation passes: the device's fused pass; Poisson/heat: matrix-free products on the
+# device, conjugate gradients on the host).
+#
+#   bash bench/run_paper_on_device.sh verify [LEVELS]   (default)
+#       recompute the committed store's units on the device and compare them with the CPU
+#       rows (--verify: numbers to 1e-9 relative); nothing is written to the store.
+#       LEVELS (e.g. 5,6,7) limits every study to those levels.
+#   bash bench/run_paper_on_device.sh run
+#       compute the paper profile into $OUT/device/ (or data/device/), one data file per
+#       study as the CPU programs write them (their made_on column says "device cuda");
+#       copy a file into results/paper/ only after `verify` agreed.
+#
+# Each study has its own timeout (STUDY_TIMEOUT, default 600 s), so one slow study leaves
+# the others' results; the logs go to $OUT (or the build dir).  Not done here: the device's
+# pairs/s as a fraction of its fp64 limit (bench_cuda prints pairs/s; a device limit
+# measurement like bench_limit's is still to be written).
+# Environment: BUILD (default build-cuda-paper), GPM_CUDA_ARCH (default 90), JOBS, REUSE=1.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+mode=${1:-verify}
+levels=${2:-}
+case $mode in verify|run) ;; *) echo "run_paper_on_device.sh: unknown mode '$mode' (verify or run)" >&2; exit 2;; esac
+BUILD=${BUILD:-build-cuda-paper}
+ARCH=${GPM_CUDA_ARCH:-90}
+JOBS=${JOBS:-$(nproc)}
+LOGS=${OUT:-$BUILD}
+DEST=${OUT:-data}/device
+STUDY_TIMEOUT=${STUDY_TIMEOUT:-600}
+mkdir -p "$LOGS" "$DEST"
+t0=$(date +%s)
+step() { echo "[run_paper_on_device $(( $(date +%s) - t0 )) s] $*"; }
+
+command -v nvidia-smi > /dev/null && nvidia-smi --query-gpu=name,memory.total,driver_version --format=csv || true
+[ "${REUSE:-0}" = 1 ] || rm -rf "$BUILD"
+step "configure and build $BUILD (GPM_CUDA=ON, architecture $ARCH, $JOBS jobs)"
+if ! timeout 240 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DGPM_CUDA=ON \
+    -DCMAKE_CUDA_ARCHITECTURES="$ARCH" > "$LOGS/device_configure.log" 2>&1 ||
+   ! timeout 900 cmake --build "$BUILD" -j"$JOBS" > "$LOGS/device_build.log" 2>&1; then
+  tail -20 "$LOGS/device_configure.log" "$LOGS/device_build.log" 2>/dev/null
+  step "configure/build FAILED"
+  exit 1
+fi
+
+# The catalog studies and their store files (the h10 reading and the documents' volumes:
+# the files the scoreboard counts first).  PDE studies run their Laplacian matrix-free, so
+# that every product is on the device.
+studies=(
+  "imoto_fig5_table1.tsv imoto_fig5_table1"
+  "thesis_table4_1.tsv thesis_table4_1"
+  "thesis_table4_2.tsv thesis_table4_2"
+  "thesis_table4_3.tsv thesis_table4_3"
+  "thesis_table4_4.tsv thesis_table4_4 --storage matrix_free"
+  "thesis_table4_5.tsv thesis_heat --table 4.5 --storage matrix_free"
+  "thesis_table4_6.tsv thesis_heat --table 4.6 --storage matrix_free"
+  "thesis_table4_7.tsv thesis_heat --table 4.7 --storage matrix_free"
+)
+failed=0
+for s in "${studies[@]}"; do
+  read -r file prog args <<< "$s"
+  lv=()
+  [ -n "$levels" ] && lv=(--levels "$levels")
+  if [ "$mode" = verify ]; then
+    out=(--out "results/paper/$file" --verify)
+  else
+    out=(--out "$DEST/$file")
+  fi
+  step "$prog $args ${lv[*]} --device cuda ${out[*]}"
+  # shellcheck disable=SC2086
+  timeout "$STUDY_TIMEOUT" "$BUILD/$prog" $args --profile paper --device cuda "${lv[@]}" \
+    "${out[@]}" > "$LOGS/device_${file%.tsv}.log" 2>&1
+  rc=$?
+  grep -E '\[store\]|error' "$LOGS/device_${file%.tsv}.log" | tail -4
+  [ $rc -eq 0 ] || { failed=$((failed + 1)); step "  exit $rc (124: timed out)"; }
+done
+step "done: $failed of ${#studies[@]} studies failed or timed out (logs in $LOGS)"
+[ $failed -eq 0 ]
