@@ -24,12 +24,16 @@
 #include <vector>
 
 #include "cuda/kernel_cuda.hpp"
+#include "cuda/kernel_cuda_body.hpp"
 #include "gpm/error.hpp"
 #include "gpm/geometry/domain.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/kernel/kernel.hpp"
+#include "gpm/operators/fused_errors.hpp"
 #include "gpm/operators/testfunctions.hpp"
+#include "gpm/studies/catalog.hpp"
+#include "gpm/studies/thesis_truncation.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -133,12 +137,13 @@ int body(int argc, char** argv) {
   gpm::add_provenance(t);
   t.columns = {"operator", "processor", "cells_per_h", "n_particles", "n_targets", "pairs",
                "candidates", "kernel_s_best", "kernel_s_median", "end_to_end_s_best",
-               "pairs_per_s", "pairs_per_s_end_to_end", "max_rel_diff_vs_cpu"};
+               "pairs_per_s", "pairs_per_s_end_to_end", "max_rel_diff_vs_cpu", "flops_per_pair",
+               "fraction_of_fp64_peak"};
   t.add_row({"fused1 P+G+L " + w1.name, "cpu " + std::to_string(cpu_threads) + " threads",
              gpm::fmt(cpu.options().cells_per_h), gpm::fmt(p.size()), gpm::fmt(targets.size()),
              gpm::fmt(static_cast<long long>(pc.accepted)),
              gpm::fmt(static_cast<long long>(pc.candidates)), gpm::fmt(cpu_s), gpm::fmt(cpu_s),
-             gpm::fmt(cpu_s), gpm::fmt(pairs / cpu_s), gpm::fmt(pairs / cpu_s), "0"});
+             gpm::fmt(cpu_s), gpm::fmt(pairs / cpu_s), gpm::fmt(pairs / cpu_s), "0", "", ""});
 
   double worst = 0;
   std::printf("  %-22s %5s %12s %10s %10s %11s %11s %9s\n", "operator", "cells", "candidates",
@@ -172,7 +177,7 @@ int body(int argc, char** argv) {
                gpm::fmt(targets.size()), gpm::fmt(static_cast<long long>(pc.accepted)),
                gpm::fmt(static_cast<long long>(cand)), gpm::fmt(ks.front()),
                gpm::fmt(ks[ks.size() / 2]), gpm::fmt(es.front()), gpm::fmt(pairs / ks.front()),
-               gpm::fmt(pairs / es.front()), gpm::fmt(diff)});
+               gpm::fmt(pairs / es.front()), gpm::fmt(diff), "", ""});
   }
 
   // The matrix-free Laplacian y = M_ΩΩ x (bench_laplacian's setting).
@@ -200,7 +205,7 @@ int body(int argc, char** argv) {
                gpm::fmt(static_cast<long long>(lpc.accepted)),
                gpm::fmt(static_cast<long long>(lpc.candidates)), gpm::fmt(lcpu_s),
                gpm::fmt(lcpu_s), gpm::fmt(lcpu_s), gpm::fmt(lpairs / lcpu_s),
-               gpm::fmt(lpairs / lcpu_s), "0"});
+               gpm::fmt(lpairs / lcpu_s), "0", "", ""});
     const std::vector<double> xs(x.data(), x.data() + x.size());
     for (const int k : cells) {
       const gpm::cuda::CudaLaplacian gl(q, Vq, wl, hl, k);
@@ -224,8 +229,71 @@ int body(int argc, char** argv) {
       t.add_row({"laplacian M_OO x " + wl.name, "gpu", gpm::fmt(k), gpm::fmt(q.size()),
                  gpm::fmt(L.n_unknowns()), gpm::fmt(static_cast<long long>(lpc.accepted)), "",
                  gpm::fmt(ks.front()), gpm::fmt(ks[ks.size() / 2]), gpm::fmt(es.front()),
-                 gpm::fmt(lpairs / ks.front()), gpm::fmt(lpairs / es.front()), gpm::fmt(diff)});
+                 gpm::fmt(lpairs / ks.front()), gpm::fmt(lpairs / es.front()), gpm::fmt(diff),
+                 "", ""});
     }
+  }
+
+  // The studies' own passes (every weight and test function of a study at once, as the
+  // --device cuda runs do) against the CPU's, and their floating-point rate (the body's
+  // operations per pair) as a fraction of the device's measured fp64 peak.
+  const double peak = gpm::cuda::fp64_peak_flops();
+  t.set("fp64_peak_flops", peak);
+  t.set("fp64_peak_note", "DFMA microkernel, 2 FLOP per FMA, this device; flops_per_pair: "
+                          "operations of fused_target_sums per pair (body_flops_per_pair)");
+  std::printf("  fp64 peak (DFMA microkernel): %.4g FLOP/s\n", peak);
+  struct Mix {
+    std::string name;
+    std::vector<gpm::ErrorRequest> req;
+    std::vector<std::string> fns;
+  };
+  std::vector<Mix> mixes = {{"imoto9", gpm::imoto_study().requests(), {gpm::imoto_study().function}}};
+  std::vector<std::string> cases;
+  for (auto& c : gpm::thesis_cases()) cases.push_back(c.function);
+  for (auto& spec : gpm::thesis_table_specs()) mixes.push_back({spec.mix(), spec.requests, cases});
+  for (const Mix& m : mixes) {
+    const std::vector<gpm::KernelWeight> kw = gpm::kernel_weights(m.req);
+    std::vector<std::vector<double>> fields;
+    for (auto& fn : m.fns) {
+      const auto& tf = gpm::test_function(fn);
+      std::vector<double> fv(p.size());
+      for (std::size_t i = 0; i < p.size(); ++i) fv[i] = tf.v(p.x[i], p.y[i]);
+      fields.push_back(std::move(fv));
+    }
+    const gpm::FusedKernel mc(p, V, h, kw, copt);
+    t0 = Clock::now();
+    const gpm::KernelResult mref = mc.apply(targets, fields);
+    const double mcpu_s = seconds_since(t0);
+    std::vector<std::pair<gpm::WeightFunction, unsigned>> wp;
+    std::vector<gpm::cuda::WeightEntry> entries;
+    for (auto& k : kw) wp.emplace_back(k.weight, k.ops), entries.push_back(gpm::cuda::weight_entry(k.weight, k.ops));
+    const gpm::cuda::CudaFusedPass gp(p, V, h, wp);
+    gpm::cuda::CudaPassResult r = gp.apply(targets, fields);  // warm-up
+    std::vector<double> ks;
+    for (long long i = 0; i < repeats; ++i) ks.push_back(1e-3 * (r = gp.apply(targets, fields)).kernel_ms);
+    std::sort(ks.begin(), ks.end());
+    double diff = 0;
+    const int nf = static_cast<int>(fields.size());
+    for (int w = 0; w < static_cast<int>(kw.size()); ++w)
+      for (int f2 = 0; f2 < nf; ++f2) {
+        auto cmp = [&](int c, std::span<const double> cpu_col) {
+          const std::vector<double> g(r.column(w, f2, c), r.column(w, f2, c) + r.nt);
+          diff = std::max(diff, max_rel_diff(g, cpu_col));
+        };
+        if (kw[w].ops & gpm::kInterp) cmp(0, mref.interpolant(w, f2));
+        if (kw[w].ops & gpm::kGrad) cmp(1, mref.grad_x(w, f2)), cmp(2, mref.grad_y(w, f2));
+        if (kw[w].ops & gpm::kLap) cmp(3, mref.laplacian(w, f2));
+      }
+    worst = std::max(worst, diff);
+    const double fpp = gpm::cuda::body_flops_per_pair(entries, nf);
+    const double rate = pairs / ks.front();
+    std::printf("  %-22s %5d %12s %10.5f %10s %11.4g %11s %9.2e  %.0f flop/pair, %.3f of fp64 peak"
+                " (CPU %.3f s)\n", ("pass " + m.name).c_str(), 4, "", ks.front(), "", rate, "",
+                diff, fpp, rate * fpp / peak, mcpu_s);
+    t.add_row({"pass " + m.name, "gpu", "4", gpm::fmt(p.size()), gpm::fmt(targets.size()),
+               gpm::fmt(static_cast<long long>(pc.accepted)), "", gpm::fmt(ks.front()),
+               gpm::fmt(ks[ks.size() / 2]), "", gpm::fmt(rate), "", gpm::fmt(diff), gpm::fmt(fpp),
+               gpm::fmt(rate * fpp / peak)});
   }
 
   t.set("max_rel_diff_vs_cpu", worst);

@@ -167,6 +167,19 @@ __global__ void fused_pass_kernel(const __grid_constant__ GridView g,
   for (int c = 0; c < nw * nf * 4; ++c) out[static_cast<std::size_t>(c) * m + pos] = o[c];
 }
 
+// Eight independent FMA chains per thread, `iters` rounds: the fp64 peak.
+__global__ void dfma_kernel(double* out, int iters) {
+  const double b = 0.9999999, c = 1e-9;
+  double a[8];
+  for (int j = 0; j < 8; ++j) a[j] = 1e-6 * (threadIdx.x + j);
+  for (int i = 0; i < iters; ++i)
+#pragma unroll
+    for (int j = 0; j < 8; ++j) a[j] = fma(a[j], b, c);
+  double s = 0;
+  for (int j = 0; j < 8; ++j) s += a[j];
+  out[static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x] = s;  // keeps the work
+}
+
 // field[slot[u]] = x[u]: the unknowns into the (otherwise zero) sorted field.
 __global__ void scatter_kernel(const double* __restrict__ x, const int32_t* __restrict__ slot,
                                int32_t nu, double* __restrict__ field) {
@@ -220,6 +233,28 @@ DeviceInfo device_info() {
   }
   (void)cudaGetLastError();
   return d;
+}
+
+double fp64_peak_flops() {
+  require_device();
+  cudaDeviceProp prop{};
+  GPM_CUDA_CHECK(cudaGetDeviceProperties(&prop, 0));
+  const unsigned blocks = static_cast<unsigned>(prop.multiProcessorCount) * 8, threads = 256;
+  const int iters = 1 << 14;
+  DeviceArray<double> out(static_cast<std::size_t>(blocks) * threads, "the DFMA results");
+  EventPair ev;
+  dfma_kernel<<<blocks, threads>>>(out.get(), 64);  // warm-up
+  GPM_CUDA_CHECK(cudaGetLastError());
+  double best = 0;
+  for (int r = 0; r < 3; ++r) {
+    ev.start();
+    dfma_kernel<<<blocks, threads>>>(out.get(), iters);
+    GPM_CUDA_CHECK(cudaGetLastError());
+    ev.stop();
+    const double s = 1e-3 * ev.elapsed_ms();
+    best = std::max(best, 2.0 * 8 * iters * static_cast<double>(blocks) * threads / s);
+  }
+  return best;
 }
 
 struct CudaKernel::Impl {

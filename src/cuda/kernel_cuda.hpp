@@ -40,6 +40,10 @@ struct DeviceInfo {
 };
 DeviceInfo device_info();
 
+// The device's fp64 peak as measured: FLOP/s of a kernel of independent DFMA chains (an FMA
+// counted as 2), all multiprocessors busy.  InputError without a device.
+double fp64_peak_flops();
+
 // Results of one apply: indexed like the targets; columns of operators not requested are
 // empty.  kernel_ms: device time of the kernel alone (cudaEvent), transfers excluded.
 struct CudaResult {

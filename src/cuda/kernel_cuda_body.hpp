@@ -150,21 +150,17 @@ GPM_HD inline int64_t clamp_cell(double t, int64_t n) {
   return static_cast<int64_t>(t);
 }
 
-// The four sums of one target (sorted slot `slot`) for field v (sorted order), scaled:
-// out = {Π, ∂x ∇, ∂y ∇, Δ}; entries of operators not in OPS are 0.
-template <unsigned OPS>
-GPM_HD inline void target_sums(const GridView& g, const PieceTable& w, const PieceTable& gq,
-                               int gmode, const double* v, int32_t slot, double out[4]) {
-  constexpr bool kPi = (OPS & kOpInterp) != 0;
-  constexpr bool kG = (OPS & (kOpGrad | kOpLap)) != 0;
-  const double px = g.xs[slot], py = g.ys[slot], vt = v[slot];
-  double api = 0, agx = 0, agy = 0, alap = 0;
+// Every particle within h of the point (px, py), in slot order: f(slot, dx, dy, r²).  Per row
+// of cells that can meet the disc, the contiguous slot range of the cells overlapping its
+// chord (as CellList::for_each_range).
+template <class F>
+GPM_HD inline void for_each_in_disc(const GridView& g, double px, double py, F&& f) {
   const double hm = g.h + g.margin;
   const int64_t r0 = clamp_cell((py - hm - g.y0) * g.inv_c, g.ny);
   const int64_t r1 = clamp_cell((py + hm - g.y0) * g.inv_c, g.ny);
   for (int64_t cy = r0; cy <= r1; ++cy) {
     // Distance from py to the band of row cy, shrunk by the margin: a point assigned to this
-    // row by rounding is never missed (as in CellList::for_each_range).
+    // row by rounding is never missed.
     const double ylo = g.y0 + static_cast<double>(cy) * g.c, yhi = ylo + g.c;
     double dyb = ylo - py > py - yhi ? ylo - py : py - yhi;
     dyb = dyb - g.margin > 0 ? dyb - g.margin : 0.0;
@@ -176,23 +172,36 @@ GPM_HD inline void target_sums(const GridView& g, const PieceTable& w, const Pie
     for (int32_t k = b; k < e; ++k) {
       const double dx = g.xs[k] - px, dy = g.ys[k] - py;
       const double r2 = dx * dx + dy * dy;
-      if (!(r2 < g.h2)) continue;
-      const double q = std::sqrt(r2) * g.inv_h;
-      const double Vk = g.Vs[k], vk = v[k];
-      double W = 0;
-      if (kPi || (kG && gmode == kGFromW)) W = eval_pieces(w, q);
-      if constexpr (kPi) api += Vk * vk * W;
-      if (kG && r2 > 0) {  // Λ excludes r = 0
-        const double G = gmode == kGFromW ? W * (g.h2 / r2) : eval_pieces(gq, q);
-        const double t = G * (Vk * (vk - vt));
-        if constexpr ((OPS & kOpGrad) != 0) {
-          agx += t * dx;
-          agy += t * dy;
-        }
-        if constexpr ((OPS & kOpLap) != 0) alap += t;
-      }
+      if (r2 < g.h2) f(k, dx, dy, r2);
     }
   }
+}
+
+// The four sums of one target (sorted slot `slot`) for field v (sorted order), scaled:
+// out = {Π, ∂x ∇, ∂y ∇, Δ}; entries of operators not in OPS are 0.
+template <unsigned OPS>
+GPM_HD inline void target_sums(const GridView& g, const PieceTable& w, const PieceTable& gq,
+                               int gmode, const double* v, int32_t slot, double out[4]) {
+  constexpr bool kPi = (OPS & kOpInterp) != 0;
+  constexpr bool kG = (OPS & (kOpGrad | kOpLap)) != 0;
+  const double px = g.xs[slot], py = g.ys[slot], vt = v[slot];
+  double api = 0, agx = 0, agy = 0, alap = 0;
+  for_each_in_disc(g, px, py, [&](int32_t k, double dx, double dy, double r2) {
+    const double q = std::sqrt(r2) * g.inv_h;
+    const double Vk = g.Vs[k], vk = v[k];
+    double W = 0;
+    if (kPi || (kG && gmode == kGFromW)) W = eval_pieces(w, q);
+    if constexpr (kPi) api += Vk * vk * W;
+    if (kG && r2 > 0) {  // Λ excludes r = 0
+      const double G = gmode == kGFromW ? W * (g.h2 / r2) : eval_pieces(gq, q);
+      const double t = G * (Vk * (vk - vt));
+      if constexpr ((OPS & kOpGrad) != 0) {
+        agx += t * dx;
+        agy += t * dy;
+      }
+      if constexpr ((OPS & kOpLap) != 0) alap += t;
+    }
+  });
   constexpr double kD = 2.0;
   const double h4 = g.h2 * g.h2;
   out[0] = api / g.h2;
@@ -259,44 +268,28 @@ GPM_HD inline void fused_target_sums(const GridView& g, const WeightEntry* we, i
   double vt[kMaxFieldsDevice];
   for (int f = 0; f < nf; ++f) vt[f] = v[f][slot];
   const double px = g.xs[slot], py = g.ys[slot];
-  const double hm = g.h + g.margin;
-  const int64_t r0 = clamp_cell((py - hm - g.y0) * g.inv_c, g.ny);
-  const int64_t r1 = clamp_cell((py + hm - g.y0) * g.inv_c, g.ny);
-  for (int64_t cy = r0; cy <= r1; ++cy) {
-    const double ylo = g.y0 + static_cast<double>(cy) * g.c, yhi = ylo + g.c;
-    double dyb = ylo - py > py - yhi ? ylo - py : py - yhi;
-    dyb = dyb - g.margin > 0 ? dyb - g.margin : 0.0;
-    if (dyb >= g.h) continue;
-    const double half = std::sqrt(g.h2 - dyb * dyb) + g.margin;
-    const int64_t c0 = clamp_cell((px - half - g.x0) * g.inv_c, g.nx);
-    const int64_t c1 = clamp_cell((px + half - g.x0) * g.inv_c, g.nx);
-    const int32_t b = g.start[cy * g.nx + c0], e = g.start[cy * g.nx + c1 + 1];
-    for (int32_t k = b; k < e; ++k) {
-      const double dx = g.xs[k] - px, dy = g.ys[k] - py;
-      const double r2 = dx * dx + dy * dy;
-      if (!(r2 < g.h2)) continue;
-      const double q = std::sqrt(r2) * g.inv_h;
-      const double Vk = g.Vs[k];
-      for (int wi = 0; wi < nw; ++wi) {
-        const WeightEntry& E = we[wi];
-        const bool pi = (E.ops & kOpInterp) != 0, gr = (E.ops & (kOpGrad | kOpLap)) != 0;
-        double W = 0;
-        if (pi || (gr && E.gmode == kGFromW)) W = eval_pieces(E.w, q);
-        double G = 0;
-        if (gr && r2 > 0) G = E.gmode == kGFromW ? W * (g.h2 / r2) : eval_pieces(E.gq, q);
-        for (int f = 0; f < nf; ++f) {
-          double* a = acc + (wi * nf + f) * 4;
-          const double vk = v[f][k];
-          if (pi) a[0] += Vk * vk * W;
-          if (gr && r2 > 0) {  // Λ excludes r = 0
-            const double t = G * (Vk * (vk - vt[f]));
-            if (E.ops & kOpGrad) a[1] += t * dx, a[2] += t * dy;
-            if (E.ops & kOpLap) a[3] += t;
-          }
+  for_each_in_disc(g, px, py, [&](int32_t k, double dx, double dy, double r2) {
+    const double q = std::sqrt(r2) * g.inv_h;
+    const double Vk = g.Vs[k];
+    for (int wi = 0; wi < nw; ++wi) {
+      const WeightEntry& E = we[wi];
+      const bool pi = (E.ops & kOpInterp) != 0, gr = (E.ops & (kOpGrad | kOpLap)) != 0;
+      double W = 0;
+      if (pi || (gr && E.gmode == kGFromW)) W = eval_pieces(E.w, q);
+      double G = 0;
+      if (gr && r2 > 0) G = E.gmode == kGFromW ? W * (g.h2 / r2) : eval_pieces(E.gq, q);
+      for (int f = 0; f < nf; ++f) {
+        double* a = acc + (wi * nf + f) * 4;
+        const double vk = v[f][k];
+        if (pi) a[0] += Vk * vk * W;
+        if (gr && r2 > 0) {  // Λ excludes r = 0
+          const double t = G * (Vk * (vk - vt[f]));
+          if (E.ops & kOpGrad) a[1] += t * dx, a[2] += t * dy;
+          if (E.ops & kOpLap) a[3] += t;
         }
       }
     }
-  }
+  });
   constexpr double kD = 2.0;
   const double h4 = g.h2 * g.h2;
   for (int i = 0; i < nw * nf; ++i) {
@@ -305,6 +298,29 @@ GPM_HD inline void fused_target_sums(const GridView& g, const WeightEntry* we, i
     out[4 * i + 2] = kD * acc[4 * i + 2] / h4;
     out[4 * i + 3] = 2.0 * kD * acc[4 * i + 3] / h4;
   }
+}
+
+// Floating-point operations of fused_target_sums per accepted pair, counted from its code
+// (an FMA or a multiply-add as 2, a square root or a divide as 1; the largest piece of each
+// table): the numerator of a pass's FLOP rate, for its fraction of a device's fp64 peak.
+inline double body_flops_per_pair(const std::vector<WeightEntry>& we, int nf) {
+  auto table = [](const PieceTable& t) {
+    double worst = 0;
+    for (int p = 0; p < t.np; ++p)
+      worst = std::max(worst, 2.0 * t.nc[p] + std::abs(static_cast<double>(t.e[p])));
+    return worst;
+  };
+  double f = 2 + 3 + 1 + 1;  // dx, dy; r² = dx·dx + dy·dy; √r²; q = r/h
+  for (const WeightEntry& E : we) {
+    const bool pi = (E.ops & kOpInterp) != 0, gr = (E.ops & (kOpGrad | kOpLap)) != 0;
+    if (pi || (gr && E.gmode == kGFromW)) f += table(E.w);  // W
+    if (gr) f += E.gmode == kGFromW ? 2 : table(E.gq);     // G = W·h²/r² or its table
+    if (pi) f += 3.0 * nf;                                  // V·v·W, added
+    if (gr) f += 3.0 * nf;                                  // t = G·(V·(v − v_j))
+    if (E.ops & kOpGrad) f += 4.0 * nf;                     // two multiply-adds
+    if (E.ops & kOpLap) f += 1.0 * nf;                      // one add
+  }
+  return f;
 }
 
 }  // namespace gpm::cuda

@@ -198,3 +198,15 @@ TEST_CASE("CUDA body on the CPU: the studies' multi-weight passes equal the fuse
     CHECK(compared >= nw * nf);
   }
 }
+
+TEST_CASE("CUDA body: operations per pair, counted from the code", "[cuda]") {
+  // quartic_polynomial, all operators, one field: distance 7; W = q²·(3 coefficients) by
+  // Horner and two multiplies 8; G = w/q² from its own table (3 coefficients, no divide) 6;
+  // per field Π 3, t 3, ∇ 4, Δ 1.  A second field adds the per-field 11.
+  const auto q = cuda::weight_entry(weight("quartic_polynomial"), cuda::kOpAll);
+  REQUIRE(q.gmode == cuda::kGOwnTable);
+  CHECK(cuda::body_flops_per_pair({q}, 1) == 32);
+  CHECK(cuda::body_flops_per_pair({q}, 2) == 43);
+  const auto lap = cuda::weight_entry(weight("quartic_polynomial"), cuda::kOpLap);
+  CHECK(cuda::body_flops_per_pair({q, lap}, 1) > cuda::body_flops_per_pair({q}, 1));
+}
