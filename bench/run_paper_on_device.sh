@@ -13,10 +13,10 @@
 #       study as the CPU programs write them (their made_on column says "device cuda");
 #       copy a file into results/paper/ only after `verify` agreed.
 #
-# Each study has its own timeout (STUDY_TIMEOUT, default 600 s), so one slow study leaves
-# the others' results; the logs go to $OUT (or the build dir).  Not done here: the device's
-# pairs/s as a fraction of its fp64 limit (bench_cuda prints pairs/s; a device limit
-# measurement like bench_limit's is still to be written).
+# First bench_cuda: the device's measured fp64 peak and each study's pass (all its weights and
+# test functions) in pairs/s and as a fraction of that peak, checked against the CPU
+# ($OUT/device/cuda.tsv).  Each study then has its own timeout (STUDY_TIMEOUT, default 600 s),
+# so one slow study leaves the others' results; the logs go to $OUT (or the build dir).
 # Environment: BUILD (default build-cuda-paper), GPM_CUDA_ARCH (default 90), JOBS, REUSE=1.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -43,6 +43,9 @@ if ! timeout 240 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DGPM_CUDA=ON
   step "configure/build FAILED"
   exit 1
 fi
+
+step "bench_cuda (fp64 peak, the studies' passes against the CPU)"
+timeout 300 "$BUILD/bench_cuda" --out "$DEST/cuda.tsv" 2>&1 | tee "$LOGS/device_bench.log" | tail -12
 
 # The catalog studies and their store files (the h10 reading and the documents' volumes:
 # the files the scoreboard counts first).  PDE studies run their Laplacian matrix-free, so
