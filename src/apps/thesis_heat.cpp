@@ -127,13 +127,14 @@ int body(int argc, char** argv) {
     const auto V = pde_volumes(volumes, p, dx, dom);
     bool checked = false;
     for (const auto& wname : pde_weights()) {
-      // The θ of this weight still to do, and of those the ones this process computes.
+      // The θ of this weight still to do; on a cluster they go to one rank together (they
+      // share this weight's Laplacian).
       std::vector<double> thetas;
+      double work = 0;
       for (double th : ts.thetas)
-        if (!cache.has({wname, fmt(th), fmt(k)}) &&
-            run.claim(heat_unit_work(dx, h, dt0, hs.T, th)))
-          thetas.push_back(th);
-      if (thetas.empty()) continue;
+        if (!cache.has({wname, fmt(th), fmt(k)}))
+          thetas.push_back(th), work += heat_unit_work(dx, h, dt0, hs.T, th);
+      if (thetas.empty() || !run.claim_group(static_cast<int>(thetas.size()), work)) continue;
       if (!checked) require_h_connectivity(p, h), checked = true;
       // One Laplacian per (level, weight), reused by every θ and every step.
       const DiscreteLaplacian L(p, V, weight(wname), h, storage, max_bytes);

@@ -101,13 +101,16 @@ void StudyRunner::expect(double work, const char* unit) {
   progress_ = std::make_unique<Progress>(program_, work, unit, 0.0);
 }
 
-bool StudyRunner::claim(double cost) {
-  const long unit = next_unit_++;
+bool StudyRunner::claim(double cost) { return claim_group(1, cost); }
+
+bool StudyRunner::claim_group(int n, double cost) {
+  const long first = next_unit_;
+  next_unit_ += n;
   if (load_.empty()) load_.assign(static_cast<std::size_t>(size_), 0.0);
   const auto least = std::min_element(load_.begin(), load_.end());
   *least += cost;
   if (least - load_.begin() != rank_) return false;
-  claimed_.push_back({unit, false});
+  for (long u = first; u < first + n; ++u) claimed_.push_back({u, false});
   return true;
 }
 

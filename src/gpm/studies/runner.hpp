@@ -87,6 +87,9 @@ class StudyRunner {
   // unit not in the cache (the same sequence on every rank, with the same costs); always
   // true on one process.  `cost`: the unit's predicted work, any additive measure.
   bool claim(double cost = 1);
+  // The next n units together, to one rank (units that share a costly set-up: the θ of one
+  // heat Laplacian); `cost` is their sum.  Always true on one process.
+  bool claim_group(int n, double cost);
   // The next unit, for every rank: each computes its share() of the targets and calls
   // reduce() on its maxima; the unit's rows are kept from rank 0 (every rank may add them).
   // Always true.
