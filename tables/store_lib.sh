@@ -11,17 +11,20 @@ finite() {
     !(($1 "|" $2) in bad)' "$1" "$1"
 }
 
-# heat_file STORE TABLE VARIANT: the store file of one variant of a heat table (TABLE as
-# 4_5; VARIANT h10, h15, h10_dtexact, h10_cellvol), and heat_label VARIANT: its slice name in
-# the rate tables.  The one list of the heat variants' files.
-heat_variants="h10 h15 h10_dtexact h10_cellvol"
+# heat_file STORE TABLE READING: the store file of one reading of a heat table (TABLE as
+# 4_5; READING h10 or h15, then _cell for V_i = dx^2 and _exact for dt = dt0 exactly), and
+# heat_label READING: its slice name in the rate tables.  The one map from readings to files:
+# h10 is the plain file, and the suffixes follow in the order _h15, _dtexact, _cellvol.
+heat_readings="h10 h15 h10_cell h15_cell h10_exact h15_exact h10_cell_exact h15_cell_exact"
+heat_variants="h10 h15 h10_dtexact h10_cellvol"   # the readings the verdicts count today
 heat_file() {
-  case $3 in
-    h10) echo "$1/thesis_table$2.tsv" ;;
-    h15) echo "$1/thesis_table$2_h15.tsv" ;;
-    h10_dtexact) echo "$1/thesis_table$2_dtexact.tsv" ;;
-    h10_cellvol) echo "$1/thesis_table$2_cellvol.tsv" ;;
-    *) echo "heat_file: unknown variant '$3'" >&2; return 1 ;;
-  esac
+  local r=$3 suffix=""
+  case $r in h10_dtexact) r=h10_exact ;; h10_cellvol) r=h10_cell ;; esac
+  case $r in h10|h15|h10_cell|h15_cell|h10_exact|h15_exact|h10_cell_exact|h15_cell_exact) ;;
+    *) echo "heat_file: unknown reading '$3'" >&2; return 1 ;; esac
+  case $r in h15*) suffix=_h15 ;; esac
+  case $r in *_exact) suffix=${suffix}_dtexact ;; esac
+  case $r in *_cell*) suffix=${suffix}_cellvol ;; esac
+  echo "$1/thesis_table$2$suffix.tsv"
 }
 heat_label() { if [ "$1" = h10_dtexact ]; then echo "h10_dtexact (dt = dt0 exactly)"; else echo "$1"; fi; }
