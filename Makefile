@@ -4,6 +4,9 @@
 # Other targets: make pdf, make bench, make plan, make clean, make deps, make build.
 # PROFILE=quick (default, minutes) or PROFILE=paper (the documents' exact resolutions, hours).
 
+# Every stage reads and prints numbers with '.' whatever the user's locale (awk, printf, sort).
+export LC_ALL := C
+
 PROFILE ?= quick
 BUILD   ?= build
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)

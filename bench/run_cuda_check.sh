@@ -12,6 +12,7 @@
 # a hang still leaves the logs.
 # Environment: BUILD (build dir, default build-cuda-check), GPM_CUDA_ARCH, JOBS, REUSE=1
 # (keep an existing build dir instead of starting fresh).
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -uo pipefail
 cd "$(dirname "$0")/.."
 

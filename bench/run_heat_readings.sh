@@ -8,6 +8,7 @@
 # usage: bench/run_heat_readings.sh BIN QUEUE_FILE [LOG]
 #   QUEUE_FILE lines: TABLE READING THETAS LEVELS   e.g.  4.6 h15_cell_exact 0 5,6,7,8,9
 #   READING: h10|h15, then optional _cell (V_i = dx^2) and _exact (dt = dt0).
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 bin=$1 queue=$2 log=${3:-/dev/stderr}
 store=results/paper

@@ -18,6 +18,7 @@
 # ($OUT/device/cuda.tsv).  Each study then has its own timeout (STUDY_TIMEOUT, default 600 s),
 # so one slow study leaves the others' results; the logs go to $OUT (or the build dir).
 # Environment: BUILD (default build-cuda-paper), GPM_CUDA_ARCH (default 90), JOBS, REUSE=1.
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -uo pipefail
 cd "$(dirname "$0")/.."
 mode=${1:-verify}

@@ -12,6 +12,7 @@
 #SBATCH --cpus-per-task=4
 #SBATCH --time=04:00:00
 #SBATCH --output=gpm-paper-%A_%a.log
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -euo pipefail
 BUILD=${BUILD:-build-mpi}
 studies=(imoto_fig5_table1 thesis_table4_1 thesis_table4_2 thesis_table4_3 thesis_table4_4

@@ -34,6 +34,7 @@
 #       rate the operator cannot give at these h, whatever the particles.
 #
 # usage: checked_reasons.sh STORE_DIR OUT BUILD_DIR
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -euo pipefail
 store=$1 out=$2 build=${3:?usage: checked_reasons.sh STORE_DIR OUT BUILD_DIR}
 source "$(dirname "$0")/store_lib.sh"  # heat_file, heat_label

@@ -4,6 +4,7 @@
 # typed.  A question whose runs are not yet in the store says so.
 #
 # usage: decisions.sh BUILD_DIR STORE_DIR OUT [STORE_SCORE]
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -euo pipefail
 build=$1 store=$2 out=$3 score=${4:-}
 tmp=$(mktemp -d)

@@ -2,6 +2,7 @@
 # The software environment the report was built in: CPU, memory, OS, compiler and library
 # versions, each read from the machine (never typed), one row per item.
 # usage: environment.sh BUILD_DIR OUT
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -euo pipefail
 build=$1 out=$2
 first() { "$@" 2>/dev/null | head -1 || true; }

@@ -6,6 +6,7 @@
 # data file does not record.  Levels 2^-9..2^-11 for seeds 1-3 and the plain grid, 2^-12 for
 # seed 1 (a quarter of an hour each there).  Resumable: finished rows are kept.
 # usage: imoto_where.sh BUILD_DIR OUT
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -euo pipefail
 build=$1 out=$2
 cols='weight\tvariant\tlevel\tdx\th\trel_error\tworst_x\tworst_y\tworst_to_boundary_over_h\ttime_s'

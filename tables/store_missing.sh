@@ -5,6 +5,7 @@
 # trims from the paper profile (plan summary: trimmed = yes) are not owed: they are listed
 # apart with what they would cost.  Nothing is run.
 # usage: store_missing.sh STORE_DIR PLAN_SUMMARY OUT
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -euo pipefail
 store=$1 plan=$2 out=$3
 cpu=$(lscpu | sed -n 's/^Model name: *//p' | head -1)

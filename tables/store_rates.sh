@@ -27,6 +27,7 @@
 # that each of the 80 published rates counts once.
 #
 # usage: store_rates.sh BUILD_DIR STORE_DIR OUT SUMMARY SCORE [CHECKED]
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -euo pipefail
 build=$1 store=$2 out=$3 summary=$4 score=$5 checked=${6:-/dev/null}
 tmp=$(mktemp -d)
@@ -212,7 +213,8 @@ mv "$out.tmp" "$out"
   for f in "$store"/*.tsv; do
     [ -e "$f" ] || continue
     prog=$(sed -n 's/^# program = //p' "$f" | head -1)
-    code=$("$build/gpm" fingerprint "$prog" | awk -F'\t' 'NR>2 { print $2 }')
+    # A file of a script (imoto_where.sh) has no program fingerprint and no code column.
+    code=$("$build/gpm" fingerprint "$prog" 2>/dev/null | awk -F'\t' 'NR>2 { print $2 }') || code=""
     awk -F'\t' -v file="$(basename "$f")" -v prog="$prog" -v code="$code" '
       /^#/ { next }
       !h++ { for (i=1;i<=NF;i++) c[$i]=i; if (!("code" in c)) exit; next }

@@ -16,6 +16,7 @@
 #              (core_weights_errata.tsv) and the norm of the corrected ones (core_weights.tsv);
 #   drawn      an illustration drawn from the definitions: reproduced qualitatively.
 # usage: verdicts.sh ITEMS STORE_SCORE DATA_DIR OUT
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -euo pipefail
 items=$1 score=$2 data=$3 out=$4
 {

@@ -15,8 +15,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <map>
 #include <string>
 
 #include "gpm/error.hpp"
@@ -35,6 +38,7 @@
 #include "gpm/solvers/poisson_probes.hpp"
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/profile.hpp"
+#include "gpm/studies/store.hpp"
 #include "gpm/theory/smoothing.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -421,11 +425,66 @@ int cmd_fingerprint(int argc, char** argv) {
     return 0;
   }
   if (argc < 3) throw InputError("gpm fingerprint: name at least one program (see --help)");
+  const auto known = fingerprinted_programs();
+  for (int i = 2; i < argc; ++i)
+    if (std::find(known.begin(), known.end(), argv[i]) == known.end())
+      throw InputError("gpm fingerprint: '" + std::string(argv[i]) + "' is not a program of this build; valid: " +
+                       join(known, ", "));
   TsvTable t;
   t.set("git_revision", git_revision());
   t.columns = {"program", "code"};
   for (int i = 2; i < argc; ++i) t.add_row({argv[i], code_fingerprint(argv[i])});
   print(t);
+  return 0;
+}
+
+// gpm store-seal: the one-time step that gave the result store's rows their seal
+// (store.hpp).  A file written before seals (provenance columns code, made_on, checked) gets
+// the seal column; each row's `checked` chain of re-checks is cut to its last record with the
+// count of earlier ones, the chain itself going to rechecks.log beside the file.  Sealing
+// vouches for nothing but the rows as they are now: their history is git's.
+int cmd_store_seal(int argc, char** argv) {
+  if (argc >= 3 && (std::string(argv[2]) == "--help" || std::string(argv[2]) == "-h")) {
+    std::cout << "usage: gpm store-seal FILE...\n"
+                 "Adds the seal column to result-store files written before seals (once; a sealed\n"
+                 "file is refused) and shortens each row's re-check chain to its last record.\n";
+    return 0;
+  }
+  if (argc < 3) throw InputError("gpm store-seal: name at least one file (see --help)");
+  for (int i = 2; i < argc; ++i) {
+    const std::string path = argv[i];
+    TsvTable t = TsvTable::load(path);
+    const std::vector<std::string> before = {"code", "made_on", "checked"};
+    if (t.columns.size() < 3 || !std::equal(before.begin(), before.end(), t.columns.end() - 3))
+      throw InputError(path + ": not a store file written before seals (its last columns are not "
+                       "code, made_on, checked)");
+    t.columns.push_back("seal");
+    const int cchecked = t.require_column("checked");
+    std::map<std::string, std::size_t> chains;  // each distinct chain once, with its row count
+    for (std::size_t r = 0; r < t.rows.size(); ++r) {
+      auto& row = t.rows[r];
+      if (row.size() + 1 != t.columns.size())
+        throw InputError(path + " line " + std::to_string(t.row_lines[r]) + ": " +
+                         std::to_string(row.size()) + " cells for " + std::to_string(t.columns.size() - 1) +
+                         " columns; mend or recompute it before sealing");
+      std::string& chain = row[cchecked];
+      const auto last = chain.rfind("; ");
+      if (last != std::string::npos) {
+        ++chains[chain];
+        long earlier = 0;
+        for (auto at = chain.find("recheck "); at != std::string::npos; at = chain.find("recheck ", at + 1))
+          ++earlier;
+        chain = chain.substr(last + 2) + " (+" + std::to_string(earlier - 1) + " earlier)";
+      }
+      row.push_back("");
+      row.back() = row_seal(row);
+    }
+    std::ofstream log(std::filesystem::path(path).parent_path() / "rechecks.log", std::ios::app);
+    for (auto& [chain, n] : chains)
+      log << std::filesystem::path(path).filename().string() << "\t" << n << " rows\t" << chain << "\n";
+    t.save(path);
+    std::cout << "sealed " << path << " (" << t.rows.size() << " rows)\n";
+  }
   return 0;
 }
 
@@ -470,7 +529,15 @@ int cmd_study(int argc, char** argv) {
                      " is not built (make build)");
   std::vector<std::string> args = {program};
   args.insert(args.end(), e.fixed_args.begin(), e.fixed_args.end());
-  for (int i = 3; i < argc; ++i) args.push_back(argv[i]);
+  for (int i = 3; i < argc; ++i) {
+    // An option the study fixes (its --table, …) cannot be given again: it names the study.
+    const std::string name = std::string(argv[i]).substr(0, std::string(argv[i]).find('='));
+    for (std::size_t f = 0; f < e.fixed_args.size(); ++f)
+      if (e.fixed_args[f] == name)
+        throw InputError("gpm study " + first + ": " + name + " is fixed by the study (" + name + " " +
+                         (f + 1 < e.fixed_args.size() ? e.fixed_args[f + 1] : "") + "); run another study for another value");
+    args.push_back(argv[i]);
+  }
   std::vector<char*> cargs;
   for (auto& a : args) cargs.push_back(a.data());
   cargs.push_back(nullptr);
@@ -490,6 +557,7 @@ int dispatch(int argc, char** argv) {
       "  heat        one discrete heat problem (theta-method): error (4.2), steps, CG counts\n"
       "  smoothing   the Laplacian's smoothing error for a Fourier mode (no particles)\n"
       "  fingerprint the code fingerprint of programs (result-store rows)\n"
+      "  store-seal  seal result-store files written before seals (once)\n"
       "  study       the study catalog: --list, or run one study by name\n";
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::cout << usage;
@@ -505,8 +573,9 @@ int dispatch(int argc, char** argv) {
   if (sub == "smoothing") return cmd_smoothing(argc, argv);
   if (sub == "fingerprint") return cmd_fingerprint(argc, argv);
   if (sub == "study") return cmd_study(argc, argv);
-  throw InputError("unknown subcommand '" + sub +
-                   "'; valid: weights, particles, voronoi, trunc, poisson, heat, smoothing, fingerprint, study");
+  if (sub == "store-seal") return cmd_store_seal(argc, argv);
+  throw InputError("unknown subcommand '" + sub + "'; valid: weights, particles, voronoi, trunc, poisson, "
+                   "heat, smoothing, fingerprint, study, store-seal");
 }
 
 }  // namespace

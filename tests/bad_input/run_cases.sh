@@ -16,6 +16,7 @@
 #   command  a bash command run in the directory with BUILD_DIR first on PATH
 #   after    the directory's files afterwards, space-separated and sorted, paths relative to
 #            it ('-': exactly the baseline, every file's content unchanged)
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 build=$(cd "$1" && pwd)
 cases=$2

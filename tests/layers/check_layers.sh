@@ -4,6 +4,7 @@
 # may include everything.  The numerics never include io, so that the numbers cannot depend
 # on how options are parsed or files are written.
 #   bash check_layers.sh SRC_GPM_DIR      (exit 1 and one line per violation)
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 root=${1:?usage: check_layers.sh SRC_GPM_DIR}
 [ -d "$root" ] || { echo "check_layers: no directory '$root'" >&2; exit 2; }

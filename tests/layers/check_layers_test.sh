@@ -1,6 +1,7 @@
 #!/bin/bash
 # check_layers.sh on the real core (must pass) and on a small tree with one upward include
 # and one numerics-to-io include (must fail, naming both).
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 src=${1:?usage: check_layers_test.sh SOURCE_DIR}

@@ -5,6 +5,7 @@
 # line) aside.  Also: a rerun on 2 ranks reuses every unit, and 2 ranks refuse --verify
 # (exit non-zero with the message).
 #   mpi_matches_serial.sh BUILD_DIR
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 build=$1
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT

@@ -11,6 +11,7 @@
 #   * if the store yields no document rate at all.
 #
 # usage: check_verdicts.sh BUILD_DIR SOURCE_DIR
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -euo pipefail
 build=$(cd "$1" && pwd)
 cd "$2"

@@ -4,6 +4,7 @@
 # here in awk from the row's theta, K, dt, N, dx and eps(|k|h) from `gpm smoothing`, and
 # must equal the program's `predicted` to 1e-9 relative.  Then the model must account for
 # the stored errors at the table's rate levels (measured/predicted within [0.9, 1.1]).
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 build=${1:?usage: mode_model_test.sh BUILD_DIR SOURCE_DIR}
 src=${2:?usage: mode_model_test.sh BUILD_DIR SOURCE_DIR}

@@ -10,6 +10,7 @@
 # The checks run as a script injected into a copy of the page; Chromium's --dump-dom brings
 # their result back.  Exit 0 when nothing is wrong, 1 otherwise, 2 on a usage error.
 # usage: browser_check.sh REPORT_HTML
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 html=${1:-}
 [ -f "$html" ] || { echo "browser_check: no file '$html'" >&2; exit 2; }

@@ -5,6 +5,7 @@
 # forced wider than the page must fail, naming all three.  (make report runs the check on
 # the report itself.)
 # usage: browser_check_test.sh SOURCE_DIR
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 src=$1
 fx=$src/tests/report/fixture

@@ -9,6 +9,7 @@
 # Geometric diagrams, whose elements differ by shape (cells, discs, edges), are listed in
 # figure_rules_exempt.tsv with the reason.  One line per violation; exit 1 if any.
 #   bash figure_rules.sh FIGURE_DIR [MAX]      (default MAX = 6)
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 dir=${1:?usage: figure_rules.sh FIGURE_DIR [MAX]}
 max=${2:-6}

@@ -2,6 +2,7 @@
 # figure_rules.sh on two figures drawn here with gnuplot: one that keeps the rules (passes)
 # and one with two series told apart only by colour, seven series in a panel and a series
 # through two points (must fail, naming all three).
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT

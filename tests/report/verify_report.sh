@@ -7,6 +7,7 @@
 #   PAPER_DIR  the report sources (default paper), files NN-*.md
 #   DATA_DIR   where ```{.tsv file="x.tsv"}``` blocks read from (default data/quick)
 #   ROOT       the directory image paths are relative to (default .)
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 paper=${1:-paper}
 data=${2:-data/quick}
 root=${3:-.}

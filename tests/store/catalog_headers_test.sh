@@ -4,6 +4,7 @@
 # the `header` of `gpm study --list` (the catalog's columns, and the store's provenance
 # columns for a study written through the level cache).  (A column added in a program but not in the catalog,
 # or the reverse, fails here.)
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 build=$(cd "${1:?usage: catalog_headers_test.sh BUILD_DIR}" && pwd)
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT

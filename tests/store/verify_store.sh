@@ -1,61 +1,86 @@
 #!/usr/bin/env bash
-# make test's check of the result store (results/paper): recompute the cheapest units of
-# every committed paper-profile file under the current code and compare them with the stored
-# rows (--verify: numbers to 1e-9 relative, texts exactly; nothing is written).  A store that
-# no longer matches its code fails the suite.  Files not yet in the store are named, not
-# passed silently.
+# make test's check of the result store (results/paper), on the store or on any copy of it.
+# For every file the store is expected to hold (the list below):
+#   1. census: the file is there and holds every unit of its levels (nothing is computed);
+#      reading it already refuses a row whose seal does not match its cells, a short or long
+#      row, a duplicate, CRLF line endings or a byte-order mark, other parameters;
+#   2. verify: its cheapest units are recomputed under the current code and compared with the
+#      stored rows (numbers to 1e-9 relative, texts exactly; a non-finite number never agrees).
+# A file missing from the store fails, as does any check above.
 #
 # With --recheck (by hand, after a change of the core that should not change the numbers):
-# the same units are recomputed with --recheck instead, which re-stamps the rows of a file
-# whose units agree with the check's record and recomputes the rows of one that differs.
-# A file being written by a running study is locked: its recheck fails and says so.
+# step 2 runs with --recheck instead, which re-stamps the rows of a file whose units agree
+# and recomputes the rows of one that differs.  A file being written by a running study is
+# locked: its recheck fails and says so.
 #
-# usage: verify_store.sh BUILD_DIR STORE_DIR [--recheck]
+# usage: verify_store.sh BUILD_DIR STORE_DIR [--verify|--recheck] [FILE...]
+#   FILE...: check only these files of the list (the others are not required).
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 build=$1
 store=$2
 mode=${3:---verify}
 case $mode in --verify|--recheck) ;; *) echo "verify_store.sh: unknown mode '$mode' (--verify or --recheck)" >&2; exit 2;; esac
-failed=0 checked=0 absent=()
-verify() {  # verify FILE PROGRAM ARGS...
-  local file=$1 prog=$2
-  shift 2
-  if [ ! -f "$store/$file" ]; then absent+=("$file"); return; fi
-  echo "== $file: $prog $* $mode"
-  # The program's status, not the filter's: (an `if … | grep` would report the grep's).
-  local log rc
-  log=$("$build/$prog" "$@" --profile paper --out "$store/$file" "$mode" 2>&1)
-  rc=$?
+shift $(( $# < 3 ? $# : 3 ))
+only=" $* "
+failed=0 checked=0 missing=()
+
+# check FILE "CENSUS OPTIONS" "VERIFY OPTIONS" PROGRAM ARGS...
+#   CENSUS OPTIONS: empty for the profile's paper levels, or e.g. "--levels 5,6,7,10,11";
+#   VERIFY OPTIONS: the cheap units to recompute, e.g. "--levels 5,6,7".
+check() {
+  local file=$1 census=$2 coarse=$3 prog=$4
+  shift 4
+  [ "$only" != "  " ] && [[ "$only" != *" $file "* ]] && return
+  if [ ! -f "$store/$file" ]; then missing+=("$file"); failed=$((failed + 1)); return; fi
+  echo "== $file: $prog $*"
+  local log rc=0 step
+  # The program's status, not a filter's (an `if … | grep` would report the grep's).
+  # shellcheck disable=SC2086  # the options are words
+  log=$("$build/$prog" "$@" $census --profile paper --out "$store/$file" --census 2>&1) || rc=$?
+  step=census
+  if [ "$rc" -eq 0 ]; then
+    # shellcheck disable=SC2086
+    log+=$'\n'$("$build/$prog" "$@" $coarse --profile paper --out "$store/$file" "$mode" 2>&1) || rc=$?
+    step=${mode#--}
+  fi
   grep '\[store\]\|rror' <<<"$log"
-  if [ "$rc" -eq 0 ]; then checked=$((checked + 1)); else failed=$((failed + 1)); echo "   FAILED (exit $rc)"; fi
+  if [ "$rc" -eq 0 ]; then checked=$((checked + 1)); else failed=$((failed + 1)); echo "   FAILED ($step, exit $rc)"; fi
 }
-# The cheap units of each study: the coarse levels, which take seconds.
-verify imoto_fig5_table1.tsv   imoto_fig5_table1 --levels 5,6,7
-verify imoto_fig5_table1_seed2.tsv imoto_fig5_table1 --seed 2 --levels 5,6,7
-verify imoto_fig5_table1_seed3.tsv imoto_fig5_table1 --seed 3 --levels 5,6,7
-verify imoto_fig5_table1_plain.tsv imoto_fig5_table1 --jitter 0 --levels 5,6,7
-verify thesis_table4_1.tsv     thesis_table4_1 --levels 5,6,7
-verify thesis_table4_2.tsv     thesis_table4_2 --levels 5,6,7
-verify thesis_table4_3.tsv     thesis_table4_3 --levels 5,6,7
-verify thesis_table4_4.tsv     thesis_table4_4 --levels 5,6
-for s in 2 3; do  # other jitter realizations, at the rate levels (seed bands)
-  verify thesis_table4_1_seed$s.tsv thesis_table4_1 --seed $s --levels 5,6,7
-  verify thesis_table4_3_seed$s.tsv thesis_table4_3 --seed $s --levels 5,6,7
-  verify thesis_table4_4_seed$s.tsv thesis_table4_4 --seed $s --levels 5,6
+
+# The store's files: census levels (paper profile unless named), coarse units to recompute.
+coarse="--levels 5,6,7"
+check imoto_fig5_table1.tsv       "" "$coarse" imoto_fig5_table1
+check imoto_fig5_table1_seed2.tsv "" "$coarse" imoto_fig5_table1 --seed 2
+check imoto_fig5_table1_seed3.tsv "" "$coarse" imoto_fig5_table1 --seed 3
+check imoto_fig5_table1_plain.tsv "" "$coarse" imoto_fig5_table1 --jitter 0
+for t in 1 2 3; do check thesis_table4_$t.tsv "" "$coarse" thesis_table4_$t; done
+check thesis_table4_4.tsv "" "--levels 5,6" thesis_table4_4
+for s in 2 3; do  # other jitter realizations: the coarse levels and the rate levels (seed bands)
+  check thesis_table4_1_seed$s.tsv "--levels 5,6,7,10,11" "$coarse" thesis_table4_1 --seed $s
+  check thesis_table4_3_seed$s.tsv "--levels 5,6,7,10,11" "$coarse" thesis_table4_3 --seed $s
+  check thesis_table4_4_seed$s.tsv "--levels 5,6,8,9" "--levels 5,6" thesis_table4_4 --seed $s
 done
+# The heat tables, one file per reading of the set-up (tables/store_lib.sh's heat_file).
+heat() {  # heat TABLE FILE-SUFFIX "CENSUS OPTIONS" THESIS_HEAT-ARGS...
+  local t=$1 suffix=$2 census=$3
+  shift 3
+  check thesis_table4_$t$suffix.tsv "$census" "--levels 5" thesis_heat --table 4.$t "$@"
+}
+# The catalog's paper levels for h10 and h15; the other readings at 2^-5 and the rate levels.
 for t in 5 6 7; do
-  verify thesis_table4_$t.tsv     thesis_heat --table 4.$t --levels 5
-  verify thesis_table4_${t}_h15.tsv thesis_heat --table 4.$t --h-rule h15 --levels 5
+  heat $t "" ""
+  heat $t _h15 "" --h-rule h15
 done
-verify thesis_table4_7_dtexact.tsv thesis_heat --table 4.7 --dt-rule exact --levels 5
-verify thesis_table4_5_cellvol.tsv thesis_heat --table 4.5 --volumes cell --levels 5
-verify thesis_table4_6_cellvol.tsv thesis_heat --table 4.6 --volumes cell --levels 5
-verify thesis_table4_7_cellvol.tsv thesis_heat --table 4.7 --volumes cell --levels 5
-verify thesis_table4_7_dtexact_cellvol.tsv thesis_heat --table 4.7 --dt-rule exact --volumes cell --levels 5
-verify thesis_stability.tsv    thesis_stability --levels 5
-verify thesis_poisson_diagnostic.tsv thesis_poisson_diagnostic --levels 7 --weights quartic_polynomial \
-  --variants seed1,plain,seed1_cell
-[ ${#absent[@]} -gt 0 ] && echo "not in the store yet (nothing to check): ${absent[*]}"
+heat 5 _cellvol "--levels 5,7,8" --volumes cell
+heat 6 _cellvol "--levels 5,8,9" --volumes cell
+heat 7 _cellvol "--levels 5,8,9" --volumes cell
+heat 7 _dtexact "--levels 5,8,9" --dt-rule exact
+heat 7 _dtexact_cellvol "--levels 5,8,9" --dt-rule exact --volumes cell
+check thesis_poisson_diagnostic.tsv "--levels 7,8,9 --variants seed1,plain,seed1_cell,plain_cell" \
+  "--levels 7 --weights quartic_polynomial --variants seed1,plain,seed1_cell" thesis_poisson_diagnostic
+
+[ ${#missing[@]} -gt 0 ] && echo "MISSING from the store: ${missing[*]}"
 stale=$(cat "$store"/*.tsv 2>/dev/null | grep -v '^#' | grep -c 'of code ' || true)
-echo "store: $checked files agree with the current code, $failed differ; $stale rows carried over by a recorded re-check"
+echo "store: $checked files pass the census and agree with the current code, $failed fail; $stale rows carried over by a recorded re-check"
 [ "$failed" -eq 0 ] && [ "$checked" -gt 0 ]

@@ -80,3 +80,29 @@ TEST_CASE("Gradient smoothing error: the Bessel form against direct quadrature o
           Approx(4.0).epsilon(1e-3));
   }
 }
+
+TEST_CASE("Smoothing errors at small kh: the series keeps every digit the closed form loses",
+          "[unit][smoothing]") {
+  for (const char* name : {"quartic_polynomial", "piecewise_cubic_polynomial", "cubic_spike"}) {
+    INFO(name);
+    const WeightFunction& w = weight(name);
+    const double m2 = radial_moment(w, 2), m4 = radial_moment(w, 4);
+    // Leading terms: ε = m₂(kh)²/16 − m₄(kh)⁴/576 + …, ε_∇ = m₂(kh)²/8 − m₄(kh)⁴/192 + …
+    CHECK(radial_moment(w, 0) == Approx(1).epsilon(1e-14));  // normalized: the series' m₀ = 1
+    for (double kh : {1e-4, 1e-10, 1e-100}) {
+      INFO(kh);
+      const double lap = m2 * kh * kh / 16 - m4 * std::pow(kh, 4) / 576;
+      const double grad = m2 * kh * kh / 8 - m4 * std::pow(kh, 4) / 192;
+      CHECK(laplacian_smoothing_error(w, kh) == Approx(lap).epsilon(1e-9).margin(1e-300));
+      CHECK(gradient_smoothing_error(w, kh) == Approx(grad).epsilon(1e-9).margin(1e-300));
+    }
+    // Where the two forms meet, the series and the quadrature agree (to the quadrature's
+    // absolute accuracy, ~1e-12: the cubic spike's ε is only 3e-7 there).
+    const double below = std::nextafter(0.25, 0.0);
+    CHECK(laplacian_smoothing_error(w, below) == Approx(laplacian_smoothing_error(w, 0.25)).epsilon(1e-8).margin(2e-12));
+    CHECK(gradient_smoothing_error(w, below) == Approx(gradient_smoothing_error(w, 0.25)).epsilon(1e-8).margin(2e-12));
+  }
+  // kh outside what a double can carry or the quadrature resolve: refused.
+  const WeightFunction& q = weight("quartic_polynomial");
+  for (double kh : {1e-300, 1e4}) CHECK_THROWS_AS(laplacian_smoothing_error(q, kh), InputError);
+}

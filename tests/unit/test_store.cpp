@@ -1,11 +1,14 @@
 // The result store's rules (src/gpm/studies/store.hpp), on small files written here: a unit is
-// reused only when complete and computed by the current code; malformed and partial units
-// are recomputed; a second writer is refused; --verify catches a changed number; --recheck
-// carries rows of older code over only when the recomputed units agree.
+// reused only when complete and computed by the current code; partial units are recomputed;
+// malformed, unsealed, tampered or duplicate rows and a file of other parameters are refused
+// (the file untouched) unless --replace; a second writer is refused; --verify catches a
+// changed number (and any non-finite one); --recheck carries rows of older code over only
+// when the recomputed units agree; --census lists the missing units.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <unistd.h>
 
@@ -41,6 +44,27 @@ std::vector<std::vector<std::string>> rows_of(const std::string& path) {
   return TsvTable::load(path).rows;
 }
 
+// Rows edited here as if older code had written them: sealed again, as that code would have.
+void save_resealed(TsvTable& t, const std::string& path) {
+  for (auto& r : t.rows) r.back() = row_seal(r);
+  t.save(path);
+}
+
+// The file's text with `edit` applied to each line.
+template <class F>
+void edit_lines(const std::string& path, F edit) {
+  std::ifstream in(path);
+  std::string text, line;
+  while (std::getline(in, line)) text += edit(line);
+  in.close();
+  std::ofstream(path) << text;
+}
+
+std::string text_of(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
 }  // namespace
 
 TEST_CASE("store: rows carry the code fingerprint and are reused only under it", "[unit][store]") {
@@ -66,44 +90,130 @@ TEST_CASE("store: rows carry the code fingerprint and are reused only under it",
   // Rows of other code are kept in the file but not reused.
   auto tt = TsvTable::load(f);
   tt.rows[0][code] = "0123456789ab";
-  tt.save(f);
+  save_resealed(tt, f);
   LevelCache c(f, kParams, kColumns, 1);
   CHECK(c.reused() == 3);
   CHECK_FALSE(c.has({"5"}, 2));
   CHECK(c.has({"6"}, 2));
 }
 
-TEST_CASE("store: partial and malformed units are recomputed, not reused", "[unit][store]") {
+TEST_CASE("store: a partial unit is recomputed; a malformed row is refused unless --replace",
+          "[unit][store]") {
   TempDir t("gpm_store_");
   const std::string f = t.file("s.tsv");
   run_study(f, CacheMode::run);
-  // Drop one row of level 5 and cut a cell from a row of level 6.
-  std::ifstream in(f);
-  std::string text, line;
-  bool dropped = false, cut = false;
-  while (std::getline(in, line)) {
-    if (!dropped && line.rfind("5\ta\t", 0) == 0) {
-      dropped = true;
-      continue;
-    }
-    if (!cut && line.rfind("6\tb\t", 0) == 0) {
-      line = line.substr(0, line.find('\t', 4));  // "6\tb": two cells
-      cut = true;
-    }
-    text += line + "\n";
-  }
-  in.close();
-  REQUIRE((dropped && cut));
-  std::ofstream(f) << text;
+  // Drop one row of level 5: a partial unit, recomputed by a run.
+  bool dropped = false;
+  edit_lines(f, [&](const std::string& line) {
+    if (!dropped && line.rfind("5\ta\t", 0) == 0) return dropped = true, std::string();
+    return line + "\n";
+  });
+  REQUIRE(dropped);
   {
     LevelCache c(f, kParams, kColumns, 1);
-    CHECK_FALSE(c.has({"5"}, 2));  // partial
-    CHECK_FALSE(c.has({"6"}, 2));  // one row malformed, dropped
+    CHECK_FALSE(c.has({"5"}, 2));
+    CHECK(c.has({"6"}, 2));
   }
   run_study(f, CacheMode::run);
+  REQUIRE(rows_of(f).size() == 4);
+  // Cut the last cells of a row of level 6: refused in every mode, the file untouched.
+  edit_lines(f, [&](const std::string& line) {
+    return (line.rfind("6\tb\t", 0) == 0 ? line.substr(0, line.find('\t', 4)) : line) + "\n";
+  });
+  const std::string cut = text_of(f);
+  REQUIRE_THROWS_AS(run_study(f, CacheMode::run), InputError);
+  REQUIRE_THROWS_AS(run_study(f, CacheMode::verify), InputError);
+  REQUIRE_THROWS_AS(run_study(f, CacheMode::run, 0, {5}), InputError);  // another level too
+  CHECK(text_of(f) == cut);
+  run_study(f, CacheMode::replace);
   const auto rows = rows_of(f);
   REQUIRE(rows.size() == 4);  // each unit once, complete: no duplicate rows
-  for (auto& r : rows) CHECK(r.size() == kColumns.size() + 3);
+  for (auto& r : rows) CHECK(r.size() == kColumns.size() + row_provenance_columns().size());
+}
+
+TEST_CASE("store: a changed cell breaks the row's seal, and the store refuses it", "[unit][store]") {
+  TempDir t("gpm_store_");
+  const std::string f = t.file("s.tsv");
+  run_study(f, CacheMode::run);
+  for (const char* mode : {"number", "code", "duplicate"}) {
+    CAPTURE(mode);
+    const std::string good = text_of(f);
+    auto tt = TsvTable::load(f);
+    if (std::string(mode) == "number") tt.rows[2][2] = fmt(0.851 * tt.number(2, 2));
+    if (std::string(mode) == "code") tt.rows[2][tt.column("code")] = "0123456789ab";
+    if (std::string(mode) == "duplicate") tt.rows.push_back(tt.rows[1]);
+    tt.save(f);
+    const std::string bad = text_of(f);
+    REQUIRE_THROWS_AS(run_study(f, CacheMode::run), InputError);
+    REQUIRE_THROWS_AS(run_study(f, CacheMode::verify), InputError);
+    REQUIRE_THROWS_AS(run_study(f, CacheMode::recheck, 0, {5}), InputError);
+    REQUIRE_THROWS_AS(run_study(f, CacheMode::census), InputError);
+    CHECK(text_of(f) == bad);
+    std::ofstream(f) << good;
+  }
+  REQUIRE_NOTHROW(run_study(f, CacheMode::verify));
+}
+
+TEST_CASE("store: other parameters, columns, CRLF or a BOM: refused, file untouched", "[unit][store]") {
+  TempDir t("gpm_store_");
+  const std::string f = t.file("s.tsv");
+  run_study(f, CacheMode::run);
+  const std::string good = text_of(f);
+  auto refused = [&](const std::string& text, const std::string& says) {
+    std::ofstream(f) << text;
+    try {
+      run_study(f, CacheMode::run);
+      FAIL("not refused");
+    } catch (const InputError& e) {
+      CHECK_THAT(e.what(), Catch::Contains(says));
+    }
+    CHECK(text_of(f) == text);
+  };
+  std::string crlf;
+  for (char c : good) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  refused(crlf, "CRLF");
+  refused("\xEF\xBB\xBF" + good, "byte-order mark");
+  std::string other = good;
+  other.replace(other.find("seed = 1"), 8, "seed = 2");
+  refused(other, "parameter 'seed' differs (file: '2'; now: '1')");
+  std::string cr = good;
+  cr.replace(cr.find("store_test"), 10, "store_test\r");  // a \r inside a value, shown escaped
+  // (the line then ends in CRLF: the line-ending check names it first)
+  refused(cr, "CRLF");
+  // A quick-profile file is a cache: replaced without asking.
+  std::ofstream(f) << other + "# profile = quick\n";
+  REQUIRE_NOTHROW(run_study(f, CacheMode::run));
+  CHECK(TsvTable::load(f).get("seed") == "1");
+}
+
+TEST_CASE("store: a non-finite number never agrees", "[unit][store]") {
+  TempDir t("gpm_store_");
+  const std::string f = t.file("s.tsv");
+  run_study(f, CacheMode::run);
+  for (const char* v : {"inf", "1e999", "infinity", "nan", "-inf"}) {
+    CAPTURE(v);
+    auto tt = TsvTable::load(f);
+    const std::string keep = tt.rows[2][2];
+    tt.rows[2][2] = v;
+    save_resealed(tt, f);  // even with a valid seal
+    REQUIRE_THROWS_AS(run_study(f, CacheMode::verify), StoreMismatch);
+    tt.rows[2][2] = keep;
+    save_resealed(tt, f);
+  }
+}
+
+TEST_CASE("store: --census lists the units a file lacks, computing nothing", "[unit][store]") {
+  TempDir t("gpm_store_");
+  const std::string f = t.file("s.tsv");
+  run_study(f, CacheMode::run);
+  REQUIRE_NOTHROW(run_study(f, CacheMode::census));
+  REQUIRE_THROWS_AS(run_study(f, CacheMode::census, 0, {5, 6, 7}), StoreMismatch);
+  CHECK(rows_of(f).size() == 4);
+  // A unit of older code is present: the census passes (--verify is what judges the code).
+  auto tt = TsvTable::load(f);
+  for (auto& r : tt.rows) r[tt.column("code")] = "0123456789ab";
+  save_resealed(tt, f);
+  REQUIRE_NOTHROW(run_study(f, CacheMode::census));
 }
 
 TEST_CASE("store: a second writer on one file is refused", "[unit][store]") {
@@ -139,46 +249,44 @@ TEST_CASE("store: --verify compares and writes nothing; --recheck re-stamps only
   auto tt = TsvTable::load(f);
   const int code = tt.column("code"), checked = tt.column("checked");
   for (auto& r : tt.rows) r[code] = "0123456789ab";
-  tt.save(f);
+  tt.rows[2][checked] = "recheck 2026-01-01 of code a: x; recheck 2026-01-02 of code b: y";
+  save_resealed(tt, f);
   run_study(f, CacheMode::recheck, 0, {5});
   for (auto& r : rows_of(f)) {
     CHECK(r[code] == code_fingerprint());
+    CHECK(r.back() == row_seal(r));  // sealed anew
     if (r[0] == "6") CHECK(r[checked].find("recheck") == 0);
     if (r[0] == "5") CHECK(r[checked] == "computed");
   }
+  // The chain is cut to the last record and a count; the log beside the file keeps it.
+  CHECK_THAT(rows_of(f)[2][checked], Catch::EndsWith("(+2 earlier)"));
+  CHECK(text_of(t.file("rechecks.log")).find("s.tsv\trecheck") == 0);
   // A recheck that disagrees re-stamps nothing and reports the difference.
   tt = TsvTable::load(f);
   for (auto& r : tt.rows) r[code] = "0123456789ab";
-  tt.save(f);
+  save_resealed(tt, f);
   REQUIRE_THROWS_AS(run_study(f, CacheMode::recheck, 1e-3, {6}), StoreMismatch);
   for (auto& r : rows_of(f))
     CHECK((r[0] == "6") == (r[code] == code_fingerprint()));  // only the recomputed unit
 }
 
-TEST_CASE("store: rows of a file without provenance columns need a recheck", "[unit][store]") {
+TEST_CASE("store: a file written before seals is refused until sealed once", "[unit][store]") {
   TempDir t("gpm_store_");
   const std::string f = t.file("s.tsv");
-  TsvTable old;
-  for (auto& [k, v] : kParams) old.set(k, v);
-  old.set("host", "elsewhere");
-  old.columns = kColumns;
-  for (int k : {5, 6})
-    for (const char* w : {"a", "b"}) old.add_row({std::to_string(k), w, fmt(1.0 / k), "0.5"});
-  old.save(f);
-  {
-    LevelCache c(f, kParams, kColumns, 1);
-    CHECK(c.reused() == 0);
-    CHECK_FALSE(c.has({"6"}));
+  run_study(f, CacheMode::run);
+  auto tt = TsvTable::load(f);
+  tt.columns.pop_back();
+  for (auto& r : tt.rows) r.pop_back();
+  tt.save(f);
+  try {
+    run_study(f, CacheMode::run);
+    FAIL("not refused");
+  } catch (const InputError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("gpm store-seal"));
   }
-  run_study(f, CacheMode::recheck, 0, {5});
-  const auto tab = TsvTable::load(f);
-  for (auto& r : tab.rows) {
-    CHECK(r[tab.column("code")] == code_fingerprint());
-    if (r[0] == "6") {
-      CHECK(r[tab.column("checked")].find("of code unrecorded") != std::string::npos);
-      CHECK(r[tab.column("made_on")].find("elsewhere") != std::string::npos);
-    }
-  }
+  REQUIRE_THROWS_AS(run_study(f, CacheMode::recheck, 0, {5}), InputError);
+  run_study(f, CacheMode::replace);
+  CHECK(TsvTable::load(f).column("seal") >= 0);
 }
 
 TEST_CASE("store: a recheck against the current code's own rows carries nothing over",
@@ -192,7 +300,7 @@ TEST_CASE("store: a recheck against the current code's own rows carries nothing 
   const int code = tt.column("code");
   for (auto& r : tt.rows)
     if (r[0] == "6") r[code] = "0123456789ab";
-  tt.save(f);
+  save_resealed(tt, f);
   run_study(f, CacheMode::recheck, 0, {5});
   for (auto& r : rows_of(f))
     if (r[0] == "6") CHECK(r[code] == "0123456789ab");

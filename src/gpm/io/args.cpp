@@ -8,6 +8,7 @@
 #include <cstring>
 #include <exception>
 #include <iostream>
+#include <set>
 #include <sstream>
 
 #include "gpm/error.hpp"
@@ -53,6 +54,7 @@ std::string Args::usage() const {
 }
 
 void Args::parse(int argc, char** argv, int first) {
+  std::set<std::string> named;
   for (int k = first; k < argc; ++k) {
     std::string a = argv[k];
     if (a == "--help" || a == "-h") {
@@ -71,6 +73,8 @@ void Args::parse(int argc, char** argv, int first) {
     if (inline_value) value = name.substr(eq + 1), name = name.substr(0, eq);
     auto it = opts_.find(name);
     if (it == opts_.end()) throw InputError("unknown option --" + name + " (see --help)");
+    // An option given twice is a mistake, not an override: which one was meant?
+    if (!named.insert(name).second) throw InputError("--" + name + " is given twice (see --help)");
     if (it->second.is_flag) {
       // A flag is on when named; `--polygons=no` must not turn it on, and reading "no" as
       // off would make `=yes`, `=0`, `=false` guesses: a value is refused instead.

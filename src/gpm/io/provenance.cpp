@@ -37,6 +37,13 @@ std::string code_fingerprint(const std::string& program) {
 
 std::string code_fingerprint() { return code_fingerprint(g_program); }
 
+std::vector<std::string> fingerprinted_programs() {
+  std::vector<std::string> v;
+  for (const auto* e = generated::kProgramFingerprints; !e->program.empty(); ++e)
+    v.emplace_back(e->program);
+  return v;
+}
+
 std::string machine_summary() {
   std::string cpu = "unknown CPU";
   std::ifstream in("/proc/cpuinfo");

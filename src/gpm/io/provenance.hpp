@@ -4,6 +4,7 @@
 // result store (store.hpp) carries them.
 #pragma once
 #include <string>
+#include <vector>
 
 namespace gpm {
 
@@ -17,6 +18,8 @@ std::string code_fingerprint();
 // The same for a named program (for a tool that checks another program's rows); the
 // core's fingerprint for a name that is not a program.
 std::string code_fingerprint(const std::string& program);
+// The programs with a fingerprint of their own (the others get the core's).
+std::vector<std::string> fingerprinted_programs();
 // CPU model, threads and date, e.g. "Intel(R) Xeon(R) Processor, 2 threads, 2026-12-01".
 std::string machine_summary();
 

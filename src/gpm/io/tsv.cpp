@@ -187,7 +187,7 @@ void TsvTable::save(const std::string& path) const {
   }
 }
 
-TsvTable TsvTable::load(const std::string& path) {
+TsvTable TsvTable::load(const std::string& path, bool whole_rows) {
   // A device (/dev/zero) would be read without end; a pipe has an end and may stay.
   std::error_code ec;
   const auto st = fs::status(path, ec);
@@ -200,15 +200,23 @@ TsvTable TsvTable::load(const std::string& path) {
   std::size_t line_no = 0;
   std::string line;
   bool have_header = false;
-  auto split = [](const std::string& s) {
+  auto split = [](const std::string& s) {  // "a\t" is two cells, the second empty
     std::vector<std::string> out;
-    std::string cell;
-    std::istringstream ss(s);
-    while (std::getline(ss, cell, '\t')) out.push_back(cell);
+    std::size_t from = 0;
+    for (std::size_t tab; (tab = s.find('\t', from)) != std::string::npos; from = tab + 1)
+      out.push_back(s.substr(from, tab - from));
+    out.push_back(s.substr(from));
     return out;
   };
   while (std::getline(in, line)) {
     ++line_no;
+    // Data files are LF-only UTF-8 without a byte-order mark (.gitattributes keeps the store
+    // so): a \r or a BOM would become an invisible part of a cell or key.
+    if (line_no == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0)
+      throw InputError("data file " + path + " starts with a UTF-8 byte-order mark; save it without one");
+    if (!line.empty() && line.back() == '\r')
+      throw InputError("data file " + path + " line " + std::to_string(line_no) +
+                       " ends in CRLF (\\r\\n); data files use LF line endings only");
     if (line.empty()) continue;
     if (line.rfind("# ", 0) == 0) {
       const auto eq = line.find(" = ");
@@ -221,6 +229,11 @@ TsvTable TsvTable::load(const std::string& path) {
     } else {
       t.rows.push_back(split(line));
       t.row_lines.push_back(line_no);
+      // A row cut short (or run long) would shift or drop values: refused, not read.
+      if (whole_rows && t.rows.back().size() != t.columns.size())
+        throw InputError("data file " + path + " line " + std::to_string(line_no) + ": " +
+                         std::to_string(t.rows.back().size()) + " cells for " +
+                         std::to_string(t.columns.size()) + " columns");
     }
   }
   if (!have_header) throw InputError("data file " + path + " has no column header");

@@ -50,8 +50,11 @@ struct TsvTable {
   // Atomic write (tmp + rename); creates parent directories.  Refuses a path that
   // check_output_path refuses; removes stale `<path>.tmp.<pid>` files of dead processes.
   void save(const std::string& path) const;
-  // Throws InputError if the file is missing, not a regular file or malformed.
-  static TsvTable load(const std::string& path);
+  // Throws InputError if the file is missing, not a regular file or malformed: CRLF line
+  // endings, a byte-order mark, no header, or (whole_rows) a row whose cell count differs
+  // from the header's.  whole_rows = false: such rows are read as they are (for the result
+  // store, which names them and decides).
+  static TsvTable load(const std::string& path, bool whole_rows = true);
   // The rows of an existing file whose `# key = value` lines agree with `params` on every
   // key of `params`: the cache of a previous run with the same parameters.  Empty if the
   // file is absent or any parameter differs.

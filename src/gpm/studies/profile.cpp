@@ -22,7 +22,9 @@ std::string profile_name(Profile p) { return p == Profile::quick ? "quick" : "pa
 
 std::vector<int> levels_option(const Args& a, Profile p, const std::vector<int>& quick,
                                const std::vector<int>& paper, int lo, int hi) {
-  if (a.str("levels").empty()) return pick(p, quick, paper);
+  // Absent: the profile's levels; given but empty (--levels "") is a mistake, never "all".
+  if (!a.has("levels")) return pick(p, quick, paper);
+  if (a.str("levels").empty()) throw InputError("--levels: empty; name the levels, e.g. --levels 5,6");
   std::vector<int> levels;
   for (double v : a.nums("levels")) {
     if (v != std::floor(v) || v < lo || v > hi)

@@ -76,8 +76,8 @@ void StudyRunner::parse(int argc, char** argv) {
     mode_ = cache_mode(args_);
     seed_ = args_.seed();
   }
-  if (size_ > 1 && mode_ != CacheMode::run)
-    throw InputError("--verify and --recheck run on one process, not on " +
+  if (size_ > 1 && mode_ != CacheMode::run && mode_ != CacheMode::replace)
+    throw InputError("--verify, --recheck and --census run on one process, not on " +
                      std::to_string(size_) + " ranks");
   start_ = std::chrono::steady_clock::now();
 }
@@ -250,8 +250,12 @@ bool StudyRunner::finish() {
   cache_->finish();
   if (!cache_->writes()) return false;
   if (cache_->rows().empty()) throw InputError("no level selected: nothing to write to " + out_);
-  std::printf("%s: wrote %s (%zu rows, %zu reused, %.1f s)\n", program_.c_str(), out_.c_str(),
-              cache_->rows().size(), cache_->reused(), elapsed_s());
+  if (cache_->added() == 0)
+    std::printf("%s: nothing to compute: %s holds every selected unit (%zu rows, %.1f s)\n",
+                program_.c_str(), out_.c_str(), cache_->rows().size(), elapsed_s());
+  else
+    std::printf("%s: wrote %s (%zu rows: %zu new, %zu reused, %.1f s)\n", program_.c_str(),
+                out_.c_str(), cache_->rows().size(), cache_->added(), cache_->reused(), elapsed_s());
   return true;
 }
 

@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
@@ -27,19 +29,57 @@ void add_cache_options(Args& a) {
   a.flag("verify", "recompute the selected units in memory and compare them with --out\n"
                    "  (numbers to 1e-9 relative); write nothing; exit 4 on a difference")
       .flag("recheck", "as --verify, then write: the recomputed units replace the file's and,\n"
-                       "  if all agreed, rows of older code are re-stamped as current");
+                       "  if all agreed, rows of older code are re-stamped as current")
+      .flag("census", "compute nothing: list the units of the selected levels that --out\n"
+                      "  lacks; exit 4 if any")
+      .flag("replace", "discard what in --out does not match this run (other parameters or\n"
+                       "  columns, malformed, unsealed or duplicate rows) instead of refusing");
 }
 
 CacheMode cache_mode(const Args& a) {
-  if (a.has("verify") && a.has("recheck"))
-    throw InputError("--verify and --recheck exclude each other");
-  return a.has("verify") ? CacheMode::verify : a.has("recheck") ? CacheMode::recheck
-                                                                : CacheMode::run;
+  std::vector<std::string> given;
+  for (const char* f : {"verify", "recheck", "census", "replace"})
+    if (a.has(f)) given.push_back(std::string("--") + f);
+  if (given.size() > 1) throw InputError(given[0] + " and " + given[1] + " exclude each other");
+  return a.has("verify")    ? CacheMode::verify
+         : a.has("recheck") ? CacheMode::recheck
+         : a.has("census")  ? CacheMode::census
+         : a.has("replace") ? CacheMode::replace
+                            : CacheMode::run;
 }
 
 const std::vector<std::string>& row_provenance_columns() {
-  static const std::vector<std::string> c = {"code", "made_on", "checked"};
+  static const std::vector<std::string> c = {"code", "made_on", "checked", "seal"};
   return c;
+}
+
+std::string row_seal(const std::vector<std::string>& row) {
+  // FNV-1a, 64 bits: not a secret, a tripwire: any edit of a cell changes it.
+  uint64_t h = 1469598103934665603ull;
+  auto feed = [&](const std::string& cell) {
+    for (unsigned char c : cell) h = (h ^ c) * 1099511628211ull;
+    h = (h ^ static_cast<unsigned char>('\t')) * 1099511628211ull;
+  };
+  const std::size_t n = row.size() >= 2 ? row.size() - 2 : 0;  // checked and seal excluded
+  for (std::size_t i = 0; i < n; ++i) feed(row[i]);
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+std::string escaped(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s) {
+    if (c == '\r') out += "\\r";
+    else if (c == '\t') out += "\\t";
+    else if (c == '\n') out += "\\n";
+    else if (c < 0x20 || c >= 0x7f) {
+      char b[8];
+      std::snprintf(b, sizeof b, "\\x%02X", c);
+      out += b;
+    } else out += static_cast<char>(c);
+  }
+  return out;
 }
 
 bool is_volatile_column(const std::string& n) {
@@ -66,12 +106,16 @@ std::string today() {
 // rounding-level quantities whose relative change across CPUs or memory alignments is ~1e-6
 // (seen between two builds on one Zen 5: 6.753016866e-11 and 6.753015450e-11); they are
 // compared absolutely, scaled so that kStoreResidualAbsTol maps onto kStoreRelTol.
+// A non-finite number (inf, nan, 1e999, …) never agrees, not even with itself: no study
+// writes one into a store file on purpose (a blow-up is written as NA, a text), so one there
+// is a failure to be seen, not a value to be carried.
 double cell_difference(const std::string& a, const std::string& b, bool residual) {
-  if (a == b) return 0;
   char *ea = nullptr, *eb = nullptr;
   const double x = std::strtod(a.c_str(), &ea), y = std::strtod(b.c_str(), &eb);
-  if (a.empty() || b.empty() || *ea || *eb) return -1;
-  if (std::isnan(x) || std::isnan(y)) return -1;
+  const bool numbers = !a.empty() && !b.empty() && !*ea && !*eb;
+  if (numbers && (!std::isfinite(x) || !std::isfinite(y))) return -1;
+  if (a == b) return 0;
+  if (!numbers) return -1;
   if (residual) return std::fabs(x - y) / kStoreResidualAbsTol * kStoreRelTol;
   const double scale = std::max(std::fabs(x), std::fabs(y));
   return scale > 0 ? std::fabs(x - y) / scale : 0;
@@ -93,7 +137,9 @@ LevelCache::LevelCache(std::string path, std::vector<std::pair<std::string, std:
   const auto st = fs::symlink_status(path_, ec);
   if (fs::exists(st) && !fs::is_regular_file(st))
     throw InputError("--out " + path_ + " exists and is not a regular file");
-  if (mode_ != CacheMode::verify && writer_) {
+  if (mode_ == CacheMode::recheck && !fs::exists(st))
+    throw InputError("--recheck: " + path_ + " does not exist: nothing to re-check");
+  if (mode_ != CacheMode::verify && mode_ != CacheMode::census && writer_) {
     // The writer's lock: a second process on the same file is refused, not raced.
     const std::string lock = path_ + ".lock";
     if (fs::path(path_).has_parent_path()) fs::create_directories(fs::path(path_).parent_path());
@@ -105,68 +151,128 @@ LevelCache::LevelCache(std::string path, std::vector<std::pair<std::string, std:
       throw InputError("another process is writing " + path_ + " (its lock " + lock +
                        " is held); wait for it or choose another --out");
     }
+    // The lock file is never a stream: should stderr be closed, a message written to fd 2
+    // must not land in it.
+    if (lock_fd_ <= 2) {
+      const int moved = ::fcntl(lock_fd_, F_DUPFD_CLOEXEC, 3);
+      ::close(lock_fd_);
+      lock_fd_ = moved;
+      if (lock_fd_ < 0) throw InputError("cannot hold the lock of " + path_);
+    }
   }
   for (auto& [k, v] : params) table_.set(k, v);
   table_.source = path_;  // for messages naming a malformed cell
   table_.columns = columns;
   for (auto& c : row_provenance_columns()) table_.columns.push_back(c);
-  load(params, columns);
+  try {
+    load(params);
+  } catch (...) {
+    // A refused file leaves no lock behind (no destructor runs for a throwing constructor).
+    if (lock_fd_ >= 0) ::close(lock_fd_);
+    throw;
+  }
 }
 
 LevelCache::~LevelCache() {
   if (lock_fd_ >= 0) ::close(lock_fd_);  // releases the flock
 }
 
-void LevelCache::load(const std::vector<std::pair<std::string, std::string>>& params,
-                      const std::vector<std::string>& own_columns) {
+void LevelCache::refuse_file(const std::string& problem, std::size_t rows, bool replace) {
+  if (!replace)
+    throw InputError(path_ + ": " + problem + "; nothing written (--replace discards its " +
+                     std::to_string(rows) + " rows; or restore the file from git)");
+  std::fprintf(stderr, "[store] %s: %s: its %zu rows are discarded (--replace)\n", path_.c_str(),
+               problem.c_str(), rows);
+}
+
+void LevelCache::load(const std::vector<std::pair<std::string, std::string>>& params) {
   if (!fs::exists(path_)) return;
-  const TsvTable old = TsvTable::load(path_);  // InputError names the file if unreadable
+  const TsvTable old = TsvTable::load(path_, false);  // InputError: unreadable, CRLF, BOM
+  // A file of the quick profile is a cache of minutes: replaced, not defended.
+  const bool replace = (mode_ == CacheMode::replace || old.get("profile") == "quick") &&
+                       mode_ != CacheMode::verify && mode_ != CacheMode::census;
   for (auto& [k, v] : params) {
     const auto have = old.get(k);
-    if (!have || *have != v) {
-      std::fprintf(stderr,
-                   "[store] %s: parameter '%s' differs (file: %s; now: %s): its %zu rows are "
-                   "not reused%s\n",
-                   path_.c_str(), k.c_str(), have ? have->c_str() : "absent", v.c_str(),
-                   old.rows.size(), mode_ == CacheMode::verify ? "" : " and will be replaced");
-      return;
-    }
+    if (!have || *have != v)
+      return refuse_file("parameter '" + k + "' differs (file: " +
+                             (have ? "'" + escaped(*have) + "'" : std::string("absent")) +
+                             "; now: '" + escaped(v) + "')",
+                         old.rows.size(), replace);
+  }
+  if (old.columns != table_.columns) {
+    std::vector<std::string> unsealed(table_.columns.begin(), table_.columns.end() - 1);
+    if (old.columns == unsealed)
+      return refuse_file("its rows carry no seal (written before seals; seal them once with "
+                         "`gpm store-seal FILE`)", old.rows.size(), replace);
+    std::size_t c = 0;
+    while (c < old.columns.size() && c < table_.columns.size() && old.columns[c] == table_.columns[c]) ++c;
+    return refuse_file("its columns differ from this program's (column " + std::to_string(c + 1) +
+                           ": file '" + (c < old.columns.size() ? escaped(old.columns[c]) : "-") +
+                           "', now '" + (c < table_.columns.size() ? table_.columns[c] : "-") + "')",
+                       old.rows.size(), replace);
   }
   params_match_ = true;
-  // Rows from before the store had provenance columns: kept, but as "unrecorded" code,
-  // which only a re-check can carry over.
-  const bool legacy = old.columns == own_columns;
-  if (!legacy && old.columns != table_.columns) {
-    std::fprintf(stderr, "[store] %s: columns differ from this program's: its %zu rows are "
-                         "not reused\n", path_.c_str(), old.rows.size());
-    params_match_ = false;
-    return;
-  }
-  // For rows of a file without provenance columns, what its header says of the run.
-  const std::string legacy_made_on =
-      "CPU unrecorded (host " + old.get("host").value_or("?") + "), " +
-      old.get("omp_threads").value_or("?") + " threads, " +
-      old.get("written_utc").value_or("?").substr(0, 10);
-  std::size_t malformed = 0, first_bad = 0;
+  // Each row whole, sealed and not a copy of another; the first bad one is named.
+  const int cseal = table_.column("seal");
+  std::set<std::vector<std::string>> seen;
+  std::size_t bad = 0;
+  std::string first;
   for (std::size_t i = 0; i < old.rows.size(); ++i) {
-    auto row = old.rows[i];
-    if (row.size() != old.columns.size()) {
-      if (malformed++ == 0) first_bad = i + 1;
+    const auto& row = old.rows[i];
+    std::string why;
+    if (row.size() != old.columns.size())
+      why = std::to_string(row.size()) + " cells for " + std::to_string(old.columns.size()) + " columns";
+    else if (row[cseal] != row_seal(row))
+      why = "its seal does not match its cells (edited after it was written?)";
+    else {
+      std::vector<std::string> content;
+      for (std::size_t c = 0; c < row.size(); ++c)
+        if (!is_volatile_column(table_.columns[c])) content.push_back(row[c]);
+      if (!seen.insert(content).second) why = "a duplicate of an earlier row";
+    }
+    if (why.empty()) {
+      table_.rows.push_back(row);
       continue;
     }
-    if (legacy) row.insert(row.end(), {"unrecorded", legacy_made_on, "-"});
-    table_.rows.push_back(std::move(row));
+    if (bad++ == 0)
+      first = "line " + std::to_string(old.row_lines[i]) + " (" + key_text(key_of(row)) + "): " + why;
   }
-  if (malformed)
-    std::fprintf(stderr, "[store] %s: %zu malformed rows dropped (first: data row %zu has the "
-                         "wrong number of cells); their units are recomputed\n",
-                 path_.c_str(), malformed, first_bad);
+  if (bad) {
+    const std::string problem = std::to_string(bad) + " bad row" + (bad > 1 ? "s" : "") + ", first " + first;
+    if (!replace)
+      throw InputError(path_ + ": " + problem + "; nothing written (--replace drops " +
+                       (bad > 1 ? "them" : "it") + " and recomputes " + (bad > 1 ? "their units" : "its unit") +
+                       " when run; or restore the file from git)");
+    std::fprintf(stderr, "[store] %s: %s: dropped (--replace); their units are recomputed when run\n",
+                 path_.c_str(), problem.c_str());
+  }
   const int ccode = table_.column("code");
   for (auto& r : table_.rows) reused_ += r[ccode] == code_;
   const std::size_t other = table_.rows.size() - reused_;
-  if (other)
+  if (other && running())
     std::fprintf(stderr, "[store] %s: %zu rows come from other code (fingerprint now %s): not "
                          "reused without --recheck\n", path_.c_str(), other, code_.c_str());
+  if (!running()) reused_ = 0;  // verify, recheck, census reuse nothing
+}
+
+// A row of older code carried over by a re-check: current code, the last check's record with
+// the count of earlier ones, a new seal (its old one was verified when the file was read).
+void LevelCache::restamp(std::vector<std::string>& r, const std::string& record) const {
+  const int ccode = table_.column("code"), cchecked = table_.column("checked");
+  const std::string& old = r[cchecked];
+  long earlier = 0;
+  if (old != "computed" && old != "-") {
+    // An old-style chain "a; b; c" counts its records; a new-style cell says "(+N earlier)".
+    const auto plus = old.rfind("(+");
+    if (plus != std::string::npos) earlier = std::strtol(old.c_str() + plus + 2, nullptr, 10);
+    for (std::size_t at = old.find("recheck "); at != std::string::npos; at = old.find("recheck ", at + 1))
+      ++earlier;
+  }
+  char text[512];
+  std::snprintf(text, sizeof text, record.c_str(), r[ccode].c_str());
+  r[cchecked] = std::string(text) + (earlier ? " (+" + std::to_string(earlier) + " earlier)" : "");
+  r[ccode] = code_;
+  r.back() = row_seal(r);
 }
 
 std::vector<std::string> LevelCache::key_of(const std::vector<std::string>& row) const {
@@ -181,15 +287,18 @@ std::string LevelCache::key_text(const std::vector<std::string>& key) const {
 }
 
 bool LevelCache::has(const std::vector<std::string>& key, std::size_t expected_rows) const {
-  if (mode_ != CacheMode::run) return false;
+  if (mode_ == CacheMode::verify || mode_ == CacheMode::recheck) return false;
   const int ccode = table_.column("code");
-  std::size_t n = 0;
-  for (auto& r : table_.rows) {
-    if (key_of(r) != key) continue;
-    if (r[ccode] != code_) return false;
-    ++n;
+  std::size_t n = 0, current = 0;
+  for (auto& r : table_.rows)
+    if (key_of(r) == key) ++n, current += r[ccode] == code_;
+  const bool whole = n > 0 && (expected_rows == 0 || n == expected_rows);
+  if (mode_ == CacheMode::census) {
+    if (!whole && std::find(missing_.begin(), missing_.end(), key) == missing_.end())
+      missing_.push_back(key);
+    return true;
   }
-  return n > 0 && (expected_rows == 0 || n == expected_rows);
+  return whole && current == n;
 }
 
 void LevelCache::add(std::vector<std::string> row) {
@@ -197,8 +306,9 @@ void LevelCache::add(std::vector<std::string> row) {
   if (row.size() != own)
     throw std::logic_error("LevelCache::add: a row of " + std::to_string(row.size()) +
                            " cells for " + std::to_string(own) + " columns (" + path_ + ")");
-  row.insert(row.end(), {code_, made_on_, "computed"});
-  if (mode_ != CacheMode::run) {
+  row.insert(row.end(), {code_, made_on_, "computed", ""});
+  row.back() = row_seal(row);
+  if (!running()) {
     fresh_.push_back(std::move(row));
     return;
   }
@@ -206,16 +316,27 @@ void LevelCache::add(std::vector<std::string> row) {
   if (started_.insert(key).second)
     std::erase_if(table_.rows, [&](const auto& r) { return key_of(r) == key; });
   table_.add_row(std::move(row));
+  ++added_;
 }
 
 void LevelCache::save() {
-  if (mode_ != CacheMode::run || !writer_) return;
+  if (!running() || !writer_) return;
   add_provenance(table_);
   table_.save(path_);
 }
 
 void LevelCache::finish() {
-  if (mode_ == CacheMode::run) return;
+  if (running()) return;
+  if (mode_ == CacheMode::census) {
+    std::fprintf(stderr, "[store] census %s: %zu rows, %zu units of this run missing\n",
+                 path_.c_str(), table_.rows.size(), missing_.size());
+    for (std::size_t i = 0; i < missing_.size() && i < 10; ++i)
+      std::fprintf(stderr, "[store]   missing: %s\n", key_text(missing_[i]).c_str());
+    if (!missing_.empty())
+      throw StoreMismatch(path_ + ": " + std::to_string(missing_.size()) + " units missing, first " +
+                          key_text(missing_.front()));
+    return;
+  }
   const char* what = mode_ == CacheMode::verify ? "verify" : "recheck";
   if (fresh_.empty()) throw InputError(std::string("--") + what + ": no unit selected");
   // The recomputed units, in order, each against the file's rows of the same key.
@@ -302,18 +423,18 @@ void LevelCache::finish() {
     // agreement with rows that the current code made itself proves nothing about older rows.
     std::size_t restamped = 0;
     if (agree) {
-      const int cchecked = table_.column("checked");
+      const std::string record = "recheck " + today() + " of code %s: " +
+                                 std::to_string(units.size()) + " units recomputed, max rel diff " + diff;
       for (auto& r : table_.rows)
-        if (r[ccode] != code_ && old_codes.count(r[ccode])) {
-          // The chain of checks stays readable: an older record is kept before the new one.
-          const std::string before = r[cchecked] == "computed" || r[cchecked] == "-"
-                                         ? std::string()
-                                         : r[cchecked] + "; ";
-          r[cchecked] = before + "recheck " + today() + " of code " + r[ccode] + ": " +
-                        std::to_string(units.size()) + " units recomputed, max rel diff " + diff;
-          r[ccode] = code_;
-          ++restamped;
-        }
+        if (r[ccode] != code_ && old_codes.count(r[ccode])) restamp(r, record), ++restamped;
+      if (restamped) {
+        // The whole chain of re-checks lives in a log beside the file, not in every row.
+        std::ofstream log(fs::path(path_).parent_path() / "rechecks.log", std::ios::app);
+        char line[512];
+        std::snprintf(line, sizeof line, record.c_str(), codes.c_str());
+        log << fs::path(path_).filename().string() << "\t" << line << " -> " << code_ << "\t"
+            << restamped << " rows\n";
+      }
     }
     add_provenance(table_);
     table_.save(path_);

@@ -29,9 +29,13 @@ namespace gpm {
 
 class Args;
 
-enum class CacheMode { run, verify, recheck };
+// run: compute the units not yet stored; replace: the same, discarding file content that does
+// not match (above); verify, recheck: below; census: compute nothing, report every unit of
+// the run's loop that the file lacks (exit 4 if any).
+enum class CacheMode { run, replace, verify, recheck, census };
 
-// Declares --verify and --recheck on a study's command line, and reads them back.
+// Declares --verify, --recheck, --census and --replace on a study's command line, and reads
+// them back (two of them together: InputError).
 void add_cache_options(Args& a);
 CacheMode cache_mode(const Args& a);
 
@@ -45,6 +49,12 @@ constexpr double kStoreResidualAbsTol = 1e-13;
 
 // The provenance columns every store row ends with.
 const std::vector<std::string>& row_provenance_columns();
+// The seal of a row: 16 hex digits of a 64-bit FNV-1a hash of every cell but `checked` and
+// `seal` (the study's cells, code, made_on), each followed by a tab.  `row` holds all the
+// columns of row_provenance_columns() (the seal cell's content is ignored).
+std::string row_seal(const std::vector<std::string>& row);
+// A text with its invisible characters made visible (\r, \t, \xEF…), for messages.
+std::string escaped(const std::string& s);
 // Columns that are measurements of the run, not of the numerics (compared never): names
 // ending in "_s", "seconds", "s_per_step", anything with "rss", and the provenance columns.
 bool is_volatile_column(const std::string& name);
@@ -52,8 +62,9 @@ bool is_volatile_column(const std::string& name);
 class LevelCache {
  public:
   // `columns` are the study's own; the provenance columns are appended.  An existing file is
-  // read if its `# key = value` header agrees with `params` on every key; otherwise its rows
-  // are not reused (and, in run mode, are replaced at the first save).
+  // read if its `# key = value` header agrees with `params` on every key and its rows are
+  // whole, sealed and distinct; otherwise InputError, unless the mode is `replace` (or the
+  // file is of the quick profile), where what differs is dropped and replaced.
   // `writer` false: a reader only (the ranks of an MPI run other than rank 0): no lock, and
   // save() writes nothing.
   LevelCache(std::string path, std::vector<std::pair<std::string, std::string>> params,
@@ -65,7 +76,8 @@ class LevelCache {
 
   // Whether the unit `key` is finished under the current code: `expected_rows` rows (any
   // number ≥ 1 when 0), all carrying the current fingerprint.  Always false in verify and
-  // recheck mode (the requested units are computed).
+  // recheck mode (the requested units are computed).  Census mode: always true (nothing is
+  // computed), and a unit the file lacks (any code) is noted for finish().
   bool has(const std::vector<std::string>& key, std::size_t expected_rows = 0) const;
   std::size_t reused() const { return reused_; }
   // One row of the study's own columns; the first row of a unit replaces what the file held
@@ -75,10 +87,15 @@ class LevelCache {
   // on table().  Verify and recheck mode: nothing (finish() decides).
   void save();
   // Verify/recheck: compares, reports on stderr, writes (recheck) and throws StoreMismatch on
-  // a difference.  Run mode: nothing.  Call once, after the last unit.
+  // a difference.  Census: reports the missing units (StoreMismatch if any).  Run mode:
+  // nothing.  Call once, after the last unit.
   void finish();
   // Whether this run writes the data file (and so may write the outputs derived from it).
-  bool writes() const { return mode_ == CacheMode::run && writer_; }
+  bool writes() const { return running() && writer_; }
+  // Whether this run computes and writes units (run or replace).
+  bool running() const { return mode_ == CacheMode::run || mode_ == CacheMode::replace; }
+  // Rows this run added (run mode), for a truthful closing line.
+  std::size_t added() const { return added_; }
 
   TsvTable& table() { return table_; }
   const std::vector<std::vector<std::string>>& rows() const { return table_.rows; }
@@ -86,8 +103,10 @@ class LevelCache {
  private:
   std::vector<std::string> key_of(const std::vector<std::string>& row) const;
   std::string key_text(const std::vector<std::string>& key) const;
-  void load(const std::vector<std::pair<std::string, std::string>>& params,
-            const std::vector<std::string>& own_columns);
+  void load(const std::vector<std::pair<std::string, std::string>>& params);
+  // A mismatch of the whole file: refused (InputError), or its rows dropped when replacing.
+  void refuse_file(const std::string& problem, std::size_t rows, bool replace);
+  void restamp(std::vector<std::string>& row, const std::string& record) const;
 
   std::string path_;
   TsvTable table_;
@@ -96,7 +115,8 @@ class LevelCache {
   std::string code_;  // the current program's fingerprint
   std::string made_on_;
   int lock_fd_ = -1;
-  std::size_t reused_ = 0;
+  std::size_t reused_ = 0, added_ = 0;
+  mutable std::vector<std::vector<std::string>> missing_;  // census: units the file lacks
   std::set<std::vector<std::string>> started_;  // units added by this run
   std::vector<std::vector<std::string>> fresh_;  // verify/recheck: the recomputed rows
   bool params_match_ = false;
