@@ -286,12 +286,7 @@ struct PdeProblem {
   std::vector<double> V;
 };
 PdeProblem make_pde_problem(const Args& a, const PdeSetup& s) {
-  const double nnz_bytes = kAssembledBytesPerNonzero * kPi * (s.h / s.dx) * (s.h / s.dx) / Domain{}.area_H();
-  const double matrix_bytes = s.storage == LaplacianStorage::matrix_free ? 0
-                              : s.storage == LaplacianStorage::assembled
-                                  ? nnz_bytes
-                                  : std::min(nnz_bytes, 8e9 / grid_particle_count(s.dx));
-  require_grid_fits_memory(s.dx, 400 + matrix_bytes, "--dx");
+  require_grid_fits_memory(s.dx, pde_bytes_per_particle(s.h, s.dx, s.storage, 8e9), "--dx");
   PdeProblem pr;
   pr.p = jittered_grid(s.dx, a.seed(), a.num("jitter"));
   pr.V = pde_volumes(a.str("volumes"), pr.p, s.dx);

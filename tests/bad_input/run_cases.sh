@@ -11,7 +11,8 @@
 #   exit     the exit code the command must return
 #   message  a fixed string its stdout + stderr must contain ('-': none); on a non-zero exit
 #            its stderr must also be exactly one line (the program's one-line error)
-#   setup    a bash command run first in the directory ('-': none); what it leaves is the
+#   setup    a bash command run first in the directory, with BUILD_DIR first on PATH ('-':
+#            none); what it leaves is the
 #            baseline the listing is compared with
 #   command  a bash command run in the directory with BUILD_DIR first on PATH
 #   after    the directory's files afterwards, space-separated and sorted, paths relative to
@@ -41,7 +42,7 @@ while IFS= read -r line || [ -n "$line" ]; do
   n=$((n + 1))
   dir=$work/case$n
   mkdir "$dir"
-  if [ "$setup" != "-" ] && ! (cd "$dir" && bash -c "$setup") >/dev/null 2>&1; then
+  if [ "$setup" != "-" ] && ! (cd "$dir" && PATH="$build:$PATH" bash -c "$setup") >/dev/null 2>&1; then
     echo "FAIL $cases:$lineno: setup failed: $setup"
     failed=$((failed + 1))
     continue

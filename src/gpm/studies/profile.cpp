@@ -88,4 +88,14 @@ void require_grid_fits_memory(double dx, double bytes_per_particle, const std::s
   }
 }
 
+double pde_bytes_per_particle(double h, double dx, LaplacianStorage storage, double max_bytes) {
+  const double nnz_bytes =
+      kAssembledBytesPerNonzero * 3.14159265358979323846 * (h / dx) * (h / dx) / Domain{}.area_H();
+  const double matrix_bytes = storage == LaplacianStorage::matrix_free ? 0
+                              : storage == LaplacianStorage::assembled
+                                  ? nnz_bytes
+                                  : std::min(nnz_bytes, max_bytes / grid_particle_count(dx));
+  return 400 + matrix_bytes;
+}
+
 }  // namespace gpm

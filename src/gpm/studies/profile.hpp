@@ -3,6 +3,8 @@
 // The levels of each study per profile are in the study catalog (catalog.hpp).
 #pragma once
 #include <string>
+
+#include "gpm/solvers/laplacian_matrix.hpp"
 #include <vector>
 
 namespace gpm {
@@ -41,5 +43,11 @@ double grid_particle_count(double dx);
 // InputError names `option`, dx, N and both memory sizes.  Also refuses dx ≥ 0.5 (no node
 // inside Ω) so that no caller builds a grid it cannot use.
 void require_grid_fits_memory(double dx, double bytes_per_particle, const std::string& option);
+
+// Memory per particle of a Poisson or heat problem with influence radius h at spacing dx:
+// matrix-free, peak RSS / N was 264 bytes at dx = 2^-8 (400 with margin); an assembled
+// Laplacian adds kAssembledBytesPerNonzero per non-zero of the Ω × all matrix, about π(h/dx)²
+// per unknown, |Ω|/|Ω_H| of the particles; `automatic` assembles only within max_bytes.
+double pde_bytes_per_particle(double h, double dx, LaplacianStorage storage, double max_bytes);
 
 }  // namespace gpm

@@ -328,10 +328,12 @@ void LevelCache::save() {
 void LevelCache::finish() {
   if (running()) return;
   if (mode_ == CacheMode::census) {
-    std::fprintf(stderr, "[store] census %s: %zu rows, %zu units of this run missing\n",
-                 path_.c_str(), table_.rows.size(), missing_.size());
+    // The census is this mode's output (stdout); a failure is one line on stderr.
+    std::printf("[store] census %s: %zu rows, %zu units of this run missing\n", path_.c_str(),
+                table_.rows.size(), missing_.size());
     for (std::size_t i = 0; i < missing_.size() && i < 10; ++i)
-      std::fprintf(stderr, "[store]   missing: %s\n", key_text(missing_[i]).c_str());
+      std::printf("[store]   missing: %s\n", key_text(missing_[i]).c_str());
+    std::fflush(stdout);
     if (!missing_.empty())
       throw StoreMismatch(path_ + ": " + std::to_string(missing_.size()) + " units missing, first " +
                           key_text(missing_.front()));
