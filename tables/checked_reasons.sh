@@ -143,7 +143,7 @@ tol=0.15  # the agreement tolerance of rate_table
     done
   fi
   for t in 4_5 4_6 4_7; do
-    for r in h10 h10_dtexact; do
+    for r in h10 h10_exact; do
       f=$(heat_file "$store" $t $r) slice=$(heat_label $r)
       [ -f "$f" ] || continue
       # The V_i = dx^2 run counts only under the same Δt rule as the data it is set against.

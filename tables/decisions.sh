@@ -181,12 +181,12 @@ span() {
   # agrees, non-convergence, seed band, checked reason), and the one the scoreboard counts.
   if [ -n "$score" ] && [ -f "$score" ]; then
     awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
-      $c["setup"] == "document" && $c["slice"] != "" && $c["slice"] != "not in the store" {
+      $c["setup"] == "document" && $c["table"] != "total" {
         t = $c["table"]; g = $c["agrees"] + $c["non_convergence"] + $c["in_seed_band"] + $c["checked_reason"]
         ev[t] = ev[t] sprintf(" %s: %d of %d reproduced (%d not yet computed);", $c["slice"], g, $c["rates"], $c["not_computed"])
         n[t]++; if ($c["counted"] == "yes") pick[t] = $c["slice"]; if (!(t in seen)) { seen[t] = 1; order[++m] = t } }
       END { for (i = 1; i <= m; i++) { t = order[i]; if (n[t] < 2) continue
-        printf "%s: which reading of the set-up the document ran\t%s\tcounted: %s (the reading reproduced most often; on a tie the one as printed); every reading stays in the data\n", t, ev[t], pick[t] } }' "$score"
+        printf "%s: which reading of the set-up the document ran\t%s\tidentified: %s (the rule of paper/04-setup-rule.md: the fingerprint where one decides, else as printed; the judged rates play no part); every reading stays in the data\n", t, ev[t], pick[t] } }' "$score"
   fi
 
   # --- Omega_H: the square or the rounded H-neighbourhood; jittered particles mirrored or dropped.

@@ -21,15 +21,28 @@
 #                               the thesis tables where seeds 2 and 3 are stored);
 #   differs, checked reason     a reason in CHECKED (checked_reasons.sh) whose diagnostic passed;
 #   differs, unexplained        none of the above;
-#   not computed / undefined    a level missing (or only other levels than the documents', for a
-#                               reading the catalog trims), or no finite rate.
-# `counted` = yes for the one reading per table that the scoreboard counts (see below), so
-# that each of the 80 published rates counts once.
+#   not computed                a level missing (or only other levels than the documents', for a
+#                               reading the catalog trims);
+#   undefined                   no finite rate (a run that overflowed): never reproduced.
+# Non-convergence is reproduced only from a computed rate: within tolerance where the document
+# claims none (theoretical NA), or, where it prints an unstable run (theoretical "unstable"),
+# when ours is unstable too by a stated measure: error above the solution (rel_error > 1) at
+# both rate levels and growing as h falls (rate < 0).
 #
-# usage: store_rates.sh BUILD_DIR STORE_DIR OUT SUMMARY SCORE [CHECKED]
+# Two scoreboards, each over every published rate once (paper/04-setup-rule.md):
+#   printed = yes   the reading as the text prints it (imoto: seed 1; Tables 4.1-4.3: printed h,
+#                   Voronoi volumes; Tables 4.4-4.7: h10, V_i = |Omega_H|/N, dt = T/K);
+#   identified = yes the reading the documents' fingerprint identifies (setup_identification:
+#                   Chapter 4's h rule, volumes and time step from Table 4.6's theta = 0 rates;
+#                   elsewhere as printed); the fingerprint rates themselves are counted as
+#                   `fingerprint` on that board, not as reproduced.
+# `counted` = identified (the board the report leads with).  IDENT (written) is
+# setup_identification's table, the fingerprint evidence.
+#
+# usage: store_rates.sh BUILD_DIR STORE_DIR OUT SUMMARY SCORE [CHECKED [IDENT]]
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -euo pipefail
-build=$1 store=$2 out=$3 summary=$4 score=$5 checked=${6:-/dev/null}
+build=$1 store=$2 out=$3 summary=$4 score=$5 checked=${6:-/dev/null} ident=${7:-}
 tmp=$(mktemp -d)
 # Header lines every output carries (the report prints them under each table).
 rev=$(git describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)
@@ -79,12 +92,12 @@ done
 # document prints an unstable run there (theoretical "unstable"), that is what it reports.
 : > "$tmp/blown.tsv"
 for t in 4_5 4_6 4_7; do
-  for r in $heat_variants; do
+  for r in $heat_readings; do
     f=$(heat_file "$store" $t $r)
     [ -f "$f" ] || continue
     finite "$f" > "$tmp/finite.tsv"
     rate "thesis_table$t" "$r" "$tmp/finite.tsv" "$pub/thesis_table${t}_long.tsv" weight,theta
-    sl=$(heat_label $r)
+    sl=$r
     awk -F'\t' -v t="thesis_table$t" -v sl="$sl" '
       FNR == 1 { file++ }
       file == 1 && /^# rate_levels = / { split(substr($0, 17), rl, ","); next }
@@ -96,7 +109,7 @@ for t in 4_5 4_6 4_7; do
         e = $c[2, "blew_up"] == "yes" ? "blew up at step " $c[2, "blowup_step"] " of " $c[2, "K"] \
                                       : sprintf("error %.3g after %d steps", $c[2, "rel_error"], $c[2, "K"])
         ev[k] = ev[k] (ev[k] == "" ? "" : "; ") "2^-" $c[2, "level"] ": " e }
-      END { for (k in n) if (n[k] == 2) printf "%s\t%s\t%s\tunstable at both rate levels (%s), as the document reports\n", t, sl, k, ev[k] }' \
+      END { for (k in n) if (n[k] == 2) printf "%s\t%s\t%s\tunstable at both rate levels (%s)\n", t, sl, k, ev[k] }' \
       "$pub/thesis_table${t}_long.tsv" "$f" >> "$tmp/blown.tsv"
   done
 done
@@ -110,6 +123,13 @@ for v in all seed2 seed3 plain; do
   fi
 done
 
+# The reading of Chapter 4 that Table 4.6's theta = 0 rates identify (paper/04-setup-rule.md).
+ident=${ident:-$tmp/setup_identification.tsv}
+"$build/setup_identification" --store "$store" --published "$pub/thesis_table4_6_long.tsv" --out "$ident" >/dev/null
+identified=$(sed -n 's/^# identified = //p' "$ident")
+identified_h=$(sed -n 's/^# decided_h_rule = \([a-z0-9]*\).*/\1/p' "$ident")
+[ -n "$identified_h" ] || identified_h=h10
+
 # Merge: the key columns of each table joined into one "key" cell; columns found by name.
 # The seed band of a key is the range of the rates of its seed-1, seed-2 and seed-3 slices.
 {
@@ -118,7 +138,7 @@ done
   echo "# store = $store"
   echo "# checked_reasons = $checked"
   echo "# note = rates at the documents' levels from the committed paper-profile rows; status from rate_table (tolerance in its header); verdict as listed in tables/store_rates.sh"
-  printf 'table\tslice\tsetup\tkey\tpublished\treproduced\tlevels\tstatus\tseed_band\tverdict\treason\tcounted\n'
+  printf 'table\tslice\tsetup\tkey\tpublished\treproduced\tlevels\tstatus\tseed_band\tverdict\treason\tprinted\tidentified\tverdict_identified\tcounted\n'
   for r in "$tmp"/rates/*.tsv; do
     [ -e "$r" ] || continue
     name=$(basename "$r" .tsv)
@@ -134,9 +154,8 @@ done
       { k = $c[keys[1]]; for (j=2;j<=nk;j++) k = k " " $c[keys[j]];
         seed = match(s, /seed[0-9]+$/) ? substr(s, RSTART) : ""
         setup = s ~ /uniform/ ? "beyond the document (uniform volumes)" \
-              : s ~ /cellvol/ ? "beyond the document (V_i = dx^2)" \
               : seed != "" ? "another jitter realization" : s == "plain" ? "plain grid (no jitter)" : "document"
-        sl = s ~ /dtexact/ ? s " (dt = dt0 exactly)" : s
+        sl = s
         # Table 4.4 prints one rate per weight for both readings of h: one slice per reading.
         if (t == "thesis_table4_4") { sl = $c["h_rule"] (seed != "" ? "_" seed : ""); k = $c["weight"] }
         status = setup == "document" ? $c["status"] : "no published value for this set-up"
@@ -162,12 +181,14 @@ done
       v = $8; reason = ""
       if ($3 == "document") {
         if ($8 == "agrees") v = $9 == "NA" ? "non-convergence reproduced" : "agrees"
+        else if ($8 ~ /^differs/ && $9 == "unstable" && (($1, $2, $4) in blown) && num($6) && $6 + 0 < 0 && $5 + 0 < 0) {
+          v = "non-convergence reproduced"; reason = "both unstable: " blown[$1, $2, $4] ", rate < 0" }
         else if ($8 ~ /^differs/) {
           if (band != "" && num($5) && $5 + 0 >= lo[k] && $5 + 0 <= hi[k]) v = "inside seed band"
           else if (($1, $2, $4) in ok) { v = "differs, checked reason"; reason = why[$1, $2, $4] }
           else v = "differs, unexplained" }
-        else if ($8 == "not-computed" && $9 == "unstable" && (($1, $2, $4) in blown)) {
-          v = "non-convergence reproduced"; reason = blown[$1, $2, $4] }
+        else if ($8 == "not-computed" && (($1, $2, $4) in blown)) {
+          v = "undefined"; reason = "no finite rate: " blown[$1, $2, $4] }
         else if ($8 == "not-computed") v = "not computed"
         # A rate from other levels than those of the document (a reading the catalog trims before
         # the finest level): shown, but not computed at the levels of the document.
@@ -175,31 +196,16 @@ done
       else v = "not counted"
       printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", $1, $2, $3, $4, $5, $6, $7, $8, band, v, reason }' \
     "$tmp/blown.tsv" "$checked" "$tmp/merged.tsv" "$tmp/merged_again.tsv" > "$tmp/verdicts.tsv"
-  # Which reading counts: where a document admits several readings of its set-up (h printed or
-  # scaled, h10 or h15, dt = T/K or dt0), the scoreboard counts, per table, the one whose rates
-  # are reproduced most often (agrees, non-convergence, seed band or checked reason); on a tie
-  # the one with more rates computed at the documents' levels, then the reading as printed
-  # (printed h, h10, dt = T/K).  So every published rate counts once.
-  cp "$tmp/verdicts.tsv" "$tmp/verdicts_again.tsv"
-  awk -F'\t' '
-    function rank(s) { return (s == "all" || s == "printed_voronoi" || s == "h10") ? 0 : 1 }
-    FILENAME == ARGV[1] { if ($3 != "document") next
-      good[$1, $2] += ($10 == "agrees" || $10 == "non-convergence reproduced" || $10 == "inside seed band" || $10 == "differs, checked reason")
-      done[$1, $2] += ($10 != "not computed")
-      sl[$1, $2] = 1; tabs[$1] = 1; next }
-    # better(a, b): a reproduces more rates; on a tie, more of its rates are computed at the
-    # documents levels; then the reading as printed; then by name.
-    function better(t, a, b) {
-      if (good[t, a] != good[t, b]) return good[t, a] > good[t, b]
-      if (done[t, a] != done[t, b]) return done[t, a] > done[t, b]
-      if (rank(a) != rank(b)) return rank(a) < rank(b)
-      return a < b }
-    FNR == 1 { for (t in tabs) { best = ""
-        for (k in sl) { split(k, q, SUBSEP); if (q[1] != t) continue
-          if (best == "" || better(t, q[2], best)) best = q[2] }
-        chosen[t] = best } }
-    { print $0 "\t" (($3 == "document" && chosen[$1] == $2) ? "yes" : "no") }' \
-    "$tmp/verdicts.tsv" "$tmp/verdicts_again.tsv"
+  # The two boards (header above): which slice of each table is the reading as printed, and
+  # which the fingerprint identified (Chapter 4 only; undecided: as printed).
+  awk -F'\t' -v id="$identified" -v idh="$identified_h" '
+    BEGIN { OFS = "\t"; split("imoto_table1 all thesis_table4_1 printed_voronoi thesis_table4_2 printed_voronoi thesis_table4_3 printed_voronoi thesis_table4_4 h10 thesis_table4_5 h10 thesis_table4_6 h10 thesis_table4_7 h10", p, " ")
+      for (i = 1; i in p; i += 2) { printed[p[i]] = p[i + 1]; ident[p[i]] = p[i + 1] }
+      if (id != "NA") { ident["thesis_table4_4"] = idh; for (t = 5; t <= 7; t++) ident["thesis_table4_" t] = id } }
+    { pr = $3 == "document" && printed[$1] == $2; ie = $3 == "document" && ident[$1] == $2
+      # The fingerprint rates identified the reading: on that board they are evidence, not results.
+      vi = (ie && id != "NA" && $1 == "thesis_table4_6" && $4 ~ / 0$/) ? "fingerprint" : $10
+      print $0, pr ? "yes" : "no", ie ? "yes" : "no", vi, ie ? "yes" : "no" }' "$tmp/verdicts.tsv"
 } > "$out.tmp"
 mv "$out.tmp" "$out"
 
@@ -230,30 +236,34 @@ mv "$out.tmp" "$out"
 } > "$summary.tmp"
 mv "$summary.tmp" "$summary"
 
-# Verdict counts per table and slice, in the order the rates file lists them.
+# Verdict counts per table and slice, in the order the rates file lists them (the matrix of
+# readings: counts and the mean |reproduced - published|), then the two boards' totals.  A
+# board whose reading of a table has no stored rows counts its published rates not computed.
 awk -F'\t' '
-  BEGIN { OFS = "\t" }
+  BEGIN { OFS = "\t"; ncat = split("agrees|non-convergence reproduced|inside seed band|differs, checked reason|differs, unexplained|not computed|undefined|fingerprint", cat, "|") }
+  function num(x) { return x ~ /^-?[0-9.]+([eE][-+]?[0-9]+)?$/ }
   /^#/ { next }
   !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
-  { seen[$c["table"]] = 1; k = $c["table"] OFS $c["slice"] OFS $c["setup"]
+  { t = $c["table"]; k = t OFS $c["slice"] OFS $c["setup"]
     if (!(k in n)) order[++m] = k
-    n[k]++; st[k, $c["verdict"]]++; if ($c["counted"] == "yes") counted[k] = 1 }
+    n[k]++; st[k, $c["verdict"]]++
+    if (num($c["reproduced"]) && num($c["published"])) { d = $c["reproduced"] - $c["published"]; sd[k] += d < 0 ? -d : d; nd[k]++ }
+    if ($c["printed"] == "yes") { pk[k] = 1; B["printed", t] = 1; for (j = 1; j <= ncat; j++) if ($c["verdict"] == cat[j]) T["printed", j]++ }
+    if ($c["identified"] == "yes") { ik[k] = 1; B["identified", t] = 1; for (j = 1; j <= ncat; j++) if ($c["verdict_identified"] == cat[j]) T["identified", j]++ } }
+  function counts(kk, j, s) { s = ""; for (j = 1; j <= ncat; j++) s = s OFS (st[kk, cat[j]] + 0); return s }
   END {
     print "# program = tables/store_rates.sh (score)"
     while ((getline line < "/dev/stdin") > 0) print line
-    print "table", "slice", "setup", "counted", "rates", "agrees", "non_convergence", "in_seed_band", "checked_reason", "unexplained", "not_computed", "undefined"
+    print "# boards = printed: every set-up detail as the text prints it; identified: the readings of paper/04-setup-rule.md (fingerprint: a published rate that identified the reading)"
+    print "table", "slice", "setup", "printed", "identified", "counted", "rates", "agrees", "non_convergence", "in_seed_band", "checked_reason", "unexplained", "not_computed", "undefined", "fingerprint", "mean_abs_diff"
     for (i=1;i<=m;i++) { k = order[i]
-      a = st[k, "agrees"] + 0; nc = st[k, "non-convergence reproduced"] + 0; b = st[k, "inside seed band"] + 0
-      cr = st[k, "differs, checked reason"] + 0; u = st[k, "differs, unexplained"] + 0; x = st[k, "not computed"] + 0
-      cnt = counted[k] ? "yes" : "no"
-      print k, cnt, n[k], a, nc, b, cr, u, x, n[k] - a - nc - b - cr - u - x
-      if (counted[k]) { T[1] += n[k]; T[2] += a; T[3] += nc; T[4] += b; T[5] += cr; T[6] += u; T[7] += x; T[8] += n[k] - a - nc - b - cr - u - x } }
-    # Published tables with no stored file at all: every rate still to compute.
+      print k, pk[k] ? "yes" : "no", ik[k] ? "yes" : "no", ik[k] ? "yes" : "no", n[k] counts(k), nd[k] ? sprintf("%.3g", sd[k] / nd[k]) : "NA" }
     split("imoto_table1 thesis_table4_1 thesis_table4_2 thesis_table4_3 thesis_table4_4 thesis_table4_5 thesis_table4_6 thesis_table4_7", all, " ")
-    for (i=1; i in all; i++) if (!(all[i] in seen)) {
-      f = all[i] == "imoto_table1" ? pub "/imoto_table1.tsv" : pub "/" all[i] "_long.tsv"
-      np = 0; while ((getline line < f) > 0) if (line !~ /^#/ && np++ == 0) continue
-      print all[i], "not in the store", "document", "yes", np - 1, 0, 0, 0, 0, 0, np - 1, 0
-      T[1] += np - 1; T[7] += np - 1 }
-    print "total", "", "document", "yes", T[1] + 0, T[2] + 0, T[3] + 0, T[4] + 0, T[5] + 0, T[6] + 0, T[7] + 0, T[8] + 0 }' pub="$pub" "$out" > "$score.tmp" < <(provenance)
+    for (b = 1; b <= 2; b++) { bd = b == 1 ? "printed" : "identified"
+      for (i=1; i in all; i++) if (!((bd, all[i]) in B)) {
+        f = all[i] == "imoto_table1" ? pub "/imoto_table1.tsv" : pub "/" all[i] "_long.tsv"
+        np = 0; while ((getline line < f) > 0) if (line !~ /^#/) np++
+        close(f); T[bd, 6] += np - 1 }
+      tot = 0; s = ""; for (j = 1; j <= ncat; j++) { tot += T[bd, j]; s = s OFS (T[bd, j] + 0) }
+      print "total", "as " bd, "document", b == 1 ? "yes" : "no", b == 2 ? "yes" : "no", b == 2 ? "yes" : "no", tot s, "NA" } }' pub="$pub" "$out" > "$score.tmp" < <(provenance)
 mv "$score.tmp" "$score"
