@@ -16,10 +16,15 @@
 #                               documents claim convergence;
 #   non-convergence reproduced  within tolerance where the published theoretical rate is NA
 #                               (imoto's m = 1 rows: the rate is about 0 or -1, a different claim);
+#   indeterminate               the published rate lies inside the seed band, but the band has
+#                               fewer than 5 realizations or is wider than the tolerance;
 #   inside seed band            differs for seed 1, but the published rate lies between the
 #                               smallest and largest rate of the stored seeds 1-3 (imoto, and
 #                               the thesis tables where seeds 2 and 3 are stored);
-#   differs, checked reason     a reason in CHECKED (checked_reasons.sh) whose diagnostic passed;
+#   differs, checked reason     a reason in CHECKED (checked_reasons.sh) whose diagnostic passed
+#                               and includes a run that restores the published rate;
+#   our rate explained, the published one not
+#                               a passed diagnostic that accounts for our rate only;
 #   differs, unexplained        none of the above;
 #   not computed                a level missing (or only other levels than the documents', for a
 #                               reading the catalog trims);
@@ -162,11 +167,13 @@ identified_h=$(sed -n 's/^# decided_h_rule = \([a-z0-9]*\).*/\1/p' "$ident")
         printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", t, sl, setup, k, $c["published"], $c["reproduced"], $c["levels"], status, claims ? $c["theoretical"] : "" }' "$r"
   done > "$tmp/merged.tsv"
   cp "$tmp/merged.tsv" "$tmp/merged_again.tsv"  # second pass (awk tells files by name)
-  awk -F'\t' '
+  # rate_table's agreement tolerance, as its files record it (one number, one source).
+  tol=$(sed -n 's/^# tolerance = //p' "$(ls "$tmp"/rates/*.tsv | head -1)")
+  awk -F'\t' -v tol="$tol" '
     function num(x) { return x ~ /^-?[0-9.]+([eE][-+]?[0-9]+)?$/ }
     FILENAME == ARGV[1] { blown[$1, $2, $3] = $4; next }
     FILENAME == ARGV[2] { if (/^#/) next; if (!hc++) { for (i=1;i<=NF;i++) cc[$i]=i; next }
-                if ($cc["check"] == "pass") { ok[$cc["table"], $cc["slice"], $cc["key"]] = 1
+                if ($cc["check"] == "pass") { ok[$cc["table"], $cc["slice"], $cc["key"]] = $cc["restores"] == "yes" ? 2 : 1
                   why[$cc["table"], $cc["slice"], $cc["key"]] = $cc["reason"] ": " $cc["evidence"] }
                 next }
     # The band of a (table, slice, key): the rates of its seed-1 slice and of the same slice
@@ -184,8 +191,15 @@ identified_h=$(sed -n 's/^# decided_h_rule = \([a-z0-9]*\).*/\1/p' "$ident")
         else if ($8 ~ /^differs/ && $9 == "unstable" && (($1, $2, $4) in blown) && num($6) && $6 + 0 < 0 && $5 + 0 < 0) {
           v = "non-convergence reproduced"; reason = "both unstable: " blown[$1, $2, $4] ", rate < 0" }
         else if ($8 ~ /^differs/) {
-          if (band != "" && num($5) && $5 + 0 >= lo[k] && $5 + 0 <= hi[k]) v = "inside seed band"
-          else if (($1, $2, $4) in ok) { v = "differs, checked reason"; reason = why[$1, $2, $4] }
+          # Inside the band of the jitter realizations: a verdict only with at least 5 of them
+          # and a band no wider than the tolerance; otherwise the seeds cannot decide.
+          if (band != "" && num($5) && $5 + 0 >= lo[k] && $5 + 0 <= hi[k]) {
+            if (n[k] >= 5 && hi[k] - lo[k] <= tol) v = "inside seed band"
+            else { v = "indeterminate"; reason = n[k] < 5 ? sprintf("published inside the band of %d seeds; 5 are needed to decide", n[k]) \
+                                                       : sprintf("band %.2f wide, wider than the tolerance %.2f", hi[k] - lo[k], tol) } }
+          # A checked reason whose check includes a run that restores the published rate; one
+          # that explains only our rate leaves the published one unexplained, and says so.
+          else if (($1, $2, $4) in ok) { v = ok[$1, $2, $4] == 2 ? "differs, checked reason" : "our rate explained, the published one not"; reason = why[$1, $2, $4] }
           else v = "differs, unexplained" }
         else if ($8 == "not-computed" && (($1, $2, $4) in blown)) {
           v = "undefined"; reason = "no finite rate: " blown[$1, $2, $4] }
@@ -240,7 +254,7 @@ mv "$summary.tmp" "$summary"
 # readings: counts and the mean |reproduced - published|), then the two boards' totals.  A
 # board whose reading of a table has no stored rows counts its published rates not computed.
 awk -F'\t' '
-  BEGIN { OFS = "\t"; ncat = split("agrees|non-convergence reproduced|inside seed band|differs, checked reason|differs, unexplained|not computed|undefined|fingerprint", cat, "|") }
+  BEGIN { OFS = "\t"; ncat = split("agrees|non-convergence reproduced|inside seed band|differs, checked reason|our rate explained, the published one not|differs, unexplained|not computed|undefined|fingerprint|indeterminate", cat, "|") }
   function num(x) { return x ~ /^-?[0-9.]+([eE][-+]?[0-9]+)?$/ }
   /^#/ { next }
   !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
@@ -255,7 +269,7 @@ awk -F'\t' '
     print "# program = tables/store_rates.sh (score)"
     while ((getline line < "/dev/stdin") > 0) print line
     print "# boards = printed: every set-up detail as the text prints it; identified: the readings of paper/04-setup-rule.md (fingerprint: a published rate that identified the reading)"
-    print "table", "slice", "setup", "printed", "identified", "counted", "rates", "agrees", "non_convergence", "in_seed_band", "checked_reason", "unexplained", "not_computed", "undefined", "fingerprint", "mean_abs_diff"
+    print "table", "slice", "setup", "printed", "identified", "counted", "rates", "agrees", "non_convergence", "in_seed_band", "checked_reason", "explained_ours", "unexplained", "not_computed", "undefined", "fingerprint", "indeterminate", "mean_abs_diff"
     for (i=1;i<=m;i++) { k = order[i]
       print k, pk[k] ? "yes" : "no", ik[k] ? "yes" : "no", ik[k] ? "yes" : "no", n[k] counts(k), nd[k] ? sprintf("%.3g", sd[k] / nd[k]) : "NA" }
     split("imoto_table1 thesis_table4_1 thesis_table4_2 thesis_table4_3 thesis_table4_4 thesis_table4_5 thesis_table4_6 thesis_table4_7", all, " ")
@@ -263,7 +277,7 @@ awk -F'\t' '
       for (i=1; i in all; i++) if (!((bd, all[i]) in B)) {
         f = all[i] == "imoto_table1" ? pub "/imoto_table1.tsv" : pub "/" all[i] "_long.tsv"
         np = 0; while ((getline line < f) > 0) if (line !~ /^#/) np++
-        close(f); T[bd, 6] += np - 1 }
+        close(f); T[bd, 7] += np - 1 }
       tot = 0; s = ""; for (j = 1; j <= ncat; j++) { tot += T[bd, j]; s = s OFS (T[bd, j] + 0) }
       print "total", "as " bd, "document", b == 1 ? "yes" : "no", b == 2 ? "yes" : "no", b == 2 ? "yes" : "no", tot s, "NA" } }' pub="$pub" "$out" > "$score.tmp" < <(provenance)
 mv "$score.tmp" "$score"

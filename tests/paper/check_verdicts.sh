@@ -22,7 +22,7 @@ bash tables/checked_reasons.sh results/paper "$tmp/checked.tsv" "$build"
 bash tables/store_rates.sh "$build" results/paper "$tmp/rates.tsv" "$tmp/summary.tsv" "$tmp/score.tsv" "$tmp/checked.tsv"
 # Both boards must cover every published rate once.
 awk -F'\t' '/^#/ || !h++ { next } $1 == "total" { if ($7 != 80) { printf "board %s covers %s rates, not 80\n", $2, $7; bad = 1 }
-  else printf "board %s: %s rates; agrees %s, non-convergence %s, seed band %s, checked %s, unexplained %s, not computed %s, undefined %s, fingerprint %s\n", $2, $7, $8, $9, $10, $11, $12, $13, $14, $15 }
+  else printf "board %s: %s rates; agrees %s, non-convergence %s, seed band %s, checked (restored) %s, our rate explained only %s, unexplained %s, not computed %s, undefined %s, fingerprint %s, indeterminate %s\n", $2, $7, $8, $9, $10, $11, $12, $13, $14, $15, $16, $17 }
   END { exit bad }' "$tmp/score.tsv"
 known=tests/paper/known_unexplained.tsv
 awk -F'\t' '
