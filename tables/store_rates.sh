@@ -87,7 +87,7 @@ for t in 4_1 4_2 4_3; do
     done
   done
 done
-for v in all seed2 seed3; do
+for v in all seed2 seed3 cellvol; do  # cellvol: the reading V_i = dx^2, slices h10_cell, h15_cell
   f=$store/thesis_table4_4.tsv
   [ $v = all ] || f=$store/thesis_table4_4_$v.tsv
   [ -f "$f" ] && rate thesis_table4_4 $v "$f" "$pub/thesis_table4_4_long.tsv" h_rule,weight
@@ -132,8 +132,10 @@ done
 ident=${ident:-$tmp/setup_identification.tsv}
 "$build/setup_identification" --store "$store" --published "$pub/thesis_table4_6_long.tsv" --out "$ident" >/dev/null
 identified=$(sed -n 's/^# identified = //p' "$ident")
+# Table 4.4 (Poisson, no time step) takes the identified h rule and volumes.
 identified_h=$(sed -n 's/^# decided_h_rule = \([a-z0-9]*\).*/\1/p' "$ident")
 [ -n "$identified_h" ] || identified_h=h10
+[ "$(sed -n 's/^# decided_volumes = \([a-z]*\).*/\1/p' "$ident")" = cell ] && identified_h=${identified_h}_cell
 
 # Merge: the key columns of each table joined into one "key" cell; columns found by name.
 # The seed band of a key is the range of the rates of its seed-1, seed-2 and seed-3 slices.
@@ -162,7 +164,7 @@ identified_h=$(sed -n 's/^# decided_h_rule = \([a-z0-9]*\).*/\1/p' "$ident")
               : seed != "" ? "another jitter realization" : s == "plain" ? "plain grid (no jitter)" : "document"
         sl = s
         # Table 4.4 prints one rate per weight for both readings of h: one slice per reading.
-        if (t == "thesis_table4_4") { sl = $c["h_rule"] (seed != "" ? "_" seed : ""); k = $c["weight"] }
+        if (t == "thesis_table4_4") { sl = $c["h_rule"] (seed != "" ? "_" seed : "") (s == "cellvol" ? "_cell" : ""); k = $c["weight"] }
         status = setup == "document" ? $c["status"] : "no published value for this set-up"
         printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", t, sl, setup, k, $c["published"], $c["reproduced"], $c["levels"], status, claims ? $c["theoretical"] : "" }' "$r"
   done > "$tmp/merged.tsv"

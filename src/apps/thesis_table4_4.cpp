@@ -2,7 +2,8 @@
 //
 //   −Δ_h U_i = f_i in Ω,  U_i = g̃_i outside,  u = g̃ = sin(2π(x+y)),  f = −Δu = 8π² u,
 //   weights: quartic, piecewise cubic, piecewise quintic polynomial (= SPH bell, cubic and
-//   quintic B-spline, thesis Appendix A.1), V_i = |Ω_H|/N (A.10), jittered grid Δx = 2^-k,
+//   quintic B-spline, thesis Appendix A.1), V_i = |Ω_H|/N (A.10) or, the other reading
+//   (--volumes cell), V_i = Δx²; jittered grid Δx = 2^-k,
 //   relative ℓ∞ error max_Ω|ũ − U| / max_Ω|ũ|; rates from the two finest levels.
 //
 // Two readings of the influence radius:
@@ -45,8 +46,12 @@ int body(int argc, char** argv) {
   run.args()
       .opt("tol", "1e-10", "CG relative residual on the symmetric form")
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
-      .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB); above: matrix-free");
+      .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB); above: matrix-free")
+      .opt("volumes", "lattice", "lattice: V_i = |Omega_H|/N (thesis (A.10)); cell: V_i = dx^2\n"
+                                 "  (the other reading of the volumes; the store's _cellvol file)");
   run.parse(argc, argv);
+  const std::string volumes = run.args().str("volumes");
+  const std::string volumes_text = pde_volumes_description(volumes);  // InputError if unknown
   const double tol = run.args().tolerance("tol");
   const auto storage = parse_laplacian_storage(run.args().str("storage"));
   const double max_bytes = run.args().positive("max-gb") * 1e9;
@@ -62,7 +67,7 @@ int body(int argc, char** argv) {
   LevelCache& cache = run.open(
       {{"program", "thesis_table4_4"}, {"profile", profile_name(run.profile())},
        {"seed", fmt(static_cast<long long>(run.seed()))}, {"tol", fmt(tol)},
-       {"function", "sin2pi"}, {"volumes", "uniform |Omega_H|/N"},
+       {"function", "sin2pi"}, {"volumes", volumes_text},
        {"error", "max_Omega|u-U| / max_Omega|u|"},
        {"h10", pde_h_formula("h10")}, {"h15", pde_h_formula("h15")}},
       poisson_table().columns, 3);
@@ -72,7 +77,7 @@ int body(int argc, char** argv) {
     const double dx = std::ldexp(1.0, -k);
     // Particles, volumes, data: shared by every weight and reading of h at this level.
     const Particles p = jittered_grid(dx, run.seed());
-    const auto V = uniform_volumes(p, dom);
+    const auto V = pde_volumes(volumes, p, dx, dom);
     const PoissonData d = poisson_data(p, u);  // f = −Δu, g = u at every particle
     for (const auto& rule : pde_h_rules()) {
       const double h = pde_h(rule, dx);
