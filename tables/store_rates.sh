@@ -197,8 +197,9 @@ identified_h=$(sed -n 's/^# decided_h_rule = \([a-z0-9]*\).*/\1/p' "$ident")
           # and a band no wider than the tolerance; otherwise the seeds cannot decide.
           if (band != "" && num($5) && $5 + 0 >= lo[k] && $5 + 0 <= hi[k]) {
             if (n[k] >= 5 && hi[k] - lo[k] <= tol) v = "inside seed band"
-            else { v = "indeterminate"; reason = n[k] < 5 ? sprintf("published inside the band of %d seeds; 5 are needed to decide", n[k]) \
-                                                       : sprintf("band %.2f wide, wider than the tolerance %.2f", hi[k] - lo[k], tol) } }
+            else { v = "indeterminate"  # (more seeds only widen a band already too wide)
+              reason = hi[k] - lo[k] > tol ? sprintf("band of %d seeds %.2f wide, wider than the tolerance %.2f: the realizations cannot decide", n[k], hi[k] - lo[k], tol) \
+                                           : sprintf("published inside the band of %d seeds; 5 are needed to decide", n[k]) } }
           # A checked reason whose check includes a run that restores the published rate; one
           # that explains only our rate leaves the published one unexplained, and says so.
           else if (($1, $2, $4) in ok) { v = ok[$1, $2, $4] == 2 ? "differs, checked reason" : "our rate explained, the published one not"; reason = why[$1, $2, $4] }
