@@ -77,6 +77,12 @@ heat 6 _cellvol "--levels 5,8,9" --volumes cell
 heat 7 _cellvol "--levels 5,8,9" --volumes cell
 heat 7 _dtexact "--levels 5,8,9" --dt-rule exact
 heat 7 _dtexact_cellvol "--levels 5,8,9" --dt-rule exact --volumes cell
+# Table 4.6's theta = 0 fingerprint under every reading (setup_identification), 2^-5 ... 2^-9.
+heat 6 _dtexact "--levels 5,6,7,8,9" --thetas 0 --dt-rule exact
+heat 6 _dtexact_cellvol "--levels 5,6,7,8,9" --thetas 0 --dt-rule exact --volumes cell
+heat 6 _h15_cellvol "--levels 5,6,7,8,9" --thetas 0 --h-rule h15 --volumes cell
+heat 6 _h15_dtexact "--levels 5,6,7,8,9" --thetas 0 --h-rule h15 --dt-rule exact
+heat 6 _h15_dtexact_cellvol "--levels 5,6,7,8,9" --thetas 0 --h-rule h15 --dt-rule exact --volumes cell
 check thesis_poisson_diagnostic.tsv "--levels 7,8,9 --variants seed1,plain,seed1_cell,plain_cell" \
   "--levels 7 --weights quartic_polynomial --variants seed1,plain,seed1_cell" thesis_poisson_diagnostic
 
