@@ -265,7 +265,7 @@ awk -F'\t' '
     if (!(k in n)) order[++m] = k
     n[k]++; st[k, $c["verdict"]]++
     if (num($c["reproduced"]) && num($c["published"])) { d = $c["reproduced"] - $c["published"]; sd[k] += d < 0 ? -d : d; nd[k]++ }
-    if ($c["printed"] == "yes") { pk[k] = 1; B["printed", t] = 1; for (j = 1; j <= ncat; j++) if ($c["verdict"] == cat[j]) T["printed", j]++ }
+    if ($c["printed"] == "yes") { pk[k] = 1; B["printed", t] = 1; npub[t]++; for (j = 1; j <= ncat; j++) if ($c["verdict"] == cat[j]) T["printed", j]++ }
     if ($c["identified"] == "yes") { ik[k] = 1; B["identified", t] = 1; for (j = 1; j <= ncat; j++) if ($c["verdict_identified"] == cat[j]) T["identified", j]++ } }
   function counts(kk, j, s) { s = ""; for (j = 1; j <= ncat; j++) s = s OFS (st[kk, cat[j]] + 0); return s }
   END {
@@ -278,9 +278,13 @@ awk -F'\t' '
     split("imoto_table1 thesis_table4_1 thesis_table4_2 thesis_table4_3 thesis_table4_4 thesis_table4_5 thesis_table4_6 thesis_table4_7", all, " ")
     for (b = 1; b <= 2; b++) { bd = b == 1 ? "printed" : "identified"
       for (i=1; i in all; i++) if (!((bd, all[i]) in B)) {
-        f = all[i] == "imoto_table1" ? pub "/imoto_table1.tsv" : pub "/" all[i] "_long.tsv"
-        np = 0; while ((getline line < f) > 0) if (line !~ /^#/) np++
-        close(f); T[bd, 7] += np - 1 }
+        # The table'"'"'s rates, as the printed board counts them (Table 4.4'"'"'s file lists each
+        # weight once per reading of h); else the published file'"'"'s rows.
+        np = npub[all[i]]
+        if (np == "") { f = all[i] == "imoto_table1" ? pub "/imoto_table1.tsv" : pub "/" all[i] "_long.tsv"
+          np = -1; while ((getline line < f) > 0) if (line !~ /^#/) np++
+          close(f) }
+        T[bd, 7] += np }
       tot = 0; s = ""; for (j = 1; j <= ncat; j++) { tot += T[bd, j]; s = s OFS (T[bd, j] + 0) }
       print "total", "as " bd, "document", b == 1 ? "yes" : "no", b == 2 ? "yes" : "no", b == 2 ? "yes" : "no", tot s, "NA" } }' pub="$pub" "$out" > "$score.tmp" < <(provenance)
 mv "$score.tmp" "$score"
