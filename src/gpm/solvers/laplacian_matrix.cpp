@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "gpm/error.hpp"
 #include "gpm/geometry/cells.hpp"
@@ -31,6 +32,18 @@ struct RadialG {
     return 0;
   }
 };
+
+// A row's sum over its stored entries in an order fixed by the source, not by the compiler
+// (an `omp simd reduction` leaves it to the vectorizer): entry j of the row goes to partial
+// sum j mod kLanes, and the partial sums are added pairwise.  Each term is an explicit fma
+// (contraction is otherwise the compiler's choice, which differed between the full
+// storage's single and block loops).  The single and the block product both sum this way,
+// so each column of the block is the single product bit for bit.
+constexpr int kLanes = 8;
+inline double lane_total(const double* a, std::ptrdiff_t stride) {
+  return ((a[0] + a[stride]) + (a[2 * stride] + a[3 * stride])) +
+         ((a[4 * stride] + a[5 * stride]) + (a[6 * stride] + a[7 * stride]));
+}
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -322,7 +335,7 @@ const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& DiscreteLaplacian::matr
 
 // y = M_ΩΩ x from the half: every stored K_kl gives K_kl z_l to row k and K_kl z_k to row l
 // (z = V x).  Block b adds both into its own partial sums; a row's total is its diagonal
-// term plus the partial sums of the blocks that reach it, in block order.
+// term plus the partial sums of the blocks that reach it, in block order (sum_blocks).
 void DiscreteLaplacian::apply_assembled(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   const int64_t rows = static_cast<int64_t>(omega_.size());
   z_ = (vol_.array() * x.array()).matrix();
@@ -331,34 +344,145 @@ void DiscreteLaplacian::apply_assembled(const Eigen::VectorXd& x, Eigen::VectorX
   const int32_t* col = up_col_.data();
   const double* val = up_val_.data();
   const int64_t nb = static_cast<int64_t>(block_reach_.size());
-  // Threads only pay off for large products: a parallel region costs microseconds (and
-  // much more on a loaded machine), a row of a small matrix nanoseconds.
-  const bool threaded = up_col_.size() > 1000000;
-#pragma omp parallel for schedule(dynamic, 1) if (threaded)
+#pragma omp parallel for schedule(dynamic, 1) if (threaded())
   for (int64_t b = 0; b < nb; ++b) {
     double* t = part_.data() + block_offset_[b] - block_row_[b];  // t[k], k ∈ [row, reach]
     std::fill(t + block_row_[b], t + block_reach_[b] + 1, 0.0);
     for (int64_t k = block_row_[b]; k < block_row_[b + 1]; ++k) {
       const double zk = z[k];
-      double s = 0;
+      alignas(64) double acc[kLanes] = {};
       // A row's columns are distinct, so its scatter into t has no conflicts: vectors of
-      // gathers and scatters (AVX-512), the row sum in vector lanes.
-#pragma omp simd reduction(+ : s)
-      for (int64_t o = ptr[k]; o < ptr[k + 1]; ++o) {
+      // gathers and scatters (AVX-512), one lane per partial sum.
+      auto entry = [&](int64_t o, int q) {
         const int32_t l = col[o];
-        s += val[o] * z[l];
-        t[l] += val[o] * zk;
+        acc[q] = std::fma(val[o], z[l], acc[q]);
+        t[l] = std::fma(val[o], zk, t[l]);
+      };
+      int64_t o = ptr[k];
+      for (; o + kLanes <= ptr[k + 1]; o += kLanes) {
+#pragma omp simd
+        for (int q = 0; q < kLanes; ++q) entry(o + q, q);
       }
-      t[k] += s;
+      for (int q = 0; o + q < ptr[k + 1]; ++q) entry(o + q, q);
+      t[k] += lane_total(acc, 1);
     }
   }
   y.resize(rows);
-#pragma omp parallel for schedule(static, 1024) if (threaded)
-  for (int64_t k = 0; k < rows; ++k) {
-    double s = diag_[k] * x[k];
-    for (int64_t b = first_block_[k]; b < nb && block_row_[b] <= k; ++b)
-      s += part_[static_cast<std::size_t>(block_offset_[b] + k - block_row_[b])];
-    y[k] = s;
+  sum_blocks(x.data(), part_.data(), 1, y.data());
+}
+
+// Y = M_ΩΩ X, the loop of apply_assembled with s = S interleaved columns (S = 0: s read
+// from X): per entry the s values of z_l and of t_l are adjacent, one vector each, and row
+// k keeps kLanes partial sums per column, entry j in partial sum j mod kLanes as above.
+template <int S>
+void DiscreteLaplacian::apply_assembled_block(const RowBlock& X, RowBlock& Y) const {
+  const int64_t rows = static_cast<int64_t>(omega_.size());
+  const int s = S > 0 ? S : static_cast<int>(X.cols());
+  z_block_ = vol_.asDiagonal() * X;
+  const double* z = z_block_.data();
+  const int64_t* ptr = up_ptr_.data();
+  const int32_t* col = up_col_.data();
+  const double* val = up_val_.data();
+  const int64_t nb = static_cast<int64_t>(block_reach_.size());
+  part_block_.resize(part_.size() * static_cast<std::size_t>(s));
+#pragma omp parallel if (threaded())
+  {
+    std::vector<double> acc(static_cast<std::size_t>(kLanes * s));  // acc[q·s + c]
+#pragma omp for schedule(dynamic, 1)
+    for (int64_t b = 0; b < nb; ++b) {
+      double* t = part_block_.data() + (block_offset_[b] - block_row_[b]) * s;
+      std::fill(t + block_row_[b] * s, t + (block_reach_[b] + 1) * s, 0.0);
+      for (int64_t k = block_row_[b]; k < block_row_[b + 1]; ++k) {
+        const double* zk = z + k * s;
+        std::fill(acc.begin(), acc.end(), 0.0);
+        for (int64_t o = ptr[k]; o < ptr[k + 1]; ++o) {
+          const double v = val[o];
+          const double* zl = z + static_cast<int64_t>(col[o]) * s;
+          double* tl = t + static_cast<int64_t>(col[o]) * s;
+          double* a = acc.data() + ((o - ptr[k]) % kLanes) * s;
+#pragma omp simd
+          for (int c = 0; c < s; ++c) {
+            a[c] = std::fma(v, zl[c], a[c]);
+            tl[c] = std::fma(v, zk[c], tl[c]);
+          }
+        }
+        for (int c = 0; c < s; ++c) t[k * s + c] += lane_total(acc.data() + c, s);
+      }
+    }
+  }
+  Y.resize(rows, s);
+  sum_blocks(X.data(), part_block_.data(), s, Y.data());
+}
+
+// y_k = M_kk x_k plus the partial sums of the blocks that reach row k, in block order, for
+// s interleaved columns.
+void DiscreteLaplacian::sum_blocks(const double* x, const double* t, int s, double* y) const {
+  const int64_t rows = static_cast<int64_t>(omega_.size());
+  const int64_t nb = static_cast<int64_t>(block_reach_.size());
+#pragma omp parallel for schedule(static, 1024) if (threaded())
+  for (int64_t k = 0; k < rows; ++k)
+    for (int c = 0; c < s; ++c) {
+      double sum = diag_[k] * x[k * s + c];
+      for (int64_t b = first_block_[k]; b < nb && block_row_[b] <= k; ++b)
+        sum += t[(block_offset_[b] + k - block_row_[b]) * s + c];
+      y[k * s + c] = sum;
+    }
+}
+
+// The full CSR storage: row sums in stored order, as apply_full, s columns side by side.
+void DiscreteLaplacian::apply_full_block(const RowBlock& X, RowBlock& Y) const {
+  const int64_t rows = static_cast<int64_t>(omega_.size());
+  const Eigen::Index s = X.cols();
+  work_block_.setZero(static_cast<Eigen::Index>(n_), s);
+  for (int64_t k = 0; k < rows; ++k) work_block_.row(omega_[k]) = X.row(k);
+  Y.resize(rows, s);
+  const int* outer = full_->outerIndexPtr();
+  const int* inner = full_->innerIndexPtr();
+  const double* val = full_->valuePtr();
+  const double* x = work_block_.data();
+#pragma omp parallel if (threaded())
+  {
+    std::vector<double> acc(static_cast<std::size_t>(s));
+#pragma omp for schedule(static, 256)
+    for (int64_t k = 0; k < rows; ++k) {
+      std::fill(acc.begin(), acc.end(), 0.0);
+      for (int o = outer[k]; o < outer[k + 1]; ++o) {
+        const double v = val[o];
+        const double* xl = x + static_cast<int64_t>(inner[o]) * s;
+#pragma omp simd
+        for (Eigen::Index c = 0; c < s; ++c) acc[c] = std::fma(v, xl[c], acc[c]);
+      }
+      for (Eigen::Index c = 0; c < s; ++c) Y(k, c) = acc[c];
+    }
+  }
+}
+
+void DiscreteLaplacian::apply_block(const RowBlock& X, RowBlock& Y) const {
+  if (X.rows() != static_cast<Eigen::Index>(omega_.size()))
+    throw InputError("apply_block: " + std::to_string(X.rows()) + " rows, expected " +
+                     std::to_string(omega_.size()));
+  if (X.cols() == 1 || !assembled_) {
+    // One column: the single product itself.  Matrix-free: no shared pass (the kernel
+    // recomputes the weights on every product anyway), column by column.
+    Y.resize(X.rows(), X.cols());
+    Eigen::VectorXd x, y;
+    for (Eigen::Index c = 0; c < X.cols(); ++c) {
+      x = X.col(c);
+      apply(x, y);
+      Y.col(c) = y;
+    }
+    return;
+  }
+  if (full_storage_) return apply_full_block(X, Y);
+  // The widths the heat stepper uses, fixed at compile time (whole vectors, no remainder
+  // loops); any other width through the general loop.
+  switch (X.cols()) {
+    case 2: return apply_assembled_block<2>(X, Y);
+    case 3: return apply_assembled_block<3>(X, Y);
+    case 4: return apply_assembled_block<4>(X, Y);
+    case 6: return apply_assembled_block<6>(X, Y);
+    case 8: return apply_assembled_block<8>(X, Y);
+    default: return apply_assembled_block<0>(X, Y);
   }
 }
 
@@ -373,11 +497,10 @@ void DiscreteLaplacian::apply_full(const Eigen::VectorXd& v, Eigen::VectorXd& y)
     const int* inner = full_->innerIndexPtr();
     const double* val = full_->valuePtr();
     const double* x = v.data();
-    const bool threaded = full_->nonZeros() > 2000000;
-#pragma omp parallel for schedule(static, 256) if (threaded)
+#pragma omp parallel for schedule(static, 256) if (threaded())
     for (int64_t k = 0; k < rows; ++k) {
       double s = 0;
-      for (int o = outer[k]; o < outer[k + 1]; ++o) s += val[o] * x[inner[o]];
+      for (int o = outer[k]; o < outer[k + 1]; ++o) s = std::fma(val[o], x[inner[o]], s);
       y[k] = s;
     }
     return;
@@ -423,6 +546,52 @@ Eigen::VectorXd DiscreteLaplacian::extend(const Eigen::VectorXd& x,
   for (std::size_t i = 0; i < n_; ++i)
     v[static_cast<Eigen::Index>(i)] = unknown_[i] >= 0 ? x[unknown_[i]] : outside[i];
   return v;
+}
+
+CgState::CgState(const Eigen::VectorXd& b, const Eigen::VectorXd& Sx0, double tol,
+                 int max_iter, std::string what)
+    : bnorm_(b.norm()), tol_(tol), max_iter_(max_iter), what_(std::move(what)) {
+  if (!std::isfinite(bnorm_)) throw NumericalError(what_ + ": non-finite right-hand side");
+  r_ = b - Sx0;
+  p_ = r_;
+  rr_ = r_.squaredNorm();
+  stop_ = tol * tol * bnorm_ * bnorm_;
+}
+
+bool CgState::done() const {
+  if (rr_ <= stop_) return true;
+  if (iterations_ >= max_iter_)
+    throw NumericalError(what_ + ": conjugate gradients did not reach the relative residual " +
+                         cg_number(tol_) + " in " + std::to_string(max_iter_) +
+                         " iterations (now " + cg_number(std::sqrt(rr_) / bnorm_) + ")");
+  return false;
+}
+
+void CgState::update(Eigen::VectorXd& x, const Eigen::VectorXd& q) {
+  const double pq = p_.dot(q);
+  if (!std::isfinite(pq))
+    throw NumericalError(what_ + ": non-finite value p^T S p = " + cg_number(pq) +
+                         " at iteration " + std::to_string(iterations_));
+  if (!(pq > 0))
+    throw NumericalError(what_ + ": the matrix is not positive definite (p^T S p = " +
+                         cg_number(pq) + " at iteration " + std::to_string(iterations_) + ")");
+  const double alpha = rr_ / pq;
+  x += alpha * p_;
+  r_ -= alpha * q;
+  const double rr_new = r_.squaredNorm();
+  if (!std::isfinite(rr_new))
+    throw NumericalError(what_ + ": non-finite residual at iteration " +
+                         std::to_string(iterations_));
+  p_ = r_ + (rr_new / rr_) * p_;
+  rr_ = rr_new;
+  ++iterations_;
+}
+
+CgResult CgState::result() const {
+  CgResult res;
+  res.iterations = iterations_;
+  res.recursive_rel_residual = std::sqrt(rr_) / bnorm_;
+  return res;
 }
 
 void cg_check_true_residual(CgResult& res, const Eigen::VectorXd& b, const Eigen::VectorXd& Sx,
