@@ -1,13 +1,18 @@
 #include "gpm/solvers/laplacian_matrix.hpp"
 
 #include <cstdio>
+#include <cstring>
 
 #include <omp.h>
+#ifdef __FMA__
+#include <immintrin.h>
+#endif
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 #include <utility>
 
 #include "gpm/error.hpp"
@@ -368,55 +373,89 @@ void DiscreteLaplacian::apply_assembled(const Eigen::VectorXd& x, Eigen::VectorX
     }
   }
   y.resize(rows);
-  sum_blocks(x.data(), part_.data(), 1, y.data());
+  sum_blocks(x.data(), part_.data(), 1, 1, y.data());
 }
 
-// Y = M_ΩΩ X, the loop of apply_assembled with s = S interleaved columns (S = 0: s read
-// from X): per entry the s values of z_l and of t_l are adjacent, one vector each, and row
-// k keeps kLanes partial sums per column, entry j in partial sum j mod kLanes as above.
-template <int S>
+// Four doubles as one value (the GCC/Clang vector extension): the block's columns go in
+// groups of four, each loaded, multiplied and added as one vector.
+typedef double Quad __attribute__((vector_size(32)));
+
+// v·z + a rounded once, lane by lane: the single product's std::fma.  Spelled out, since
+// the compiler's contraction of v * z + a is a tuning choice (GCC for Zen leaves a
+// loop-carried chain unfused: the full storage's loops came out different).
+inline Quad fma4(double v, Quad z, Quad a) {
+#ifdef __FMA__
+  return _mm256_fmadd_pd(_mm256_set1_pd(v), z, a);
+#else
+  return Quad{std::fma(v, z[0], a[0]), std::fma(v, z[1], a[1]), std::fma(v, z[2], a[2]),
+              std::fma(v, z[3], a[3])};
+#endif
+}
+
+// Row k of the block product, P = 4W interleaved columns: entry j of the row adds its terms
+// to lane j mod kLanes of the row sums and scatters the transposed terms into t, as the
+// single product does per column.  The lanes go to sums[q·P + c].
+template <int W>
+void block_row(int64_t begin, int64_t end, const int32_t* col, const double* val,
+               const double* z, const double* zk, double* t, double* sums) {
+  constexpr int P = 4 * W;
+  Quad a[kLanes][W] = {}, kq[W];
+  std::memcpy(kq, zk, sizeof kq);
+  auto entry = [&](int64_t o, int q) {
+    const double v = val[o];
+    const int64_t l = static_cast<int64_t>(col[o]) * P;
+    for (int w = 0; w < W; ++w) {
+      Quad zl, tl;
+      std::memcpy(&zl, z + l + 4 * w, sizeof zl);
+      std::memcpy(&tl, t + l + 4 * w, sizeof tl);
+      a[q][w] = fma4(v, zl, a[q][w]);
+      tl = fma4(v, kq[w], tl);
+      std::memcpy(t + l + 4 * w, &tl, sizeof tl);
+    }
+  };
+  int64_t o = begin;
+  for (; o + kLanes <= end; o += kLanes) {
+#pragma GCC unroll 8
+    for (int q = 0; q < kLanes; ++q) entry(o + q, q);
+  }
+  for (int q = 0; o + q < end; ++q) entry(o + q, q);
+  std::memcpy(sums, a, sizeof a);
+}
+
+// Y = M_ΩΩ X for s ≤ P = 4W columns, the loop of apply_assembled on interleaved rows of P
+// values (the columns past s are zero): per entry the values of z_l and of t_l are adjacent.
+template <int W>
 void DiscreteLaplacian::apply_assembled_block(const RowBlock& X, RowBlock& Y) const {
+  constexpr int P = 4 * W;
   const int64_t rows = static_cast<int64_t>(omega_.size());
-  const int s = S > 0 ? S : static_cast<int>(X.cols());
-  z_block_ = vol_.asDiagonal() * X;
+  const int s = static_cast<int>(X.cols());
+  z_block_.setZero(rows, P);
+  z_block_.leftCols(s) = vol_.asDiagonal() * X;
   const double* z = z_block_.data();
-  const int64_t* ptr = up_ptr_.data();
-  const int32_t* col = up_col_.data();
-  const double* val = up_val_.data();
   const int64_t nb = static_cast<int64_t>(block_reach_.size());
-  part_block_.resize(part_.size() * static_cast<std::size_t>(s));
+  part_block_.resize(part_.size() * P);
 #pragma omp parallel if (threaded())
   {
-    std::vector<double> acc(static_cast<std::size_t>(kLanes * s));  // acc[q·s + c]
+    alignas(64) double sums[kLanes * P];
 #pragma omp for schedule(dynamic, 1)
     for (int64_t b = 0; b < nb; ++b) {
-      double* t = part_block_.data() + (block_offset_[b] - block_row_[b]) * s;
-      std::fill(t + block_row_[b] * s, t + (block_reach_[b] + 1) * s, 0.0);
+      double* t = part_block_.data() + (block_offset_[b] - block_row_[b]) * P;
+      std::fill(t + block_row_[b] * P, t + (block_reach_[b] + 1) * P, 0.0);
       for (int64_t k = block_row_[b]; k < block_row_[b + 1]; ++k) {
-        const double* zk = z + k * s;
-        std::fill(acc.begin(), acc.end(), 0.0);
-        for (int64_t o = ptr[k]; o < ptr[k + 1]; ++o) {
-          const double v = val[o];
-          const double* zl = z + static_cast<int64_t>(col[o]) * s;
-          double* tl = t + static_cast<int64_t>(col[o]) * s;
-          double* a = acc.data() + ((o - ptr[k]) % kLanes) * s;
-#pragma omp simd
-          for (int c = 0; c < s; ++c) {
-            a[c] = std::fma(v, zl[c], a[c]);
-            tl[c] = std::fma(v, zk[c], tl[c]);
-          }
-        }
-        for (int c = 0; c < s; ++c) t[k * s + c] += lane_total(acc.data() + c, s);
+        block_row<W>(up_ptr_[k], up_ptr_[k + 1], up_col_.data(), up_val_.data(), z, z + k * P,
+                     t, sums);
+        for (int c = 0; c < s; ++c) t[k * P + c] += lane_total(sums + c, P);
       }
     }
   }
   Y.resize(rows, s);
-  sum_blocks(X.data(), part_block_.data(), s, Y.data());
+  sum_blocks(X.data(), part_block_.data(), s, P, Y.data());
 }
 
 // y_k = M_kk x_k plus the partial sums of the blocks that reach row k, in block order, for
-// s interleaved columns.
-void DiscreteLaplacian::sum_blocks(const double* x, const double* t, int s, double* y) const {
+// s interleaved columns (t's rows hold tw ≥ s values).
+void DiscreteLaplacian::sum_blocks(const double* x, const double* t, int s, int tw,
+                                   double* y) const {
   const int64_t rows = static_cast<int64_t>(omega_.size());
   const int64_t nb = static_cast<int64_t>(block_reach_.size());
 #pragma omp parallel for schedule(static, 1024) if (threaded())
@@ -424,38 +463,58 @@ void DiscreteLaplacian::sum_blocks(const double* x, const double* t, int s, doub
     for (int c = 0; c < s; ++c) {
       double sum = diag_[k] * x[k * s + c];
       for (int64_t b = first_block_[k]; b < nb && block_row_[b] <= k; ++b)
-        sum += t[(block_offset_[b] + k - block_row_[b]) * s + c];
+        sum += t[(block_offset_[b] + k - block_row_[b]) * tw + c];
       y[k * s + c] = sum;
     }
 }
 
-// The full CSR storage: row sums in stored order, as apply_full, s columns side by side.
+// The full CSR storage: row sums in stored order, as apply_full, P = 4W columns side by
+// side (X over all particles, zero outside Ω and past column s).
+template <int W>
 void DiscreteLaplacian::apply_full_block(const RowBlock& X, RowBlock& Y) const {
+  constexpr int P = 4 * W;
   const int64_t rows = static_cast<int64_t>(omega_.size());
   const Eigen::Index s = X.cols();
-  work_block_.setZero(static_cast<Eigen::Index>(n_), s);
-  for (int64_t k = 0; k < rows; ++k) work_block_.row(omega_[k]) = X.row(k);
+  work_block_.setZero(static_cast<Eigen::Index>(n_), P);
+  for (int64_t k = 0; k < rows; ++k) work_block_.row(omega_[k]).head(s) = X.row(k);
   Y.resize(rows, s);
   const int* outer = full_->outerIndexPtr();
   const int* inner = full_->innerIndexPtr();
   const double* val = full_->valuePtr();
   const double* x = work_block_.data();
-#pragma omp parallel if (threaded())
-  {
-    std::vector<double> acc(static_cast<std::size_t>(s));
-#pragma omp for schedule(static, 256)
-    for (int64_t k = 0; k < rows; ++k) {
-      std::fill(acc.begin(), acc.end(), 0.0);
-      for (int o = outer[k]; o < outer[k + 1]; ++o) {
-        const double v = val[o];
-        const double* xl = x + static_cast<int64_t>(inner[o]) * s;
-#pragma omp simd
-        for (Eigen::Index c = 0; c < s; ++c) acc[c] = std::fma(v, xl[c], acc[c]);
+#pragma omp parallel for schedule(static, 256) if (threaded())
+  for (int64_t k = 0; k < rows; ++k) {
+    Quad a[W] = {};
+    for (int o = outer[k]; o < outer[k + 1]; ++o) {
+      const double v = val[o];
+      const double* xl = x + static_cast<int64_t>(inner[o]) * P;
+      for (int w = 0; w < W; ++w) {
+        Quad xq;
+        std::memcpy(&xq, xl + 4 * w, sizeof xq);
+        a[w] = fma4(v, xq, a[w]);
       }
-      for (Eigen::Index c = 0; c < s; ++c) Y(k, c) = acc[c];
     }
+    double sums[P];
+    std::memcpy(sums, a, sizeof a);
+    for (Eigen::Index c = 0; c < s; ++c) Y(k, c) = sums[c];
   }
 }
+
+namespace {
+
+// f(std::integral_constant<int, W>) for the W = ⌈s/4⌉ vectors of four that hold s ≤ 16
+// columns: the block kernels' width fixed at compile time.
+template <class F>
+void with_quads(Eigen::Index s, F&& f) {
+  switch ((s + 3) / 4) {
+    case 1: return f(std::integral_constant<int, 1>{});
+    case 2: return f(std::integral_constant<int, 2>{});
+    case 3: return f(std::integral_constant<int, 3>{});
+    default: return f(std::integral_constant<int, 4>{});
+  }
+}
+
+}  // namespace
 
 void DiscreteLaplacian::apply_block(const RowBlock& X, RowBlock& Y) const {
   if (X.rows() != static_cast<Eigen::Index>(omega_.size()))
@@ -473,17 +532,23 @@ void DiscreteLaplacian::apply_block(const RowBlock& X, RowBlock& Y) const {
     }
     return;
   }
-  if (full_storage_) return apply_full_block(X, Y);
-  // The widths the heat stepper uses, fixed at compile time (whole vectors, no remainder
-  // loops); any other width through the general loop.
-  switch (X.cols()) {
-    case 2: return apply_assembled_block<2>(X, Y);
-    case 3: return apply_assembled_block<3>(X, Y);
-    case 4: return apply_assembled_block<4>(X, Y);
-    case 6: return apply_assembled_block<6>(X, Y);
-    case 8: return apply_assembled_block<8>(X, Y);
-    default: return apply_assembled_block<0>(X, Y);
+  // Up to 16 columns in one pass, in vectors of four; a wider block in passes of 16.
+  constexpr Eigen::Index kMaxPass = 16;
+  if (X.cols() > kMaxPass) {
+    Y.resize(X.rows(), X.cols());
+    RowBlock Xp, Yp;
+    for (Eigen::Index c0 = 0; c0 < X.cols(); c0 += kMaxPass) {
+      const Eigen::Index m = std::min(kMaxPass, X.cols() - c0);
+      Xp = X.middleCols(c0, m);
+      apply_block(Xp, Yp);
+      Y.middleCols(c0, m) = Yp;
+    }
+    return;
   }
+  with_quads(X.cols(), [&](auto w) {
+    constexpr int W = decltype(w)::value;
+    full_storage_ ? apply_full_block<W>(X, Y) : apply_assembled_block<W>(X, Y);
+  });
 }
 
 void DiscreteLaplacian::apply_full(const Eigen::VectorXd& v, Eigen::VectorXd& y) const {

@@ -115,11 +115,12 @@ class DiscreteLaplacian {
   void compute_diagonal(const Particles& p, const WeightFunction& w);
   void plan_blocks();
   void apply_assembled(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
-  template <int S>
+  template <int W>
   void apply_assembled_block(const RowBlock& X, RowBlock& Y) const;
+  template <int W>
   void apply_full_block(const RowBlock& X, RowBlock& Y) const;
   // The rows' sums from the blocks' partial sums t (s interleaved columns), both products.
-  void sum_blocks(const double* x, const double* t, int s, double* y) const;
+  void sum_blocks(const double* x, const double* t, int s, int tw, double* y) const;
   // Threads only pay off for large products: a parallel region costs microseconds (and
   // much more on a loaded machine), a row of a small matrix nanoseconds.
   bool threaded() const {
