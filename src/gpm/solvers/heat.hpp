@@ -42,6 +42,10 @@ struct HeatSetting {
   double tol = 1e-10;        // CG relative residual per implicit step
   int max_iter = 20000;
   double blowup_factor = 1e6;
+  // Implicit steps: start the CG from the extrapolation 2U^k − U^{k−1} (from the second
+  // step on) instead of U^k.  Off by default: the stored results were made from U^k, and a
+  // different start gives the same solution only to the CG tolerance.
+  bool extrapolate = false;
 };
 
 struct HeatResult {
