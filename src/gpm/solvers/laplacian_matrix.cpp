@@ -50,6 +50,11 @@ inline double lane_total(const double* a, std::ptrdiff_t stride) {
          ((a[4 * stride] + a[5 * stride]) + (a[6 * stride] + a[7 * stride]));
 }
 
+// d − sv·g rounded once: a term of the diagonal, spelled out so that the assembly and
+// diagonal_with() (volumes_for) sum it identically; left to the compiler, one fused it and
+// the other did not.
+inline double diagonal_term(double d, double sv, double g) { return std::fma(-sv, g, d); }
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -118,7 +123,7 @@ DiscreteLaplacian::DiscreteLaplacian(const Particles& p, const std::vector<doubl
       device_ = make_device_pass(p, V_, h_, std::vector<KernelWeight>{{w, kLap}});
     else
       kernel_ = std::make_unique<FusedKernel>(p, V_, h_, std::vector<KernelWeight>{{w, kLap}});
-    compute_diagonal(p, w);
+    diag_ = diagonal_with(p, w, V_, h_ / 4);
   }
   assembly_s_ = seconds_since(t0);
   work_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n_));
@@ -172,7 +177,7 @@ void DiscreteLaplacian::assemble(const Particles& p, const WeightFunction& w) {
         if (i == j) return;
         const double g = G(std::sqrt(r2) / h_);
         const double c = scale * V_[i] * g;
-        d -= c;
+        d = diagonal_term(d, scale * V_[i], g);
         if (unknown_[i] < 0) row_b.emplace_back(i, c);
         else if (i > j) row_up.emplace_back(unknown_[i], scale * g);
       });
@@ -278,23 +283,41 @@ void DiscreteLaplacian::plan_blocks() {
   }
 }
 
-void DiscreteLaplacian::compute_diagonal(const Particles& p, const WeightFunction& w) {
-  const CellList cl(p.x, p.y, h_ / 4, Domain{}.lo(), Domain{}.lo());
+Eigen::VectorXd DiscreteLaplacian::diagonal_with(const Particles& p, const WeightFunction& w,
+                                                 const std::vector<double>& V,
+                                                 double cell) const {
+  const CellList cl(p.x, p.y, cell, Domain{}.lo(), Domain{}.lo());
   const auto& index = cl.index();
   const RadialG G(w);
   const double scale = 2 * kD / (h_ * h_ * h_ * h_);
   const int64_t rows = static_cast<int64_t>(omega_.size());
-  diag_.resize(rows);
+  Eigen::VectorXd diag(rows);
 #pragma omp parallel for schedule(dynamic, 64)
   for (int64_t k = 0; k < rows; ++k) {
     const int32_t j = omega_[k];
     double d = 0;
     cl.for_each_neighbour(p.x[j], p.y[j], h_, [&](int32_t slot, double, double, double r2) {
       const int32_t i = index[slot];
-      if (i != j) d -= scale * V_[i] * G(std::sqrt(r2) / h_);
+      if (i != j) d = diagonal_term(d, scale * V[i], G(std::sqrt(r2) / h_));
     });
-    diag_[k] = d;
+    diag[k] = d;
   }
+  return diag;
+}
+
+DiscreteLaplacian::Volumes DiscreteLaplacian::volumes_for(const Particles& p,
+                                                          const WeightFunction& w,
+                                                          const std::vector<double>& V) const {
+  if (!assembled_ || full_storage_)
+    throw InputError("volumes_for: only for the assembled (half) storage");
+  if (V.size() != n_)
+    throw InputError("volumes_for: " + std::to_string(V.size()) + " volumes for " +
+                     std::to_string(n_) + " particles");
+  Volumes v;
+  v.at_unknowns.resize(static_cast<Eigen::Index>(omega_.size()));
+  for (std::size_t k = 0; k < omega_.size(); ++k) v.at_unknowns[static_cast<Eigen::Index>(k)] = V[omega_[k]];
+  v.diagonal = diagonal_with(p, w, V, h_ / 2);  // the cells of assemble()
+  return v;
 }
 
 int64_t DiscreteLaplacian::nnz() const {
@@ -373,7 +396,8 @@ void DiscreteLaplacian::apply_assembled(const Eigen::VectorXd& x, Eigen::VectorX
     }
   }
   y.resize(rows);
-  sum_blocks(x.data(), part_.data(), 1, 1, y.data());
+  const double* diag = diag_.data();
+  sum_blocks(x.data(), part_.data(), 1, 1, &diag, y.data());
 }
 
 // Four doubles as one value (the GCC/Clang vector extension): the block's columns go in
@@ -425,12 +449,18 @@ void block_row(int64_t begin, int64_t end, const int32_t* col, const double* val
 // Y = M_ΩΩ X for s ≤ P = 4W columns, the loop of apply_assembled on interleaved rows of P
 // values (the columns past s are zero): per entry the values of z_l and of t_l are adjacent.
 template <int W>
-void DiscreteLaplacian::apply_assembled_block(const RowBlock& X, RowBlock& Y) const {
+void DiscreteLaplacian::apply_assembled_block(const RowBlock& X, RowBlock& Y,
+                                              const std::vector<const Volumes*>& per_column) const {
   constexpr int P = 4 * W;
   const int64_t rows = static_cast<int64_t>(omega_.size());
   const int s = static_cast<int>(X.cols());
   z_block_.setZero(rows, P);
-  z_block_.leftCols(s) = vol_.asDiagonal() * X;
+  std::vector<const double*> diag(static_cast<std::size_t>(s), diag_.data());
+  for (int c = 0; c < s; ++c) {
+    const Volumes* v = per_column.empty() ? nullptr : per_column[static_cast<std::size_t>(c)];
+    z_block_.col(c) = (v ? v->at_unknowns : vol_).cwiseProduct(X.col(c));
+    if (v) diag[static_cast<std::size_t>(c)] = v->diagonal.data();
+  }
   const double* z = z_block_.data();
   const int64_t nb = static_cast<int64_t>(block_reach_.size());
   part_block_.resize(part_.size() * P);
@@ -449,19 +479,19 @@ void DiscreteLaplacian::apply_assembled_block(const RowBlock& X, RowBlock& Y) co
     }
   }
   Y.resize(rows, s);
-  sum_blocks(X.data(), part_block_.data(), s, P, Y.data());
+  sum_blocks(X.data(), part_block_.data(), s, P, diag.data(), Y.data());
 }
 
 // y_k = M_kk x_k plus the partial sums of the blocks that reach row k, in block order, for
 // s interleaved columns (t's rows hold tw ≥ s values).
 void DiscreteLaplacian::sum_blocks(const double* x, const double* t, int s, int tw,
-                                   double* y) const {
+                                   const double* const* diag, double* y) const {
   const int64_t rows = static_cast<int64_t>(omega_.size());
   const int64_t nb = static_cast<int64_t>(block_reach_.size());
 #pragma omp parallel for schedule(static, 1024) if (threaded())
   for (int64_t k = 0; k < rows; ++k)
     for (int c = 0; c < s; ++c) {
-      double sum = diag_[k] * x[k * s + c];
+      double sum = diag[c][k] * x[k * s + c];
       for (int64_t b = first_block_[k]; b < nb && block_row_[b] <= k; ++b)
         sum += t[(block_offset_[b] + k - block_row_[b]) * tw + c];
       y[k * s + c] = sum;
@@ -517,10 +547,19 @@ void with_quads(Eigen::Index s, F&& f) {
 }  // namespace
 
 void DiscreteLaplacian::apply_block(const RowBlock& X, RowBlock& Y) const {
+  apply_block(X, Y, {});
+}
+
+void DiscreteLaplacian::apply_block(const RowBlock& X, RowBlock& Y,
+                                    const std::vector<const Volumes*>& per_column) const {
   if (X.rows() != static_cast<Eigen::Index>(omega_.size()))
     throw InputError("apply_block: " + std::to_string(X.rows()) + " rows, expected " +
                      std::to_string(omega_.size()));
-  if (X.cols() == 1 || !assembled_) {
+  if (!per_column.empty() && (!assembled_ || full_storage_ ||
+                              per_column.size() != static_cast<std::size_t>(X.cols())))
+    throw InputError("apply_block: volumes per column need the assembled (half) storage and "
+                     "one entry per column");
+  if ((X.cols() == 1 && per_column.empty()) || !assembled_) {
     // One column: the single product itself.  Matrix-free: no shared pass (the kernel
     // recomputes the weights on every product anyway), column by column.
     Y.resize(X.rows(), X.cols());
@@ -537,17 +576,19 @@ void DiscreteLaplacian::apply_block(const RowBlock& X, RowBlock& Y) const {
   if (X.cols() > kMaxPass) {
     Y.resize(X.rows(), X.cols());
     RowBlock Xp, Yp;
+    std::vector<const Volumes*> vp;
     for (Eigen::Index c0 = 0; c0 < X.cols(); c0 += kMaxPass) {
       const Eigen::Index m = std::min(kMaxPass, X.cols() - c0);
       Xp = X.middleCols(c0, m);
-      apply_block(Xp, Yp);
+      if (!per_column.empty()) vp.assign(per_column.begin() + c0, per_column.begin() + c0 + m);
+      apply_block(Xp, Yp, vp);
       Y.middleCols(c0, m) = Yp;
     }
     return;
   }
   with_quads(X.cols(), [&](auto w) {
     constexpr int W = decltype(w)::value;
-    full_storage_ ? apply_full_block<W>(X, Y) : apply_assembled_block<W>(X, Y);
+    full_storage_ ? apply_full_block<W>(X, Y) : apply_assembled_block<W>(X, Y, per_column);
   });
 }
 

@@ -101,6 +101,19 @@ class DiscreteLaplacian {
   // matrix-free, the columns go through apply() one by one.
   using RowBlock = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   void apply_block(const RowBlock& X, RowBlock& Y) const;
+  // The parts of M_ΩΩ that depend on the volumes, for other volumes V' on the same
+  // particles, weight and h (the stored K_kl do not): V' at the unknowns and the diagonal
+  // of the Laplacian built with V', summed in the order of its assembly, so that a column
+  // multiplied with them equals that Laplacian's apply() bit for bit.  Assembled half only.
+  struct Volumes {
+    Eigen::VectorXd at_unknowns, diagonal;
+  };
+  Volumes volumes_for(const Particles& p, const WeightFunction& w,
+                      const std::vector<double>& V) const;
+  // apply_block with column c multiplied by the Laplacian of volumes *per_column[c] (nullptr:
+  // this one's own); InputError unless assembled as the half.
+  void apply_block(const RowBlock& X, RowBlock& Y,
+                   const std::vector<const Volumes*>& per_column) const;
   // The diagonal of M_ΩΩ: −2d Σ_{i≠j} V_i w_h/r² (negative for a positive weight).
   const Eigen::VectorXd& diagonal() const { return diag_; }
 
@@ -112,15 +125,21 @@ class DiscreteLaplacian {
  private:
   void assemble(const Particles& p, const WeightFunction& w);
   void assemble_full(const Particles& p, const WeightFunction& w);
-  void compute_diagonal(const Particles& p, const WeightFunction& w);
+  // The diagonal for volumes V, summed over the neighbours in the order of a cell list of
+  // cells `cell` wide (h/2: the assembly's order; h/4: the matrix-free one's).
+  Eigen::VectorXd diagonal_with(const Particles& p, const WeightFunction& w,
+                                const std::vector<double>& V, double cell) const;
   void plan_blocks();
   void apply_assembled(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
   template <int W>
-  void apply_assembled_block(const RowBlock& X, RowBlock& Y) const;
+  void apply_assembled_block(const RowBlock& X, RowBlock& Y,
+                             const std::vector<const Volumes*>& per_column) const;
   template <int W>
   void apply_full_block(const RowBlock& X, RowBlock& Y) const;
   // The rows' sums from the blocks' partial sums t (s interleaved columns), both products.
-  void sum_blocks(const double* x, const double* t, int s, int tw, double* y) const;
+  // Column c's diagonal is diag[c].
+  void sum_blocks(const double* x, const double* t, int s, int tw, const double* const* diag,
+                  double* y) const;
   // Threads only pay off for large products: a parallel region costs microseconds (and
   // much more on a loaded machine), a row of a small matrix nanoseconds.
   bool threaded() const {
