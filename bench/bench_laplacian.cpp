@@ -96,7 +96,8 @@ int body(int argc, char** argv) {
   }
   std::vector<int> blocks;
   for (double s : args.nums("block")) {
-    if (s < 1 || s > 64 || s != std::floor(s)) throw gpm::InputError("--block: integers in [1, 64]");
+    if (s < 1 || s > 64 || s != std::floor(s))
+      throw gpm::InputError("--block: integers in [1, 64]");
     blocks.push_back(static_cast<int>(s));
   }
   const gpm::WeightFunction& w = gpm::weight(args.str("weight"));
@@ -212,8 +213,11 @@ int body(int argc, char** argv) {
         for (int s : blocks) {
           const gpm::DiscreteLaplacian::RowBlock X = block_of(s);
           gpm::DiscreteLaplacian::RowBlock Y;
-          const Timing tm = s == 1 ? time_it(static_cast<int>(repeats), [&] { f.L->apply(x, y); })
-                                   : time_it(static_cast<int>(repeats), [&] { f.L->apply_block(X, Y); });
+          const Timing tm =
+              time_it(static_cast<int>(repeats), [&] {
+                if (s == 1) f.L->apply(x, y);
+                else f.L->apply_block(X, Y);
+              });
           const bench::Limit lim = limits.get("read", nt);
           const double bytes = f.L->bytes();
           rows.push_back({f.name, s, f.setup, tm.best, tm.cpu_best / nt, bytes / lim.rate,

@@ -182,7 +182,8 @@ TEST_CASE("block product with volumes per column equals the Laplacian of those v
   for (auto [level, h] : {std::pair{5, 0.2}, std::pair{7, 0.12}}) {
     const Setting s = setting(level, h);
     const double dx = std::ldexp(1.0, -level);
-    const std::vector<double> lattice(s.p.size(), Domain{}.area_H() / static_cast<double>(s.p.size()));
+    const std::vector<double> lattice(s.p.size(),
+                                      Domain{}.area_H() / static_cast<double>(s.p.size()));
     const std::vector<double> cell(s.p.size(), dx * dx);
     const DiscreteLaplacian L(s.p, lattice, w, h, LaplacianStorage::assembled);
     const std::vector<std::vector<double>> others = {cell, s.V};
@@ -201,7 +202,7 @@ TEST_CASE("block product with volumes per column equals the Laplacian of those v
       L.apply_block(X, Y, per_column);
       for (int c = 0; c < width; ++c) {
         INFO("level 2^-" << level << ", width " << width << ", column " << c);
-        const std::vector<double>& V = c % 3 == 2 ? lattice : others[static_cast<std::size_t>(c % 3)];
+        const auto& V = c % 3 == 2 ? lattice : others[static_cast<std::size_t>(c % 3)];
         const DiscreteLaplacian Lv(s.p, V, w, h, LaplacianStorage::assembled);
         Eigen::VectorXd y;
         Lv.apply(X.col(c), y);

@@ -1,10 +1,13 @@
 #include "gpm/solvers/heat.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include "gpm/error.hpp"
 
@@ -46,7 +49,8 @@ class HeatSeries {
   void begin_step(long k);
   CgState& cg() { return *cg_; }
   // A p from M p for the CG: A x = D(x − θκΔt Mx).
-  void system_product(const Eigen::VectorXd& x, const Eigen::VectorXd& Mx, Eigen::VectorXd& out) const {
+  void system_product(const Eigen::VectorXd& x, const Eigen::VectorXd& Mx,
+                      Eigen::VectorXd& out) const {
     out = (d_.array() * (x.array() - th_ * kdt_ * Mx.array())).matrix();
   }
   // Step k after MU = M U^{k+1}: the solve's true residual, the blow-up check, the errors.
@@ -199,14 +203,20 @@ std::vector<HeatResult> solve_heat_block(const Particles& p, const DiscreteLapla
   std::vector<HeatSeries> series;
   series.reserve(settings.size());
   long K = 0;
-  for (const auto& s : settings) series.emplace_back(p, L, s), K = std::max(K, heat_steps(s.T, s.dt_nominal));
+  for (const auto& s : settings) {
+    series.emplace_back(p, L, s);
+    K = std::max(K, heat_steps(s.T, s.dt_nominal));
+  }
   RowBlock X, Y;
   std::vector<const Eigen::VectorXd*> in;
   std::vector<Eigen::VectorXd*> out;
   // M U for the listed series, one product for all of them.
   auto update_MU = [&](const std::vector<HeatSeries*>& list) {
     in.clear(), out.clear();
-    for (HeatSeries* h : list) in.push_back(&h->U()), out.push_back(&h->MU()), h->count_product();
+    for (HeatSeries* h : list) {
+      in.push_back(&h->U()), out.push_back(&h->MU());
+      h->count_product();
+    }
     block_product(L, in, out, X, Y);
   };
   const auto t0 = std::chrono::steady_clock::now();

@@ -315,7 +315,8 @@ DiscreteLaplacian::Volumes DiscreteLaplacian::volumes_for(const Particles& p,
                      std::to_string(n_) + " particles");
   Volumes v;
   v.at_unknowns.resize(static_cast<Eigen::Index>(omega_.size()));
-  for (std::size_t k = 0; k < omega_.size(); ++k) v.at_unknowns[static_cast<Eigen::Index>(k)] = V[omega_[k]];
+  for (std::size_t k = 0; k < omega_.size(); ++k)
+    v.at_unknowns[static_cast<Eigen::Index>(k)] = V[omega_[k]];
   v.diagonal = diagonal_with(p, w, V, h_ / 2);  // the cells of assemble()
   return v;
 }
