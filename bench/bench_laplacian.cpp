@@ -10,6 +10,9 @@
 //  * matrix-free: the fused kernel with Δ only, so its bound is the candidate pairs the
 //    kernel visits / (rate of the kernel's arithmetic mix for this weight, Δ only).
 // Both bounds come from bench_limit's file (--limit), with the same thread count.
+// --block s1,s2,…: the assembled forms also apply M to blocks of s vectors at once
+// (DiscreteLaplacian::apply_block, one pass over the storage for all s); per_vector_s is the
+// product's time / s.  Matrix-free has no shared pass (column by column): block 1 only.
 // Setting as in the thesis' Poisson/heat studies: jittered grid, uniform volumes, the
 // printed h = (2.6⁴·2^-10·Δx)^{1/4} and the quartic polynomial weight.
 // Times: best of --repeats after a warm-up; the machine is shared (see also the
@@ -73,6 +76,7 @@ int body(int argc, char** argv) {
       .opt("weight", "quartic_polynomial", "weight (w/q^2 must be a polynomial: no divide)")
       .opt("seed", "1", "jitter seed")
       .opt("threads", "1,2", "comma-separated thread counts")
+      .opt("block", "1", "comma-separated block widths s (vectors per product, assembled forms)")
       .opt("repeats", "5", "timed products per measurement (best reported)")
       .opt("max-gb", "6", "largest assembled matrix to build (GB); larger: matrix-free only")
       .opt("limit", "data/bench/limit.tsv", "bench_limit's output (the bounds)")
@@ -89,6 +93,12 @@ int body(int argc, char** argv) {
   for (double t : args.nums("threads")) {
     if (t < 1 || t != std::floor(t)) throw gpm::InputError("--threads: positive integers");
     threads.push_back(static_cast<int>(t));
+  }
+  std::vector<int> blocks;
+  for (double s : args.nums("block")) {
+    if (s < 1 || s > 64 || s != std::floor(s))
+      throw gpm::InputError("--block: integers in [1, 64]");
+    blocks.push_back(static_cast<int>(s));
   }
   const gpm::WeightFunction& w = gpm::weight(args.str("weight"));
   const double max_bytes = 1e9 * args.positive("max-gb");
@@ -109,10 +119,11 @@ int body(int argc, char** argv) {
   t.set("loadavg_1min_start", bench::loadavg());
   gpm::add_provenance(t);
   t.columns = {"dx", "h", "n_particles", "n_unknowns", "nnz", "matrix_gb", "candidates",
-               "storage", "threads", "setup_s", "seconds", "seconds_cpu", "bound_s",
-               "fraction_of_bound", "bound_s_cpu", "fraction_of_bound_cpu", "winner", "winner_cpu", "check_max_rel_diff"};
-  std::printf("%-7s %7s %9s %-11s %3s %8s %9s %9s %6s %6s %s\n", "dx", "h", "nnz", "storage",
-              "thr", "setup_s", "product_s", "bound_s", "frac", "f_cpu", "winner");
+               "storage", "threads", "block", "setup_s", "seconds", "per_vector_s",
+               "seconds_cpu", "bound_s", "fraction_of_bound", "bound_s_cpu", "fraction_of_bound_cpu", "winner", "winner_cpu", "check_max_rel_diff"};
+  std::printf("%-7s %7s %9s %-11s %3s %5s %8s %9s %10s %9s %6s %6s %s\n", "dx", "h", "nnz",
+              "storage", "thr", "block", "setup_s", "product_s", "per_vector", "bound_s", "frac",
+              "f_cpu", "winner");
 
   // One loop over the resolutions: build both forms, time products per thread count.
   for (double dx : dxs) {
@@ -148,6 +159,12 @@ int body(int argc, char** argv) {
 
     Eigen::VectorXd x(static_cast<Eigen::Index>(free.n_unknowns())), y;
     for (Eigen::Index k = 0; k < x.size(); ++k) x[k] = std::sin(0.001 * static_cast<double>(k));
+    // The block: s shifted copies of x (distinct columns, the same pattern of values).
+    auto block_of = [&](int s) {
+      gpm::DiscreteLaplacian::RowBlock X(x.size(), s);
+      for (int c = 0; c < s; ++c) X.col(c) = x.array() + 0.1 * c;
+      return X;
+    };
     // Every form must compute the same product (up to the summation order).
     double check = NAN;
     {
@@ -160,6 +177,17 @@ int body(int argc, char** argv) {
         if (!(d < 1e-10))
           throw gpm::NumericalError(f.name + " and matrix-free products differ at dx = " +
                                     gpm::fmt(dx) + ": max relative difference " + gpm::fmt(d));
+        // The widest block's columns must be the single products, bit for bit.
+        const int widest = *std::max_element(blocks.begin(), blocks.end());
+        const gpm::DiscreteLaplacian::RowBlock X = block_of(widest);
+        gpm::DiscreteLaplacian::RowBlock Y;
+        f.L->apply_block(X, Y);
+        for (Eigen::Index c = 0; c < X.cols(); ++c) {
+          f.L->apply(X.col(c), ya);
+          if (!(Y.col(c).array() == ya.array()).all())
+            throw gpm::NumericalError(f.name + ": block product column " + std::to_string(c) +
+                                      " differs from the single product at dx = " + gpm::fmt(dx));
+        }
       }
     }
 
@@ -167,40 +195,53 @@ int body(int argc, char** argv) {
       omp_set_num_threads(nt);
       struct Row {
         std::string storage;
+        int block;
         double setup, sec, cpu, bound, bound_cpu, bytes;
+        double per_vector() const { return sec / block; }
+        double per_vector_cpu() const { return cpu / block; }
       };
       std::vector<Row> rows;
       {
         const Timing tm = time_it(static_cast<int>(repeats), [&] { free.apply(x, y); });
         const bench::Limit lim = limits.get(mix, nt);
-        rows.push_back({"matrix_free", setup_free, tm.best, tm.cpu_best / nt,
+        rows.push_back({"matrix_free", 1, setup_free, tm.best, tm.cpu_best / nt,
                         static_cast<double>(pc.candidates) / lim.rate,
                         static_cast<double>(pc.candidates) / lim.rate_cpu, 0.0});
       }
-      for (auto& f : forms) {
-        const Timing tm = time_it(static_cast<int>(repeats), [&] { f.L->apply(x, y); });
-        const bench::Limit lim = limits.get("read", nt);
-        const double bytes = f.L->bytes();
-        rows.push_back({f.name, f.setup, tm.best, tm.cpu_best / nt, bytes / lim.rate,
-                        bytes / lim.rate_cpu, bytes});
-      }
+      // The storage is streamed once per product, whatever the block: the same bound.
+      for (auto& f : forms)
+        for (int s : blocks) {
+          const gpm::DiscreteLaplacian::RowBlock X = block_of(s);
+          gpm::DiscreteLaplacian::RowBlock Y;
+          const Timing tm =
+              time_it(static_cast<int>(repeats), [&] {
+                if (s == 1) f.L->apply(x, y);
+                else f.L->apply_block(X, Y);
+              });
+          const bench::Limit lim = limits.get("read", nt);
+          const double bytes = f.L->bytes();
+          rows.push_back({f.name, s, f.setup, tm.best, tm.cpu_best / nt, bytes / lim.rate,
+                          bytes / lim.rate_cpu, bytes});
+        }
       auto fastest = [&](auto key) {
         return std::min_element(rows.begin(), rows.end(),
                                 [&](const Row& a, const Row& b) { return key(a) < key(b); })
             ->storage;
       };
-      const std::string winner = fastest([](const Row& r) { return r.sec; });
-      const std::string winner_cpu = fastest([](const Row& r) { return r.cpu; });
+      const std::string winner = fastest([](const Row& r) { return r.per_vector(); });
+      const std::string winner_cpu = fastest([](const Row& r) { return r.per_vector_cpu(); });
       for (const auto& r : rows) {
         auto opt_fmt = [](double v) { return std::isfinite(v) ? gpm::fmt(v) : std::string(); };
-        std::printf("%-7.4g %7.4f %9.3g %-11s %3d %8.2f %9.4f %9.4f %6.3f %6.3f %s\n", dx, h, nnz,
-                    r.storage.c_str(), nt, r.setup, r.sec, r.bound, r.bound / r.sec,
-                    r.bound_cpu / r.cpu, r.storage == winner ? "<- faster" : "");
+        std::printf("%-7.4g %7.4f %9.3g %-11s %3d %5d %8.2f %9.4f %10.5f %9.4f %6.3f %6.3f %s\n",
+                    dx, h, nnz, r.storage.c_str(), nt, r.block, r.setup, r.sec, r.per_vector(),
+                    r.bound, r.bound / r.sec, r.bound_cpu / r.cpu,
+                    r.storage == winner ? "<- faster" : "");
         std::fflush(stdout);
         t.add_row({gpm::fmt(dx), gpm::fmt(h), gpm::fmt(p.size()), gpm::fmt(free.n_unknowns()),
                    gpm::fmt(nnz), gpm::fmt(r.bytes / 1e9),
                    gpm::fmt(static_cast<long long>(pc.candidates)), r.storage, gpm::fmt(nt),
-                   gpm::fmt(r.setup), gpm::fmt(r.sec), gpm::fmt(r.cpu), opt_fmt(r.bound),
+                   gpm::fmt(r.block), gpm::fmt(r.setup), gpm::fmt(r.sec), gpm::fmt(r.per_vector()),
+                   gpm::fmt(r.cpu), opt_fmt(r.bound),
                    opt_fmt(r.bound / r.sec), opt_fmt(r.bound_cpu),
                    opt_fmt(r.bound_cpu / r.cpu), winner, winner_cpu, opt_fmt(check)});
       }

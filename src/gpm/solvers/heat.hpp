@@ -27,6 +27,7 @@
 // stops and reports the step, the growth ‖U^k‖/‖U^0‖ and the last one-step amplification.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "gpm/geometry/domain.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
@@ -41,6 +42,10 @@ struct HeatSetting {
   double tol = 1e-10;        // CG relative residual per implicit step
   int max_iter = 20000;
   double blowup_factor = 1e6;
+  // Implicit steps: start the CG from the extrapolation 2U^k − U^{k−1} (from the second
+  // step on) instead of U^k.  Off by default: the stored results were made from U^k, and a
+  // different start gives the same solution only to the CG tolerance.
+  bool extrapolate = false;
 };
 
 struct HeatResult {
@@ -67,5 +72,15 @@ long heat_steps(double T, double dt_nominal);
 double heat_exact(double x, double y, double t, double kappa);
 
 HeatResult solve_heat(const Particles& p, const DiscreteLaplacian& L, const HeatSetting& s);
+
+// Several series on one Laplacian (the θ of a table, other time steps), advanced together:
+// every product M·x of a step is one block product for all the series that need it
+// (DiscreteLaplacian::apply_block), the implicit series' conjugate gradients run in lockstep
+// (each with its own α, β and stopping test; a converged series waits), and a series that
+// blows up or has fewer steps drops out.  Each result equals solve_heat of its setting alone
+// bit for bit (solve_heat is this with one series), except the times: the joint run's wall
+// time is split over the series in proportion to their columns in the block products.
+std::vector<HeatResult> solve_heat_block(const Particles& p, const DiscreteLaplacian& L,
+                                         const std::vector<HeatSetting>& settings);
 
 }  // namespace gpm

@@ -1,13 +1,19 @@
 #include "gpm/solvers/laplacian_matrix.hpp"
 
 #include <cstdio>
+#include <cstring>
 
 #include <omp.h>
+#ifdef __FMA__
+#include <immintrin.h>
+#endif
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <type_traits>
+#include <utility>
 
 #include "gpm/error.hpp"
 #include "gpm/geometry/cells.hpp"
@@ -31,6 +37,23 @@ struct RadialG {
     return 0;
   }
 };
+
+// A row's sum over its stored entries in an order fixed by the source, not by the compiler
+// (an `omp simd reduction` leaves it to the vectorizer): entry j of the row goes to partial
+// sum j mod kLanes, and the partial sums are added pairwise.  Each term is an explicit fma
+// (contraction is otherwise the compiler's choice, which differed between the full
+// storage's single and block loops).  The single and the block product both sum this way,
+// so each column of the block is the single product bit for bit.
+constexpr int kLanes = 8;
+inline double lane_total(const double* a, std::ptrdiff_t stride) {
+  return ((a[0] + a[stride]) + (a[2 * stride] + a[3 * stride])) +
+         ((a[4 * stride] + a[5 * stride]) + (a[6 * stride] + a[7 * stride]));
+}
+
+// d − sv·g rounded once: a term of the diagonal, spelled out so that the assembly and
+// diagonal_with() (volumes_for) sum it identically; left to the compiler, one fused it and
+// the other did not.
+inline double diagonal_term(double d, double sv, double g) { return std::fma(-sv, g, d); }
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -100,7 +123,7 @@ DiscreteLaplacian::DiscreteLaplacian(const Particles& p, const std::vector<doubl
       device_ = make_device_pass(p, V_, h_, std::vector<KernelWeight>{{w, kLap}});
     else
       kernel_ = std::make_unique<FusedKernel>(p, V_, h_, std::vector<KernelWeight>{{w, kLap}});
-    compute_diagonal(p, w);
+    diag_ = diagonal_with(p, w, V_, h_ / 4);
   }
   assembly_s_ = seconds_since(t0);
   work_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n_));
@@ -154,7 +177,7 @@ void DiscreteLaplacian::assemble(const Particles& p, const WeightFunction& w) {
         if (i == j) return;
         const double g = G(std::sqrt(r2) / h_);
         const double c = scale * V_[i] * g;
-        d -= c;
+        d = diagonal_term(d, scale * V_[i], g);
         if (unknown_[i] < 0) row_b.emplace_back(i, c);
         else if (i > j) row_up.emplace_back(unknown_[i], scale * g);
       });
@@ -260,23 +283,42 @@ void DiscreteLaplacian::plan_blocks() {
   }
 }
 
-void DiscreteLaplacian::compute_diagonal(const Particles& p, const WeightFunction& w) {
-  const CellList cl(p.x, p.y, h_ / 4, Domain{}.lo(), Domain{}.lo());
+Eigen::VectorXd DiscreteLaplacian::diagonal_with(const Particles& p, const WeightFunction& w,
+                                                 const std::vector<double>& V,
+                                                 double cell) const {
+  const CellList cl(p.x, p.y, cell, Domain{}.lo(), Domain{}.lo());
   const auto& index = cl.index();
   const RadialG G(w);
   const double scale = 2 * kD / (h_ * h_ * h_ * h_);
   const int64_t rows = static_cast<int64_t>(omega_.size());
-  diag_.resize(rows);
+  Eigen::VectorXd diag(rows);
 #pragma omp parallel for schedule(dynamic, 64)
   for (int64_t k = 0; k < rows; ++k) {
     const int32_t j = omega_[k];
     double d = 0;
     cl.for_each_neighbour(p.x[j], p.y[j], h_, [&](int32_t slot, double, double, double r2) {
       const int32_t i = index[slot];
-      if (i != j) d -= scale * V_[i] * G(std::sqrt(r2) / h_);
+      if (i != j) d = diagonal_term(d, scale * V[i], G(std::sqrt(r2) / h_));
     });
-    diag_[k] = d;
+    diag[k] = d;
   }
+  return diag;
+}
+
+DiscreteLaplacian::Volumes DiscreteLaplacian::volumes_for(const Particles& p,
+                                                          const WeightFunction& w,
+                                                          const std::vector<double>& V) const {
+  if (!assembled_ || full_storage_)
+    throw InputError("volumes_for: only for the assembled (half) storage");
+  if (V.size() != n_)
+    throw InputError("volumes_for: " + std::to_string(V.size()) + " volumes for " +
+                     std::to_string(n_) + " particles");
+  Volumes v;
+  v.at_unknowns.resize(static_cast<Eigen::Index>(omega_.size()));
+  for (std::size_t k = 0; k < omega_.size(); ++k)
+    v.at_unknowns[static_cast<Eigen::Index>(k)] = V[omega_[k]];
+  v.diagonal = diagonal_with(p, w, V, h_ / 2);  // the cells of assemble()
+  return v;
 }
 
 int64_t DiscreteLaplacian::nnz() const {
@@ -322,7 +364,7 @@ const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& DiscreteLaplacian::matr
 
 // y = M_ΩΩ x from the half: every stored K_kl gives K_kl z_l to row k and K_kl z_k to row l
 // (z = V x).  Block b adds both into its own partial sums; a row's total is its diagonal
-// term plus the partial sums of the blocks that reach it, in block order.
+// term plus the partial sums of the blocks that reach it, in block order (sum_blocks).
 void DiscreteLaplacian::apply_assembled(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   const int64_t rows = static_cast<int64_t>(omega_.size());
   z_ = (vol_.array() * x.array()).matrix();
@@ -331,35 +373,224 @@ void DiscreteLaplacian::apply_assembled(const Eigen::VectorXd& x, Eigen::VectorX
   const int32_t* col = up_col_.data();
   const double* val = up_val_.data();
   const int64_t nb = static_cast<int64_t>(block_reach_.size());
-  // Threads only pay off for large products: a parallel region costs microseconds (and
-  // much more on a loaded machine), a row of a small matrix nanoseconds.
-  const bool threaded = up_col_.size() > 1000000;
-#pragma omp parallel for schedule(dynamic, 1) if (threaded)
+#pragma omp parallel for schedule(dynamic, 1) if (threaded())
   for (int64_t b = 0; b < nb; ++b) {
     double* t = part_.data() + block_offset_[b] - block_row_[b];  // t[k], k ∈ [row, reach]
     std::fill(t + block_row_[b], t + block_reach_[b] + 1, 0.0);
     for (int64_t k = block_row_[b]; k < block_row_[b + 1]; ++k) {
       const double zk = z[k];
-      double s = 0;
+      alignas(64) double acc[kLanes] = {};
       // A row's columns are distinct, so its scatter into t has no conflicts: vectors of
-      // gathers and scatters (AVX-512), the row sum in vector lanes.
-#pragma omp simd reduction(+ : s)
-      for (int64_t o = ptr[k]; o < ptr[k + 1]; ++o) {
+      // gathers and scatters (AVX-512), one lane per partial sum.
+      auto entry = [&](int64_t o, int q) {
         const int32_t l = col[o];
-        s += val[o] * z[l];
-        t[l] += val[o] * zk;
+        acc[q] = std::fma(val[o], z[l], acc[q]);
+        t[l] = std::fma(val[o], zk, t[l]);
+      };
+      int64_t o = ptr[k];
+      for (; o + kLanes <= ptr[k + 1]; o += kLanes) {
+#pragma omp simd
+        for (int q = 0; q < kLanes; ++q) entry(o + q, q);
       }
-      t[k] += s;
+      for (int q = 0; o + q < ptr[k + 1]; ++q) entry(o + q, q);
+      t[k] += lane_total(acc, 1);
     }
   }
   y.resize(rows);
-#pragma omp parallel for schedule(static, 1024) if (threaded)
-  for (int64_t k = 0; k < rows; ++k) {
-    double s = diag_[k] * x[k];
-    for (int64_t b = first_block_[k]; b < nb && block_row_[b] <= k; ++b)
-      s += part_[static_cast<std::size_t>(block_offset_[b] + k - block_row_[b])];
-    y[k] = s;
+  const double* diag = diag_.data();
+  sum_blocks(x.data(), part_.data(), 1, 1, &diag, y.data());
+}
+
+// Four doubles as one value (the GCC/Clang vector extension): the block's columns go in
+// groups of four, each loaded, multiplied and added as one vector.
+typedef double Quad __attribute__((vector_size(32)));
+
+// v·z + a rounded once, lane by lane: the single product's std::fma.  Spelled out, since
+// the compiler's contraction of v * z + a is a tuning choice (GCC for Zen leaves a
+// loop-carried chain unfused: the full storage's loops came out different).
+inline Quad fma4(double v, Quad z, Quad a) {
+#ifdef __FMA__
+  return _mm256_fmadd_pd(_mm256_set1_pd(v), z, a);
+#else
+  return Quad{std::fma(v, z[0], a[0]), std::fma(v, z[1], a[1]), std::fma(v, z[2], a[2]),
+              std::fma(v, z[3], a[3])};
+#endif
+}
+
+// Row k of the block product, P = 4W interleaved columns: entry j of the row adds its terms
+// to lane j mod kLanes of the row sums and scatters the transposed terms into t, as the
+// single product does per column.  The lanes go to sums[q·P + c].
+template <int W>
+void block_row(int64_t begin, int64_t end, const int32_t* col, const double* val,
+               const double* z, const double* zk, double* t, double* sums) {
+  constexpr int P = 4 * W;
+  Quad a[kLanes][W] = {}, kq[W];
+  std::memcpy(kq, zk, sizeof kq);
+  auto entry = [&](int64_t o, int q) {
+    const double v = val[o];
+    const int64_t l = static_cast<int64_t>(col[o]) * P;
+    for (int w = 0; w < W; ++w) {
+      Quad zl, tl;
+      std::memcpy(&zl, z + l + 4 * w, sizeof zl);
+      std::memcpy(&tl, t + l + 4 * w, sizeof tl);
+      a[q][w] = fma4(v, zl, a[q][w]);
+      tl = fma4(v, kq[w], tl);
+      std::memcpy(t + l + 4 * w, &tl, sizeof tl);
+    }
+  };
+  int64_t o = begin;
+  for (; o + kLanes <= end; o += kLanes) {
+#pragma GCC unroll 8
+    for (int q = 0; q < kLanes; ++q) entry(o + q, q);
   }
+  for (int q = 0; o + q < end; ++q) entry(o + q, q);
+  std::memcpy(sums, a, sizeof a);
+}
+
+// Y = M_ΩΩ X for s ≤ P = 4W columns, the loop of apply_assembled on interleaved rows of P
+// values (the columns past s are zero): per entry the values of z_l and of t_l are adjacent.
+template <int W>
+void DiscreteLaplacian::apply_assembled_block(const RowBlock& X, RowBlock& Y,
+                                              const std::vector<const Volumes*>& per_column) const {
+  constexpr int P = 4 * W;
+  const int64_t rows = static_cast<int64_t>(omega_.size());
+  const int s = static_cast<int>(X.cols());
+  z_block_.setZero(rows, P);
+  std::vector<const double*> diag(static_cast<std::size_t>(s), diag_.data());
+  for (int c = 0; c < s; ++c) {
+    const Volumes* v = per_column.empty() ? nullptr : per_column[static_cast<std::size_t>(c)];
+    z_block_.col(c) = (v ? v->at_unknowns : vol_).cwiseProduct(X.col(c));
+    if (v) diag[static_cast<std::size_t>(c)] = v->diagonal.data();
+  }
+  const double* z = z_block_.data();
+  const int64_t nb = static_cast<int64_t>(block_reach_.size());
+  part_block_.resize(part_.size() * P);
+#pragma omp parallel if (threaded())
+  {
+    alignas(64) double sums[kLanes * P];
+#pragma omp for schedule(dynamic, 1)
+    for (int64_t b = 0; b < nb; ++b) {
+      double* t = part_block_.data() + (block_offset_[b] - block_row_[b]) * P;
+      std::fill(t + block_row_[b] * P, t + (block_reach_[b] + 1) * P, 0.0);
+      for (int64_t k = block_row_[b]; k < block_row_[b + 1]; ++k) {
+        block_row<W>(up_ptr_[k], up_ptr_[k + 1], up_col_.data(), up_val_.data(), z, z + k * P,
+                     t, sums);
+        for (int c = 0; c < s; ++c) t[k * P + c] += lane_total(sums + c, P);
+      }
+    }
+  }
+  Y.resize(rows, s);
+  sum_blocks(X.data(), part_block_.data(), s, P, diag.data(), Y.data());
+}
+
+// y_k = M_kk x_k plus the partial sums of the blocks that reach row k, in block order, for
+// s interleaved columns (t's rows hold tw ≥ s values).
+void DiscreteLaplacian::sum_blocks(const double* x, const double* t, int s, int tw,
+                                   const double* const* diag, double* y) const {
+  const int64_t rows = static_cast<int64_t>(omega_.size());
+  const int64_t nb = static_cast<int64_t>(block_reach_.size());
+#pragma omp parallel for schedule(static, 1024) if (threaded())
+  for (int64_t k = 0; k < rows; ++k)
+    for (int c = 0; c < s; ++c) {
+      double sum = diag[c][k] * x[k * s + c];
+      for (int64_t b = first_block_[k]; b < nb && block_row_[b] <= k; ++b)
+        sum += t[(block_offset_[b] + k - block_row_[b]) * tw + c];
+      y[k * s + c] = sum;
+    }
+}
+
+// The full CSR storage: row sums in stored order, as apply_full, P = 4W columns side by
+// side (X over all particles, zero outside Ω and past column s).
+template <int W>
+void DiscreteLaplacian::apply_full_block(const RowBlock& X, RowBlock& Y) const {
+  constexpr int P = 4 * W;
+  const int64_t rows = static_cast<int64_t>(omega_.size());
+  const Eigen::Index s = X.cols();
+  work_block_.setZero(static_cast<Eigen::Index>(n_), P);
+  for (int64_t k = 0; k < rows; ++k) work_block_.row(omega_[k]).head(s) = X.row(k);
+  Y.resize(rows, s);
+  const int* outer = full_->outerIndexPtr();
+  const int* inner = full_->innerIndexPtr();
+  const double* val = full_->valuePtr();
+  const double* x = work_block_.data();
+#pragma omp parallel for schedule(static, 256) if (threaded())
+  for (int64_t k = 0; k < rows; ++k) {
+    Quad a[W] = {};
+    for (int o = outer[k]; o < outer[k + 1]; ++o) {
+      const double v = val[o];
+      const double* xl = x + static_cast<int64_t>(inner[o]) * P;
+      for (int w = 0; w < W; ++w) {
+        Quad xq;
+        std::memcpy(&xq, xl + 4 * w, sizeof xq);
+        a[w] = fma4(v, xq, a[w]);
+      }
+    }
+    double sums[P];
+    std::memcpy(sums, a, sizeof a);
+    for (Eigen::Index c = 0; c < s; ++c) Y(k, c) = sums[c];
+  }
+}
+
+namespace {
+
+// f(std::integral_constant<int, W>) for the W = ⌈s/4⌉ vectors of four that hold s ≤ 16
+// columns: the block kernels' width fixed at compile time.
+template <class F>
+void with_quads(Eigen::Index s, F&& f) {
+  switch ((s + 3) / 4) {
+    case 1: return f(std::integral_constant<int, 1>{});
+    case 2: return f(std::integral_constant<int, 2>{});
+    case 3: return f(std::integral_constant<int, 3>{});
+    default: return f(std::integral_constant<int, 4>{});
+  }
+}
+
+}  // namespace
+
+void DiscreteLaplacian::apply_block(const RowBlock& X, RowBlock& Y) const {
+  apply_block(X, Y, {});
+}
+
+void DiscreteLaplacian::apply_block(const RowBlock& X, RowBlock& Y,
+                                    const std::vector<const Volumes*>& per_column) const {
+  if (X.rows() != static_cast<Eigen::Index>(omega_.size()))
+    throw InputError("apply_block: " + std::to_string(X.rows()) + " rows, expected " +
+                     std::to_string(omega_.size()));
+  if (!per_column.empty() && (!assembled_ || full_storage_ ||
+                              per_column.size() != static_cast<std::size_t>(X.cols())))
+    throw InputError("apply_block: volumes per column need the assembled (half) storage and "
+                     "one entry per column");
+  if ((X.cols() == 1 && per_column.empty()) || !assembled_) {
+    // One column: the single product itself.  Matrix-free: no shared pass (the kernel
+    // recomputes the weights on every product anyway), column by column.
+    Y.resize(X.rows(), X.cols());
+    Eigen::VectorXd x, y;
+    for (Eigen::Index c = 0; c < X.cols(); ++c) {
+      x = X.col(c);
+      apply(x, y);
+      Y.col(c) = y;
+    }
+    return;
+  }
+  // Up to 16 columns in one pass, in vectors of four; a wider block in passes of 16.
+  constexpr Eigen::Index kMaxPass = 16;
+  if (X.cols() > kMaxPass) {
+    Y.resize(X.rows(), X.cols());
+    RowBlock Xp, Yp;
+    std::vector<const Volumes*> vp;
+    for (Eigen::Index c0 = 0; c0 < X.cols(); c0 += kMaxPass) {
+      const Eigen::Index m = std::min(kMaxPass, X.cols() - c0);
+      Xp = X.middleCols(c0, m);
+      if (!per_column.empty()) vp.assign(per_column.begin() + c0, per_column.begin() + c0 + m);
+      apply_block(Xp, Yp, vp);
+      Y.middleCols(c0, m) = Yp;
+    }
+    return;
+  }
+  with_quads(X.cols(), [&](auto w) {
+    constexpr int W = decltype(w)::value;
+    full_storage_ ? apply_full_block<W>(X, Y) : apply_assembled_block<W>(X, Y, per_column);
+  });
 }
 
 void DiscreteLaplacian::apply_full(const Eigen::VectorXd& v, Eigen::VectorXd& y) const {
@@ -373,11 +604,10 @@ void DiscreteLaplacian::apply_full(const Eigen::VectorXd& v, Eigen::VectorXd& y)
     const int* inner = full_->innerIndexPtr();
     const double* val = full_->valuePtr();
     const double* x = v.data();
-    const bool threaded = full_->nonZeros() > 2000000;
-#pragma omp parallel for schedule(static, 256) if (threaded)
+#pragma omp parallel for schedule(static, 256) if (threaded())
     for (int64_t k = 0; k < rows; ++k) {
       double s = 0;
-      for (int o = outer[k]; o < outer[k + 1]; ++o) s += val[o] * x[inner[o]];
+      for (int o = outer[k]; o < outer[k + 1]; ++o) s = std::fma(val[o], x[inner[o]], s);
       y[k] = s;
     }
     return;
@@ -423,6 +653,52 @@ Eigen::VectorXd DiscreteLaplacian::extend(const Eigen::VectorXd& x,
   for (std::size_t i = 0; i < n_; ++i)
     v[static_cast<Eigen::Index>(i)] = unknown_[i] >= 0 ? x[unknown_[i]] : outside[i];
   return v;
+}
+
+CgState::CgState(const Eigen::VectorXd& b, const Eigen::VectorXd& Sx0, double tol,
+                 int max_iter, std::string what)
+    : bnorm_(b.norm()), tol_(tol), max_iter_(max_iter), what_(std::move(what)) {
+  if (!std::isfinite(bnorm_)) throw NumericalError(what_ + ": non-finite right-hand side");
+  r_ = b - Sx0;
+  p_ = r_;
+  rr_ = r_.squaredNorm();
+  stop_ = tol * tol * bnorm_ * bnorm_;
+}
+
+bool CgState::done() const {
+  if (rr_ <= stop_) return true;
+  if (iterations_ >= max_iter_)
+    throw NumericalError(what_ + ": conjugate gradients did not reach the relative residual " +
+                         cg_number(tol_) + " in " + std::to_string(max_iter_) +
+                         " iterations (now " + cg_number(std::sqrt(rr_) / bnorm_) + ")");
+  return false;
+}
+
+void CgState::update(Eigen::VectorXd& x, const Eigen::VectorXd& q) {
+  const double pq = p_.dot(q);
+  if (!std::isfinite(pq))
+    throw NumericalError(what_ + ": non-finite value p^T S p = " + cg_number(pq) +
+                         " at iteration " + std::to_string(iterations_));
+  if (!(pq > 0))
+    throw NumericalError(what_ + ": the matrix is not positive definite (p^T S p = " +
+                         cg_number(pq) + " at iteration " + std::to_string(iterations_) + ")");
+  const double alpha = rr_ / pq;
+  x += alpha * p_;
+  r_ -= alpha * q;
+  const double rr_new = r_.squaredNorm();
+  if (!std::isfinite(rr_new))
+    throw NumericalError(what_ + ": non-finite residual at iteration " +
+                         std::to_string(iterations_));
+  p_ = r_ + (rr_new / rr_) * p_;
+  rr_ = rr_new;
+  ++iterations_;
+}
+
+CgResult CgState::result() const {
+  CgResult res;
+  res.iterations = iterations_;
+  res.recursive_rel_residual = std::sqrt(rr_) / bnorm_;
+  return res;
 }
 
 void cg_check_true_residual(CgResult& res, const Eigen::VectorXd& b, const Eigen::VectorXd& Sx,

@@ -22,6 +22,9 @@
 // The product's sums are split into fixed blocks of rows, each with its own partial sums,
 // added in block order: the result is the same for any number of threads.  It differs from
 // the full matrix's row sums at rounding level only (another order of the same terms).
+// Within a row the sum goes to eight partial sums in a fixed order (entry j to j mod 8, each
+// term an explicit fma), not to the vectorizer's choice, so that a block of vectors applied
+// in one pass (apply_block, the heat θ-method's series together) gives each column exactly.
 // At Δx = 2^-9 with h ≈ 0.097 each row has ~7,700 entries and even the half would need
 // ~14 GB, so above a memory budget (default 8 GB) the map is applied matrix-free by the
 // fused kernel (kernel.hpp), recomputing the weights on every product — on the device when
@@ -92,6 +95,28 @@ class DiscreteLaplacian {
   void apply_full(const Eigen::VectorXd& v_full, Eigen::VectorXd& y) const;
   // y = M_ΩΩ x for x over the unknowns (the values outside Ω taken as 0).
   void apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
+  // Y = M_ΩΩ X for a block of s = X.cols() vectors over the unknowns, interleaved (row k
+  // holds the s values of unknown k), in one pass over the stored entries: each entry's
+  // column index and value are read once for all s vectors and the s values it touches are
+  // adjacent, so the product, bound by its gathers and scatters, costs much less per
+  // vector.  Column c of Y equals apply() of column c of X bit for bit (the same sums in the
+  // same order and the same fixed row blocks) for the assembled and the full storage;
+  // matrix-free, the columns go through apply() one by one.
+  using RowBlock = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  void apply_block(const RowBlock& X, RowBlock& Y) const;
+  // The parts of M_ΩΩ that depend on the volumes, for other volumes V' on the same
+  // particles, weight and h (the stored K_kl do not): V' at the unknowns and the diagonal
+  // of the Laplacian built with V', summed in the order of its assembly, so that a column
+  // multiplied with them equals that Laplacian's apply() bit for bit.  Assembled half only.
+  struct Volumes {
+    Eigen::VectorXd at_unknowns, diagonal;
+  };
+  Volumes volumes_for(const Particles& p, const WeightFunction& w,
+                      const std::vector<double>& V) const;
+  // apply_block with column c multiplied by the Laplacian of volumes *per_column[c] (nullptr:
+  // this one's own); InputError unless assembled as the half.
+  void apply_block(const RowBlock& X, RowBlock& Y,
+                   const std::vector<const Volumes*>& per_column) const;
   // The diagonal of M_ΩΩ: −2d Σ_{i≠j} V_i w_h/r² (negative for a positive weight).
   const Eigen::VectorXd& diagonal() const { return diag_; }
 
@@ -103,9 +128,26 @@ class DiscreteLaplacian {
  private:
   void assemble(const Particles& p, const WeightFunction& w);
   void assemble_full(const Particles& p, const WeightFunction& w);
-  void compute_diagonal(const Particles& p, const WeightFunction& w);
+  // The diagonal for volumes V, summed over the neighbours in the order of a cell list of
+  // cells `cell` wide (h/2: the assembly's order; h/4: the matrix-free one's).
+  Eigen::VectorXd diagonal_with(const Particles& p, const WeightFunction& w,
+                                const std::vector<double>& V, double cell) const;
   void plan_blocks();
   void apply_assembled(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
+  template <int W>
+  void apply_assembled_block(const RowBlock& X, RowBlock& Y,
+                             const std::vector<const Volumes*>& per_column) const;
+  template <int W>
+  void apply_full_block(const RowBlock& X, RowBlock& Y) const;
+  // The rows' sums from the blocks' partial sums t (s interleaved columns), both products.
+  // Column c's diagonal is diag[c].
+  void sum_blocks(const double* x, const double* t, int s, int tw, const double* const* diag,
+                  double* y) const;
+  // Threads only pay off for large products: a parallel region costs microseconds (and
+  // much more on a loaded machine), a row of a small matrix nanoseconds.
+  bool threaded() const {
+    return full_storage_ ? full_->nonZeros() > 2000000 : up_col_.size() > 1000000;
+  }
 
   std::size_t n_ = 0;
   double h_ = 0;
@@ -128,12 +170,13 @@ class DiscreteLaplacian {
   // partial sums cover unknowns [row_[b], reach_[b]] at part_ + offset_[b].
   std::vector<int64_t> block_row_, block_reach_, block_offset_;
   std::vector<int32_t> first_block_;  // per unknown: the first block whose reach covers it
-  mutable std::vector<double> part_;
+  mutable std::vector<double> part_, part_block_;  // part_block_: s interleaved columns
   mutable Eigen::VectorXd z_;
   mutable std::unique_ptr<Eigen::SparseMatrix<double, Eigen::RowMajor, int>> full_;
   std::unique_ptr<FusedKernel> kernel_;
   std::unique_ptr<DevicePass> device_;  // matrix-free on a device (device_pass.hpp), if used
   mutable Eigen::VectorXd work_;  // full-length scratch for the matrix-free apply()
+  mutable RowBlock z_block_, work_block_;  // V X, and X over all particles (full storage)
 };
 
 // Conjugate gradients for S x = b with a symmetric positive definite S given as a map
@@ -166,45 +209,39 @@ CgResult cg_iterate(Apply&& apply, const Eigen::VectorXd& b, Eigen::VectorXd& x,
 void cg_check_true_residual(CgResult& res, const Eigen::VectorXd& b, const Eigen::VectorXd& Sx,
                             double tol, const std::string& what);
 
+// cg_iterate's loop as a state, for a caller that runs several solves in lockstep and
+// computes their products S p together (the heat θ-method's series, solve_heat_block):
+//   CgState cg(b, Sx0, …);  while (!cg.done()) { q = S·cg.direction(); cg.update(x, q); }
+// is cg_iterate, operation for operation.
+class CgState {
+ public:
+  CgState(const Eigen::VectorXd& b, const Eigen::VectorXd& Sx0, double tol, int max_iter,
+          std::string what);
+  // True once ‖r‖₂ ≤ tol·‖b‖₂; throws NumericalError when not and max_iter is reached.
+  bool done() const;
+  const Eigen::VectorXd& direction() const { return p_; }
+  // One iteration with q = S·direction(): x and the residual move along p.
+  void update(Eigen::VectorXd& x, const Eigen::VectorXd& q);
+  CgResult result() const;  // rel_residual still to be set (cg_check_true_residual)
+
+ private:
+  Eigen::VectorXd r_, p_;
+  double bnorm_ = 0, rr_ = 0, stop_ = 0, tol_ = 0;
+  int iterations_ = 0, max_iter_ = 0;
+  std::string what_;
+};
+
 // ---------------------------------------------------------------------------------
 template <class Apply>
 CgResult cg_iterate(Apply&& apply, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                     const Eigen::VectorXd& Sx0, double tol, int max_iter, const std::string& what) {
-  CgResult res;
-  const double bnorm = b.norm();
-  if (!std::isfinite(bnorm)) throw NumericalError(what + ": non-finite right-hand side");
-  Eigen::VectorXd r(b.size()), p(b.size()), q(b.size());
-  r = b - Sx0;
-  p = r;
-  double rr = r.squaredNorm();
-  const double stop = tol * tol * bnorm * bnorm;
-  while (rr > stop) {
-    if (res.iterations >= max_iter)
-      throw NumericalError(what + ": conjugate gradients did not reach the relative residual " +
-                           cg_number(tol) + " in " + std::to_string(max_iter) +
-                           " iterations (now " + cg_number(std::sqrt(rr) / bnorm) + ")");
-    apply(p, q);
-    const double pq = p.dot(q);
-    if (!std::isfinite(pq))
-      throw NumericalError(what + ": non-finite value p^T S p = " + cg_number(pq) +
-                           " at iteration " + std::to_string(res.iterations));
-    if (!(pq > 0))
-      throw NumericalError(what + ": the matrix is not positive definite (p^T S p = " +
-                           cg_number(pq) + " at iteration " +
-                           std::to_string(res.iterations) + ")");
-    const double alpha = rr / pq;
-    x += alpha * p;
-    r -= alpha * q;
-    const double rr_new = r.squaredNorm();
-    if (!std::isfinite(rr_new))
-      throw NumericalError(what + ": non-finite residual at iteration " +
-                           std::to_string(res.iterations));
-    p = r + (rr_new / rr) * p;
-    rr = rr_new;
-    ++res.iterations;
+  CgState cg(b, Sx0, tol, max_iter, what);
+  Eigen::VectorXd q(b.size());
+  while (!cg.done()) {
+    apply(cg.direction(), q);
+    cg.update(x, q);
   }
-  res.recursive_rel_residual = std::sqrt(rr) / bnorm;
-  return res;
+  return cg.result();
 }
 
 template <class Apply>
