@@ -263,7 +263,8 @@ awk -F'\t' '
   !h++ { for (i=1;i<=NF;i++) c[$i]=i; next }
   { t = $c["table"]; k = t OFS $c["slice"] OFS $c["setup"]
     if (!(k in n)) order[++m] = k
-    n[k]++; st[k, $c["verdict"]]++
+    # The identified slice counts with its own verdicts (fingerprint rows), the others as they are.
+    n[k]++; st[k, $c["identified"] == "yes" ? $c["verdict_identified"] : $c["verdict"]]++
     if (num($c["reproduced"]) && num($c["published"])) { d = $c["reproduced"] - $c["published"]; sd[k] += d < 0 ? -d : d; nd[k]++ }
     if ($c["printed"] == "yes") { pk[k] = 1; B["printed", t] = 1; npub[t]++; for (j = 1; j <= ncat; j++) if ($c["verdict"] == cat[j]) T["printed", j]++ }
     if ($c["identified"] == "yes") { ik[k] = 1; B["identified", t] = 1; for (j = 1; j <= ncat; j++) if ($c["verdict_identified"] == cat[j]) T["identified", j]++ } }

@@ -36,17 +36,18 @@ items=$1 score=$2 data=$3 out=$4
         n++; for (i = 1; i <= k; i++) T[n, c[i]] = f[i] }
       close(file); return n }
     function rates(t,   v) {
-      if (!(t in total)) return "not yet computed\tthe result store has no rows for this table"
+      if (!(t in total)) return "not yet computed\tthe result store has no rows of this table in the reading that counts (the identified one) yet"
       if (nc[t] == total[t]) return "not yet computed\tnone of its " total[t] " rates is in the result store at the documents'"'"' levels yet"
       v = (good[t] == total[t]) ? "reproduced" : (good[t] > 0 ? "partial" : (cr[t] > 0 && cr[t] + nc[t] == total[t] ? "not reproduced (reason checked)" : "not reproduced"))
-      return v "\t" sprintf("%d of %d rates reproduced at the documents'"'"' levels (%d agree, %d non-convergence, %d in seed band); %d differ with a checked reason, %d unexplained, %d not yet computed",
-                            good[t], total[t], ag[t], ncv[t], sb[t], cr[t], un[t], nc[t]) }
+      return v "\t" sprintf("%d of %d rates reproduced at the documents'"'"' levels (%d agree, %d non-convergence, %d in seed band); %d differ with a checked reason, %d unexplained, %d not yet computed%s",
+                            good[t], total[t], ag[t], ncv[t], sb[t], cr[t], un[t], nc[t], fp[t] > 0 ? sprintf("; %d identified the reading (fingerprint)", fp[t]) : "") }
     BEGIN {
       n = load(score, S)
       for (i = 1; i <= n; i++) {
         t = S[i, "table"]; if (S[i, "counted"] != "yes" || t == "total") continue
         total[t] = S[i, "rates"]; ag[t] = S[i, "agrees"]; ncv[t] = S[i, "non_convergence"]
         sb[t] = S[i, "in_seed_band"]; cr[t] = S[i, "checked_reason"]; un[t] = S[i, "unexplained"]; nc[t] = S[i, "not_computed"]
+        fp[t] = S[i, "fingerprint"]
         good[t] = ag[t] + ncv[t] + sb[t] } }
     /^#/ || $1 == "document" { next }
     { split($4, r, " "); kind = r[1]; arg = r[2]; res = "" }
