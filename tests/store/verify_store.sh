@@ -56,6 +56,7 @@ check imoto_fig5_table1_seed3.tsv "" "$coarse" imoto_fig5_table1 --seed 3
 check imoto_fig5_table1_plain.tsv "" "$coarse" imoto_fig5_table1 --jitter 0
 for t in 1 2 3; do check thesis_table4_$t.tsv "" "$coarse" thesis_table4_$t; done
 check thesis_table4_4.tsv "" "--levels 5,6" thesis_table4_4
+check thesis_table4_4_cellvol.tsv "" "--levels 5,6" thesis_table4_4 --volumes cell
 for s in 2 3; do  # other jitter realizations: the coarse levels and the rate levels (seed bands)
   check thesis_table4_1_seed$s.tsv "--levels 5,6,7,10,11" "$coarse" thesis_table4_1 --seed $s
   check thesis_table4_3_seed$s.tsv "--levels 5,6,7,10,11" "$coarse" thesis_table4_3 --seed $s
@@ -82,7 +83,9 @@ heat 6 _dtexact "--levels 5,6,7,8,9" --thetas 0 --dt-rule exact
 heat 6 _dtexact_cellvol "--levels 5,6,7,8,9" --thetas 0 --dt-rule exact --volumes cell
 heat 6 _h15_cellvol "--levels 5,6,7,8,9" --thetas 0 --h-rule h15 --volumes cell
 heat 6 _h15_dtexact "--levels 5,6,7,8,9" --thetas 0 --h-rule h15 --dt-rule exact
-heat 6 _h15_dtexact_cellvol "--levels 5,6,7,8,9" --thetas 0 --h-rule h15 --dt-rule exact --volumes cell
+# The identified reading (h15, V_i = dx^2, dt = dt0): every theta at 2^-5 and the rate levels.
+heat 6 _h15_dtexact_cellvol "--levels 5,8,9" --h-rule h15 --dt-rule exact --volumes cell
+heat 7 _h15_dtexact_cellvol "--levels 5,8,9" --h-rule h15 --dt-rule exact --volumes cell
 check thesis_poisson_diagnostic.tsv "--levels 7,8,9 --variants seed1,plain,seed1_cell,plain_cell" \
   "--levels 7 --weights quartic_polynomial --variants seed1,plain,seed1_cell" thesis_poisson_diagnostic
 
