@@ -121,11 +121,7 @@ int body(int argc, char** argv) {
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
   const std::vector<int> levels = run.levels(ts.quick, heat_levels(ts, true, h_rule));
-  // Before anything runs: every level's grid and Laplacian within the machine's memory.
-  for (int k : levels)
-    require_grid_fits_memory(std::ldexp(1.0, -k), pde_bytes_per_particle(pde_h(h_rule, std::ldexp(1.0, -k)),
-                             std::ldexp(1.0, -k), storage, max_bytes),
-                             "--levels: level " + std::to_string(k) + ", dx =");
+  require_pde_levels_fit_memory(levels, {h_rule}, storage, max_bytes);
   const std::string rates_input = a.str("rates-input");
 
   // --- The data file: one row per (weight, θ, level). ---------------------------------------

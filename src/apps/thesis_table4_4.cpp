@@ -56,12 +56,7 @@ int body(int argc, char** argv) {
   const auto storage = parse_laplacian_storage(run.args().str("storage"));
   const double max_bytes = run.args().positive("max-gb") * 1e9;
   const std::vector<int> levels = run.levels(poisson_table().levels.quick, poisson_table().levels.paper);
-  // Before anything runs: every level's grid and Laplacian within the machine's memory.
-  for (int k : levels)
-    for (const auto& rule : pde_h_rules())
-      require_grid_fits_memory(std::ldexp(1.0, -k), pde_bytes_per_particle(pde_h(rule, std::ldexp(1.0, -k)),
-                               std::ldexp(1.0, -k), storage, max_bytes),
-                             "--levels: level " + std::to_string(k) + ", dx =");
+  require_pde_levels_fit_memory(levels, pde_h_rules(), storage, max_bytes);
 
   // --- The data file: one row per (reading of h, weight, level). ---------------------------
   LevelCache& cache = run.open(

@@ -466,10 +466,7 @@ int cmd_store_seal(int argc, char** argv) {
       const auto last = chain.rfind("; ");
       if (last != std::string::npos) {
         ++chains[chain];
-        long earlier = 0;
-        for (auto at = chain.find("recheck "); at != std::string::npos; at = chain.find("recheck ", at + 1))
-          ++earlier;
-        chain = chain.substr(last + 2) + " (+" + std::to_string(earlier - 1) + " earlier)";
+        chain = checked_cell(chain.substr(last + 2), recheck_count(chain) - 1);
       }
       row.push_back("");
       row.back() = row_seal(row);

@@ -7,6 +7,7 @@
 
 #include "gpm/error.hpp"
 #include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/influence_radius.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
 
@@ -96,6 +97,16 @@ double pde_bytes_per_particle(double h, double dx, LaplacianStorage storage, dou
                                   ? nnz_bytes
                                   : std::min(nnz_bytes, max_bytes / grid_particle_count(dx));
   return 400 + matrix_bytes;
+}
+
+void require_pde_levels_fit_memory(const std::vector<int>& levels, const std::vector<std::string>& h_rules,
+                                   LaplacianStorage storage, double max_bytes) {
+  for (int k : levels)
+    for (const auto& rule : h_rules) {
+      const double dx = std::ldexp(1.0, -k);
+      require_grid_fits_memory(dx, pde_bytes_per_particle(pde_h(rule, dx), dx, storage, max_bytes),
+                               "--levels: level " + std::to_string(k) + ", dx =");
+    }
 }
 
 }  // namespace gpm

@@ -49,5 +49,9 @@ void require_grid_fits_memory(double dx, double bytes_per_particle, const std::s
 // Laplacian adds kAssembledBytesPerNonzero per non-zero of the Ω × all matrix, about π(h/dx)²
 // per unknown, |Ω|/|Ω_H| of the particles; `automatic` assembles only within max_bytes.
 double pde_bytes_per_particle(double h, double dx, LaplacianStorage storage, double max_bytes);
+// Before a PDE study runs: every level's grid and Laplacian, under each h rule, within the
+// machine's memory (InputError naming the level, as --levels gave it).
+void require_pde_levels_fit_memory(const std::vector<int>& levels, const std::vector<std::string>& h_rules,
+                                   LaplacianStorage storage, double max_bytes);
 
 }  // namespace gpm

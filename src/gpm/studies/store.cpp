@@ -67,6 +67,18 @@ std::string row_seal(const std::vector<std::string>& row) {
   return buf;
 }
 
+std::size_t recheck_count(const std::string& checked) {
+  std::size_t n = 0;
+  const auto plus = checked.rfind("(+");
+  if (plus != std::string::npos) n = std::strtoul(checked.c_str() + plus + 2, nullptr, 10);
+  for (auto at = checked.find("recheck "); at != std::string::npos; at = checked.find("recheck ", at + 1)) ++n;
+  return n;
+}
+
+std::string checked_cell(const std::string& last, std::size_t earlier) {
+  return last + (earlier ? " (+" + std::to_string(earlier) + " earlier)" : "");
+}
+
 std::string escaped(const std::string& s) {
   std::string out;
   for (unsigned char c : s) {
@@ -211,7 +223,6 @@ void LevelCache::load(const std::vector<std::pair<std::string, std::string>>& pa
                            "', now '" + (c < table_.columns.size() ? table_.columns[c] : "-") + "')",
                        old.rows.size(), replace);
   }
-  params_match_ = true;
   // Each row whole, sealed and not a copy of another; the first bad one is named.
   const int cseal = table_.column("seal");
   std::set<std::vector<std::string>> seen;
@@ -257,20 +268,9 @@ void LevelCache::load(const std::vector<std::pair<std::string, std::string>>& pa
 
 // A row of older code carried over by a re-check: current code, the last check's record with
 // the count of earlier ones, a new seal (its old one was verified when the file was read).
-void LevelCache::restamp(std::vector<std::string>& r, const std::string& record) const {
+void LevelCache::restamp(std::vector<std::string>& r, const std::string& tail) const {
   const int ccode = table_.column("code"), cchecked = table_.column("checked");
-  const std::string& old = r[cchecked];
-  long earlier = 0;
-  if (old != "computed" && old != "-") {
-    // An old-style chain "a; b; c" counts its records; a new-style cell says "(+N earlier)".
-    const auto plus = old.rfind("(+");
-    if (plus != std::string::npos) earlier = std::strtol(old.c_str() + plus + 2, nullptr, 10);
-    for (std::size_t at = old.find("recheck "); at != std::string::npos; at = old.find("recheck ", at + 1))
-      ++earlier;
-  }
-  char text[512];
-  std::snprintf(text, sizeof text, record.c_str(), r[ccode].c_str());
-  r[cchecked] = std::string(text) + (earlier ? " (+" + std::to_string(earlier) + " earlier)" : "");
+  r[cchecked] = checked_cell("recheck " + today() + " of code " + r[ccode] + tail, recheck_count(r[cchecked]));
   r[ccode] = code_;
   r.back() = row_seal(r);
 }
@@ -425,17 +425,14 @@ void LevelCache::finish() {
     // agreement with rows that the current code made itself proves nothing about older rows.
     std::size_t restamped = 0;
     if (agree) {
-      const std::string record = "recheck " + today() + " of code %s: " +
-                                 std::to_string(units.size()) + " units recomputed, max rel diff " + diff;
+      const std::string tail = ": " + std::to_string(units.size()) + " units recomputed, max rel diff " + diff;
       for (auto& r : table_.rows)
-        if (r[ccode] != code_ && old_codes.count(r[ccode])) restamp(r, record), ++restamped;
+        if (r[ccode] != code_ && old_codes.count(r[ccode])) restamp(r, tail), ++restamped;
       if (restamped) {
         // The whole chain of re-checks lives in a log beside the file, not in every row.
         std::ofstream log(fs::path(path_).parent_path() / "rechecks.log", std::ios::app);
-        char line[512];
-        std::snprintf(line, sizeof line, record.c_str(), codes.c_str());
-        log << fs::path(path_).filename().string() << "\t" << line << " -> " << code_ << "\t"
-            << restamped << " rows\n";
+        log << fs::path(path_).filename().string() << "\trecheck " << today() << " of code " << codes
+            << tail << " -> " << code_ << "\t" << restamped << " rows\n";
       }
     }
     add_provenance(table_);

@@ -53,6 +53,11 @@ const std::vector<std::string>& row_provenance_columns();
 // `seal` (the study's cells, code, made_on), each followed by a tab.  `row` holds all the
 // columns of row_provenance_columns() (the seal cell's content is ignored).
 std::string row_seal(const std::vector<std::string>& row);
+// The re-checks a row's `checked` cell stands for: each "recheck …" record it holds (an older
+// chain "a; b; c") plus the count it carries as "(+N earlier)"; 0 for "computed".
+std::size_t recheck_count(const std::string& checked);
+// A `checked` cell: the last re-check's record and, if any, the count of earlier ones.
+std::string checked_cell(const std::string& last, std::size_t earlier);
 // A text with its invisible characters made visible (\r, \t, \xEF…), for messages.
 std::string escaped(const std::string& s);
 // Columns that are measurements of the run, not of the numerics (compared never): names
@@ -106,7 +111,8 @@ class LevelCache {
   void load(const std::vector<std::pair<std::string, std::string>>& params);
   // A mismatch of the whole file: refused (InputError), or its rows dropped when replacing.
   void refuse_file(const std::string& problem, std::size_t rows, bool replace);
-  void restamp(std::vector<std::string>& row, const std::string& record) const;
+  // `tail`: what the re-check did (": N units recomputed, max rel diff D").
+  void restamp(std::vector<std::string>& row, const std::string& tail) const;
 
   std::string path_;
   TsvTable table_;
@@ -119,7 +125,6 @@ class LevelCache {
   mutable std::vector<std::vector<std::string>> missing_;  // census: units the file lacks
   std::set<std::vector<std::string>> started_;  // units added by this run
   std::vector<std::vector<std::string>> fresh_;  // verify/recheck: the recomputed rows
-  bool params_match_ = false;
   bool writer_ = true;
 };
 
