@@ -1,26 +1,34 @@
 #!/usr/bin/env bash
 # The heat tables' set-up readings at the documents' rate levels, into the result store, in
 # the background (nice 19, resumable: a finished unit is never recomputed).  One line of the
-# queue below per (table, reading, θ subset, levels); the reading's store file is named by
-# tables/store_lib.sh's heat_file.  The program is a frozen copy of the build's thesis_heat
-# (BIN), so that rebuilding the working tree meanwhile does not change the code that writes.
+# queue per run; the store files are named by the reading (thesis_heat's {reading} suffix,
+# the names tables/store_lib.sh's heat_file reads).  The program is a frozen copy of the
+# build's thesis_heat (BIN), so that rebuilding the working tree meanwhile does not change the
+# code that writes.
 #
 # usage: bench/run_heat_readings.sh BIN QUEUE_FILE [LOG]
-#   QUEUE_FILE lines: TABLE READING THETAS LEVELS   e.g.  4.6 h15_cell_exact 0 5,6,7,8,9
-#   READING: h10|h15, then optional _cell (V_i = dx^2) and _exact (dt = dt0).
+#   QUEUE_FILE lines, either one reading:
+#     TABLE READING THETAS LEVELS                    e.g.  4.6 h15_cell_exact 0 5,6,7,8,9
+#   READING: h10|h15, then optional _cell (V_i = dx^2) and _exact (dt = dt0); or a reading
+#   matrix, every combination in one run (the series of one Laplacian advance together):
+#     TABLE H_RULES VOLUMES DT_RULES THETAS LEVELS   e.g.  4.5 h15 lattice,cell fit,exact 0,0.5,1 8
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 bin=$1 queue=$2 log=${3:-/dev/stderr}
 store=results/paper
-. tables/store_lib.sh
-while read -r table reading thetas levels; do
+while read -r table a b c d e; do
   case $table in ''|'#'*) continue ;; esac
-  args=(--table "$table" --h-rule "${reading%%_*}" --thetas "$thetas" --levels "$levels")
-  case $reading in *_cell*) args+=(--volumes cell) ;; esac
-  case $reading in *_exact*) args+=(--dt-rule exact) ;; esac
-  file=$(heat_file "$store" "${table/./_}" "$reading") || exit 2
-  echo "== $(date -u +%FT%TZ) $table $reading theta $thetas levels $levels -> $file" >>"$log"
-  nice -n 19 "$bin" "${args[@]}" --profile paper --out "$file" >>"$log" 2>&1 ||
+  if [ -n "$e" ]; then  # the matrix form
+    h_rules=$a volumes=$b dt_rules=$c thetas=$d levels=$e
+  else
+    reading=$a thetas=$b levels=$c h_rules=${a%%_*} volumes=lattice dt_rules=fit
+    case $reading in *_cell*) volumes=cell ;; esac
+    case $reading in *_exact*) dt_rules=exact ;; esac
+  fi
+  out="$store/thesis_table${table/./_}{reading}.tsv"
+  echo "== $(date -u +%FT%TZ) $table h $h_rules volumes $volumes dt $dt_rules theta $thetas levels $levels" >>"$log"
+  nice -n 19 "$bin" --table "$table" --h-rule "$h_rules" --volumes "$volumes" --dt-rule "$dt_rules" \
+    --thetas "$thetas" --levels "$levels" --profile paper --out "$out" >>"$log" 2>&1 ||
     echo "   FAILED (exit $?)" >>"$log"
 done <"$queue"
 echo "== $(date -u +%FT%TZ) queue done" >>"$log"

@@ -29,23 +29,18 @@
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/operators/norms.hpp"
+#include "gpm/studies/heat_tables.hpp"
 
 using namespace gpm;
 
 namespace {
 
-// One reading of the set-up: its three details, as printed or not, and its store file.
-struct Reading {
-  std::string h_rule, volumes, dt_rule;
-  std::string name() const {
-    return h_rule + (volumes == "cell" ? "_cell" : "") + (dt_rule == "exact" ? "_exact" : "");
-  }
-  // The store file's name, as tables/store_lib.sh's heat_file writes it.
-  std::string file(const std::string& table) const {
-    return "thesis_table" + table + (h_rule == "h15" ? "_h15" : "") + (dt_rule == "exact" ? "_dtexact" : "") +
-           (volumes == "cell" ? "_cellvol" : "") + ".tsv";
-  }
-};
+// One reading of the set-up (h rule, volumes, time step): HeatReading (heat_tables.hpp),
+// whose file_suffix() names its store file.
+using Reading = HeatReading;
+std::string reading_file(const Reading& r, const std::string& table) {
+  return "thesis_table" + table + r.file_suffix() + ".tsv";
+}
 
 // The details in the order they are decided, each with its printed value first.
 const std::vector<std::pair<std::string, std::vector<std::string>>> kDetails = {
@@ -93,10 +88,8 @@ int body(int argc, char** argv) {
   if (published.empty()) throw InputError(a.str("published") + ": no theta = 0 rate");
 
   // --- Every reading: its θ = 0 rates and distance. -----------------------------------------
-  std::vector<Reading> readings;
-  for (auto& h : kDetails[0].second)
-    for (auto& v : kDetails[1].second)
-      for (auto& d : kDetails[2].second) readings.push_back({h, v, d});
+  const std::vector<Reading> readings =
+      heat_reading_matrix(kDetails[0].second, kDetails[1].second, kDetails[2].second);
   TsvTable t;
   t.set("program", "setup_identification");
   t.set("rule", "paper/04-setup-rule.md: details decided in the order h_rule, volumes, dt_rule; a value "
@@ -111,8 +104,8 @@ int body(int argc, char** argv) {
   std::map<std::string, double> distance;
   std::vector<std::string> incomplete;  // readings without a θ = 0 rate for some weight
   for (const Reading& r : readings) {
-    const std::string path = store + "/" + r.file("4_6");
-    std::vector<std::string> row = {r.name(), r.h_rule, r.volumes, r.dt_rule, r.file("4_6")};
+    const std::string path = store + "/" + reading_file(r, "4_6");
+    std::vector<std::string> row = {r.name(), r.h_rule, r.volumes, r.dt_rule, reading_file(r, "4_6")};
     double sum = 0;
     const bool present = std::filesystem::exists(path);
     const TsvTable data = present ? TsvTable::load(path) : TsvTable{};

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <map>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -70,18 +71,45 @@ void write_rates_input(LevelCache& cache, const std::string& path) {
   t.save(path);
 }
 
+// A path with "{reading}" replaced by the reading's store suffix.
+std::string reading_path(const std::string& pattern, const HeatReading& r) {
+  std::string s = pattern;
+  const std::string mark = "{reading}";
+  if (auto at = s.find(mark); at != std::string::npos) s.replace(at, mark.size(), r.file_suffix());
+  return s;
+}
+
+// The data file's header for one reading.
+std::vector<std::pair<std::string, std::string>> heat_params(const HeatTable& ts, const StudyRunner& run,
+                                                             const HeatSetting& hs, bool guarded,
+                                                             const HeatReading& r) {
+  const bool fit = r.dt_rule == "fit";
+  return {{"program", "thesis_heat"}, {"table", ts.table}, {"profile", profile_name(run.profile())},
+          {"seed", fmt(static_cast<long long>(run.seed()))}, {"kappa", fmt(kHeatKappa)}, {"T", fmt(kHeatT)},
+          {"dt_nominal", ts.dt_rule}, {"steps", fit ? "K = ceil(T/dt_nominal), dt = T/K"
+                              : "dt = dt_nominal, K = ceil(T/dt_nominal) (last step at K dt >= T)"},
+          {"tol", fmt(hs.tol)}, {"blowup", guarded ? fmt(hs.blowup_factor) : "off"},
+          {"h_rule", r.h_rule},
+          {"h", pde_h_formula(r.h_rule)}, {"volumes", pde_volumes_description(r.volumes)},
+          {"error", "(4.2): max_k ||u-U||_l2(Omega_H) / max_k ||u||_l2(Omega_H)"}};
+}
+
 int body(int argc, char** argv) {
   StudyRunner run("thesis_heat",
                   "Discrete heat problem with the theta-method (thesis §4.3): relative errors (4.2)\n"
-                  "per weight, theta and level for one time-step setting (Tables 4.5-4.7).",
+                  "per weight, theta and level for one time-step setting (Tables 4.5-4.7), under\n"
+                  "one reading of the set-up or several (comma lists: every combination, each to\n"
+                  "its own data file, the series of one Laplacian advanced together).",
                   "quick or paper (levels per table: heat_tables.hpp, gpm study --list)");
   Args& a = run.args();
   a.opt("table", "", "4.5 (dt = 0.0025h^2), 4.6 (dt = 0.5h^2) or 4.7 (dt = 0.5h) (required)")
-      .output("rates-input", "", "data file of the series that never blew up (for rate_table)")
+      .output("rates-input", "", "data file of the series that never blew up (for rate_table);\n"
+                                 "  with several readings, a pattern with {reading} as --out")
       .opt("dt-rule", "fit", "fit: dt = T/K, K = ceil(T/dt0) (the thesis' dt = T/K); exact: dt = dt0,\n"
-                             "  K = ceil(T/dt0) steps (last step at K dt0 >= T)")
-      .opt("h-rule", "h10", "h10: h = (2.6^4 2^-10 dx)^(1/4) as printed; h15: (2.6^4 2^-15 dx)^(1/4)")
-      .opt("volumes", "lattice", "lattice: V_i = |Omega_H|/N (thesis (A.10)); cell: V_i = dx^2\n"
+                             "  K = ceil(T/dt0) steps (last step at K dt0 >= T); or both: fit,exact")
+      .opt("h-rule", "h10", "h10: h = (2.6^4 2^-10 dx)^(1/4) as printed; h15: (2.6^4 2^-15 dx)^(1/4);\n"
+                            "  or both: h10,h15")
+      .opt("volumes", "lattice", "lattice: V_i = |Omega_H|/N (thesis (A.10)); cell: V_i = dx^2; or both\n"
                                  "  (a diagnostic: (A.10) differs from dx^2 by 0.8%, 0.13%, -0.2% at 2^-7..2^-9)")
       .opt("tol", "1e-10", "CG relative residual per implicit step")
       .opt("blowup", "off", "off (default): run to T, stopping only at a non-finite value, so an\n"
@@ -92,18 +120,14 @@ int body(int argc, char** argv) {
       .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB)");
   run.parse(argc, argv);
   const HeatTable& ts = heat_table(a.str("table"));
-  const std::string h_rule = a.str("h-rule");
-  pde_h(h_rule, 1.0);  // InputError naming the rule unless h10 or h15
-  const std::string volumes = a.str("volumes");
-  const std::string volumes_text = pde_volumes_description(volumes);  // InputError if unknown
+  // The readings: every combination of the listed choices (InputError naming a bad one).
+  const std::vector<std::string> h_rules = a.list("h-rule"), volume_choices = a.list("volumes");
+  const std::vector<HeatReading> readings =
+      heat_reading_matrix(h_rules, volume_choices, a.list("dt-rule"));
   HeatSetting hs;
   hs.kappa = kHeatKappa;
   hs.T = kHeatT;
   hs.tol = a.tolerance("tol");
-  const std::string dt_rule = a.str("dt-rule");
-  if (dt_rule != "fit" && dt_rule != "exact")
-    throw InputError("--dt-rule: '" + dt_rule + "' is not fit or exact");
-  hs.fit_T = dt_rule == "fit";
   // The documents' error (4.2) is defined however large U grows: by default no guard, and a
   // run stops early only where a value is no longer finite (reported as a blow-up).
   const bool guarded = a.str("blowup") != "off";
@@ -120,75 +144,125 @@ int body(int argc, char** argv) {
   }
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
-  const std::vector<int> levels = run.levels(ts.quick, heat_levels(ts, true, h_rule));
-  require_pde_levels_fit_memory(levels, {h_rule}, storage, max_bytes);
-  const std::string rates_input = a.str("rates-input");
+  // Levels: --levels, else the profile's (with the paper profile's trim of the h rule; with
+  // both h rules, the union: a level trimmed for h15 is still run for h10).
+  std::vector<int> levels;
+  for (auto& hr : h_rules)
+    for (int k : run.levels(ts.quick, heat_levels(ts, true, hr)))
+      if (std::find(levels.begin(), levels.end(), k) == levels.end()) levels.push_back(k);
+  std::sort(levels.begin(), levels.end());
+  auto runs_level = [&](const std::string& hr, int k) {
+    if (run.levels_given()) return true;
+    const auto own = run.levels(ts.quick, heat_levels(ts, true, hr));
+    return std::find(own.begin(), own.end(), k) != own.end();
+  };
+  require_pde_levels_fit_memory(levels, h_rules, storage, max_bytes);
+  const std::string out = run.out(), rates_input = a.str("rates-input");
+  if (readings.size() > 1 && out.find("{reading}") == std::string::npos)
+    throw InputError("--out '" + out + "' names one file for " + std::to_string(readings.size()) +
+                     " readings; put {reading} where the reading's suffix goes (e.g. "
+                     "results/paper/thesis_table4_6{reading}.tsv)");
+  if (readings.size() > 1 && !rates_input.empty() && rates_input.find("{reading}") == std::string::npos)
+    throw InputError("--rates-input '" + rates_input + "' needs {reading} too, for " +
+                     std::to_string(readings.size()) + " readings");
 
-  // --- The data file: one row per (weight, θ, level). ---------------------------------------
-  LevelCache& cache = run.open(
-      {{"program", "thesis_heat"}, {"table", ts.table}, {"profile", profile_name(run.profile())},
-       {"seed", fmt(static_cast<long long>(run.seed()))}, {"kappa", fmt(kHeatKappa)}, {"T", fmt(kHeatT)},
-       {"dt_nominal", ts.dt_rule}, {"steps", hs.fit_T ? "K = ceil(T/dt_nominal), dt = T/K"
-                           : "dt = dt_nominal, K = ceil(T/dt_nominal) (last step at K dt >= T)"},
-       {"tol", fmt(hs.tol)}, {"blowup", guarded ? fmt(hs.blowup_factor) : "off"},
-       {"h_rule", h_rule},
-       {"h", pde_h_formula(h_rule)}, {"volumes", volumes_text},
-       {"error", "(4.2): max_k ||u-U||_l2(Omega_H) / max_k ||u||_l2(Omega_H)"}},
-      heat_columns(), 3);
+  // --- The data files: one per reading, one row per (weight, θ, level). ----------------------
+  std::vector<StudyRunner::DataFile> files;
+  for (auto& r : readings) files.push_back({reading_path(out, r), heat_params(ts, run, hs, guarded, r)});
+  const std::vector<LevelCache*> caches = run.open_files(files, heat_columns(), 3);
   const Domain dom;
   for (int k : levels) {
-    // The level: particles, volumes, h and the nominal step Δt₀ of the table.
+    // The level: particles and the volumes of each choice.
     const double dx = std::ldexp(1.0, -k);
-    const double h = pde_h(h_rule, dx);
-    const double dt0 = ts.c * std::pow(h, ts.p);
     const Particles p = jittered_grid(dx, run.seed());
-    const auto V = pde_volumes(volumes, p, dx, dom);
-    bool checked = false;
-    for (const auto& wname : pde_weights()) {
-      // The θ of this weight still to do; on a cluster they go to one rank together (they
-      // share this weight's Laplacian).
-      std::vector<double> todo;
-      double work = 0;
-      for (double th : thetas)
-        if (!cache.has({wname, fmt(th), fmt(k)}))
-          todo.push_back(th), work += heat_unit_work(dx, h, dt0, hs.T, th);
-      if (todo.empty() || !run.claim_group(static_cast<int>(todo.size()), work)) continue;
-      if (!checked) require_h_connectivity(p, h), checked = true;
-      // One Laplacian per (level, weight), reused by every θ and every step; the θ advance
-      // together, one block product per step for all of them (each series' numbers as if
-      // run alone), K steps of the θ-method from the exact initial value.
-      const DiscreteLaplacian L(p, V, weight(wname), h, storage, max_bytes);
-      std::vector<HeatSetting> settings;
-      for (double th : todo) {
-        hs.theta = th;
-        hs.dt_nominal = dt0;
-        settings.push_back(hs);
-      }
-      const std::vector<HeatResult> results = solve_heat_block(p, L, settings);
-      for (std::size_t u = 0; u < todo.size(); ++u) {
-        const double th = todo[u];
-        const HeatResult& r = results[u];
-        const std::string na = "NA";
-        run.add({wname, fmt(th), fmt(k), fmt(dx), fmt(h), fmt(p.size()), fmt(L.n_unknowns()),
-                   L.assembled() ? "assembled" : "matrix_free", fmt(static_cast<long long>(r.K)), fmt(r.dt),
-                   r.blew_up ? na : fmt(r.rel_error), r.blew_up ? na : fmt(r.rel_error_max),
-                   fmt(r.growth_max), r.blew_up ? "yes" : "no", r.blew_up ? fmt(static_cast<long long>(r.blowup_step)) : na,
-                   r.blew_up ? fmt(r.growth) : na, r.blew_up ? fmt(r.amplification) : na,
-                   fmt(static_cast<long long>(r.steps_done)), fmt(r.mean_cg_iterations), fmt(r.max_rel_residual),
-                   fmt(r.seconds_per_step), fmt(r.seconds)});
-        const std::string head = line_printf("%s: %-28s theta=%-3g dx=2^-%d h=%.4f K=%ld ",
-                                             ts.table.c_str(), wname.c_str(), th, k, h, r.K);
-        run.unit_done(0, head + (r.blew_up
-            ? line_printf("BLOW-UP at step %ld: ||U||/||U0|| = %.3g (x%.3g in the last step)  %.2f s",
-                          r.blowup_step, r.growth, r.amplification, r.seconds)
-            : line_printf("err=%.4e CG %.1f it/step  %.3g s/step  %.2f s", r.rel_error,
-                          r.mean_cg_iterations, r.seconds_per_step, r.seconds)));
-        if (cache.writes() && !rates_input.empty()) write_rates_input(cache, rates_input);
+    std::map<std::string, std::vector<double>> V;
+    for (auto& vc : volume_choices) V[vc] = pde_volumes(vc, p, dx, dom);
+    for (const auto& h_rule : h_rules) {
+      if (!runs_level(h_rule, k)) continue;
+      // h and the nominal step Δt₀ of the table.
+      const double h = pde_h(h_rule, dx);
+      const double dt0 = ts.c * std::pow(h, ts.p);
+      bool checked = false;
+      for (const auto& wname : pde_weights()) {
+        // The series still to do of this weight: (reading, θ), every reading of this h rule.
+        // They share one Laplacian (on a cluster they go to one rank together).
+        struct Todo {
+          std::size_t reading;
+          double theta;
+        };
+        std::vector<Todo> todo;
+        double work = 0;
+        for (std::size_t r = 0; r < readings.size(); ++r) {
+          if (readings[r].h_rule != h_rule) continue;
+          for (double th : thetas)
+            if (!caches[r]->has({wname, fmt(th), fmt(k)}))
+              todo.push_back({r, th}), work += heat_unit_work(dx, h, dt0, hs.T, th);
+        }
+        if (todo.empty() || !run.claim_group(static_cast<int>(todo.size()), work)) continue;
+        if (!checked) require_h_connectivity(p, h), checked = true;
+        // One Laplacian per (level, h rule, weight), built with the first series' volumes;
+        // a series of other volumes runs on it through volumes_for (the stored entries do not
+        // depend on them) where it is assembled as the half, else on a Laplacian of its own.
+        // Every series' numbers are those it gives alone.  (The readings' order keeps each
+        // volumes choice's series together, so the units finish in the order claimed.)
+        const WeightFunction& w = weight(wname);
+        std::vector<bool> done(todo.size(), false);
+        while (std::find(done.begin(), done.end(), false) != done.end()) {
+          const std::string& own =
+              readings[todo[std::find(done.begin(), done.end(), false) - done.begin()].reading].volumes;
+          const DiscreteLaplacian L(p, V[own], w, h, storage, max_bytes);
+          const bool shares = L.assembled() && storage != LaplacianStorage::full;
+          std::map<std::string, DiscreteLaplacian::Volumes> other;
+          std::vector<std::size_t> here;
+          std::vector<HeatSetting> settings;
+          for (std::size_t u = 0; u < todo.size(); ++u) {
+            const HeatReading& r = readings[todo[u].reading];
+            if (done[u] || (r.volumes != own && !shares)) continue;
+            HeatSetting s = hs;
+            s.theta = todo[u].theta;
+            s.dt_nominal = dt0;
+            s.fit_T = r.dt_rule == "fit";
+            if (r.volumes != own) {
+              if (!other.count(r.volumes)) other.emplace(r.volumes, L.volumes_for(p, w, V[r.volumes]));
+              s.volumes = &other.at(r.volumes);
+            }
+            here.push_back(u), settings.push_back(s), done[u] = true;
+          }
+          const std::vector<HeatResult> rs = solve_heat_block(p, L, settings);
+          for (std::size_t i = 0; i < here.size(); ++i) {
+            const Todo& t = todo[here[i]];
+            const HeatResult& res = rs[i];
+            const HeatReading& r = readings[t.reading];
+            const std::string na = "NA";
+            run.add(t.reading,
+                    {wname, fmt(t.theta), fmt(k), fmt(dx), fmt(h), fmt(p.size()), fmt(L.n_unknowns()),
+                     L.assembled() ? "assembled" : "matrix_free", fmt(static_cast<long long>(res.K)), fmt(res.dt),
+                     res.blew_up ? na : fmt(res.rel_error), res.blew_up ? na : fmt(res.rel_error_max),
+                     fmt(res.growth_max), res.blew_up ? "yes" : "no",
+                     res.blew_up ? fmt(static_cast<long long>(res.blowup_step)) : na,
+                     res.blew_up ? fmt(res.growth) : na, res.blew_up ? fmt(res.amplification) : na,
+                     fmt(static_cast<long long>(res.steps_done)), fmt(res.mean_cg_iterations),
+                     fmt(res.max_rel_residual), fmt(res.seconds_per_step), fmt(res.seconds)});
+            const std::string head = line_printf(
+                "%s%s%s: %-28s theta=%-3g dx=2^-%d h=%.4f K=%ld ", ts.table.c_str(),
+                readings.size() > 1 ? " " : "", readings.size() > 1 ? r.name().c_str() : "",
+                wname.c_str(), t.theta, k, h, res.K);
+            run.unit_done(0, head + (res.blew_up
+                ? line_printf("BLOW-UP at step %ld: ||U||/||U0|| = %.3g (x%.3g in the last step)  %.2f s",
+                              res.blowup_step, res.growth, res.amplification, res.seconds)
+                : line_printf("err=%.4e CG %.1f it/step  %.3g s/step  %.2f s", res.rel_error,
+                              res.mean_cg_iterations, res.seconds_per_step, res.seconds)));
+            if (caches[t.reading]->writes() && !rates_input.empty())
+              write_rates_input(*caches[t.reading], reading_path(rates_input, r));
+          }
+        }
       }
     }
   }
   if (!run.finish()) return 0;
-  if (!rates_input.empty()) write_rates_input(cache, rates_input);
+  if (!rates_input.empty())
+    for (std::size_t r = 0; r < readings.size(); ++r)
+      write_rates_input(*caches[r], reading_path(rates_input, readings[r]));
   return 0;
 }
 

@@ -97,3 +97,51 @@ TEST_CASE("heat: extrapolated CG starts save iterations, same errors", "[heat][b
     CHECK(std::fabs(r[i + 1].rel_error - r[i].rel_error) <= 1e-6 * r[i].rel_error);
   }
 }
+
+// The reading matrix of the heat tables on one Laplacian: a series with other volumes
+// (volumes_for: V_i = Δx² beside (A.10)'s, or uneven ones) advanced in the same block as the
+// Laplacian's own equals a run on a Laplacian assembled with those volumes, bit for bit —
+// the boundary block c = M_ΩB ŝ and the norms included.
+TEST_CASE("heat series with other volumes on one Laplacian equal their own Laplacian's",
+          "[heat][block]") {
+  const int level = 5;
+  const double dx = std::ldexp(1.0, -level), h = pde_h("h15", dx);
+  const Particles p = jittered_grid(dx, 1);
+  const WeightFunction& w = weight("quartic_polynomial");
+  const std::vector<double> lattice(p.size(), Domain{}.area_H() / static_cast<double>(p.size()));
+  const std::vector<double> cell(p.size(), dx * dx);
+  std::vector<double> uneven;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    uneven.push_back(dx * dx * (0.9 + 0.2 * std::fabs(std::sin(3.0 * static_cast<double>(i)))));
+  const DiscreteLaplacian L(p, lattice, w, h, LaplacianStorage::assembled);
+  const DiscreteLaplacian::Volumes vc = L.volumes_for(p, w, cell), vu = L.volumes_for(p, w, uneven);
+  std::vector<HeatSetting> settings;
+  for (const DiscreteLaplacian::Volumes* v : {static_cast<const DiscreteLaplacian::Volumes*>(nullptr), &vc, &vu})
+    for (double th : {0.0, 0.5, 1.0})
+      for (bool fit : {true, false}) {
+        HeatSetting s;
+        s.theta = th;
+        s.dt_nominal = 0.5 * h * h;
+        s.fit_T = fit;
+        s.volumes = v;
+        settings.push_back(s);
+      }
+  const std::vector<HeatResult> together = solve_heat_block(p, L, settings);
+  const DiscreteLaplacian Lc(p, cell, w, h, LaplacianStorage::assembled);
+  const DiscreteLaplacian Lu(p, uneven, w, h, LaplacianStorage::assembled);
+  for (std::size_t i = 0; i < settings.size(); ++i) {
+    HeatSetting alone = settings[i];
+    alone.volumes = nullptr;
+    const DiscreteLaplacian& own = i < 6 ? L : i < 12 ? Lc : Lu;
+    INFO("series " << i << ", theta " << settings[i].theta);
+    check_same(together[i], solve_heat(p, own, alone));
+  }
+  // The volumes matter: (A.10) and Δx² differ by 1+δ, and so do the errors.
+  CHECK(together[2].rel_error != together[8].rel_error);
+  // The boundary block with other volumes, alone: equal to the other Laplacian's.
+  Eigen::VectorXd v(static_cast<Eigen::Index>(p.size())), a, b;
+  for (std::size_t i = 0; i < p.size(); ++i) v[static_cast<Eigen::Index>(i)] = std::cos(7.0 * p.x[i]) + p.y[i];
+  L.apply_full(v, a, &vu);
+  Lu.apply_full(v, b);
+  CHECK(a == b);
+}

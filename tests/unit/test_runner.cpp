@@ -2,6 +2,7 @@
 // a study of two units written, reused by a second run and checked by --verify.
 #include <catch2/catch.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -84,4 +85,46 @@ TEST_CASE("runner: units written with wall time and memory, reused, verified", "
   CHECK(tab.get("peak_rss_mib").has_value());
   CHECK(run_study(f) == 0);           // every unit reused
   CHECK(run_study(f, "--verify") == 2);  // verify recomputes, and agrees (no throw)
+}
+
+// Several data files from one run (thesis_heat's readings): each file cached, written and
+// verified as open()'s one; a unit of one file missing recomputes that file's unit only; a
+// difference in any file fails --verify, after every file was compared.
+namespace {
+int run_two(const std::string& a, const std::string& b, const std::string& mode_flag = "",
+            double b_value = 2) {
+  StudyRunner run("runner_test", "test study", "quick or paper");
+  std::vector<std::string> words = {"runner_test", "--out", a};
+  if (!mode_flag.empty()) words.push_back(mode_flag);
+  parse(run, words);
+  const std::vector<LevelCache*> c = run.open_files(
+      {{a, {{"program", "runner_test"}, {"variant", "a"}}}, {b, {{"program", "runner_test"}, {"variant", "b"}}}},
+      {"level", "rel_error", "time_s"}, 1);
+  int computed = 0;
+  for (int k : run.levels({5, 6}, {5, 6, 7}))
+    for (std::size_t f = 0; f < 2; ++f) {
+      if (c[f]->has({fmt(k)})) continue;
+      run.add(f, {fmt(k), fmt((f == 0 ? 1.0 : b_value) / k), "0.5"});
+      run.unit_done(1, "level " + fmt(k));
+      ++computed;
+    }
+  run.finish();
+  return computed;
+}
+}  // namespace
+
+TEST_CASE("runner: one run, several data files", "[unit][runner]") {
+  TempDir t("gpm_runner_");
+  const std::string a = t.file("a.tsv"), b = t.file("b.tsv");
+  CHECK(run_two(a, b) == 4);
+  const TsvTable ta = TsvTable::load(a), tb = TsvTable::load(b);
+  REQUIRE(ta.rows.size() == 2);
+  REQUIRE(tb.rows.size() == 2);
+  CHECK(ta.get("variant") == std::optional<std::string>("a"));
+  CHECK(tb.get("variant") == std::optional<std::string>("b"));
+  CHECK(tb.text(1, "rel_error") == fmt(2.0 / 6));
+  CHECK(run_two(a, b) == 0);             // every unit of both files reused
+  CHECK(run_two(a, b, "--verify") == 4);  // both verified, agree
+  CHECK_THROWS_AS(run_two(a, b, "--verify", 3), StoreMismatch);  // b differs
+  CHECK_THROWS_AS(run_two(a, a), InputError);                     // one file named twice
 }

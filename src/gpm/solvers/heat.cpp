@@ -44,6 +44,7 @@ class HeatSeries {
   bool needs_product(long k) const { return is_implicit() || k + 1 < res_.K; }
   Eigen::VectorXd& U() { return U_; }
   Eigen::VectorXd& MU() { return MU_; }
+  const DiscreteLaplacian::Volumes* volumes() const { return s_.volumes; }
   // Step k up to the solve: the right-hand side; explicit, U^{k+1} itself; implicit, the CG
   // started from U^k (warm start) with the residual from MU = M U^k.
   void begin_step(long k);
@@ -88,7 +89,7 @@ HeatSeries::HeatSeries(const Particles& p, const DiscreteLaplacian& L, const Hea
   kdt_ = s.kappa * res_.dt, th_ = s.theta;
   lambda_ = 2 * s.kappa * std::numbers::pi * std::numbers::pi;
   const auto& omega = L.omega();
-  const auto& V = L.volumes();
+  const auto& V = s.volumes ? s.volumes->all : L.volumes();
   const Eigen::Index n = static_cast<Eigen::Index>(omega.size());
 
   // The spatial profile s(x) = ũ(x, 0) at every particle, its boundary part ŝ and c = (M ŝ)_Ω.
@@ -101,7 +102,7 @@ HeatSeries::HeatSeries(const Particles& p, const DiscreteLaplacian& L, const Hea
     all_l2sq += V[i] * prof[i] * prof[i];
     if (!p.in_omega[i]) out_l2sq_ += V[i] * prof[i] * prof[i];
   }
-  L.apply_full(shat, c_);
+  L.apply_full(shat, c_, s.volumes);
   d_.resize(n), sk_.resize(n);
   for (Eigen::Index k = 0; k < n; ++k) d_[k] = V[omega[k]], sk_[k] = prof[omega[k]];
   for (Eigen::Index k = 0; k < n; ++k) max_exact_ = std::max(max_exact_, std::fabs(sk_[k]));
@@ -182,13 +183,18 @@ HeatResult HeatSeries::finish(double seconds) {
   return res_;
 }
 
-// out_i = M in_i for the listed vectors, in one block product.
+// out_i = M_i in_i for the listed vectors, in one block product; M_i is the Laplacian of
+// volumes vol[i] (nullptr: L's own).
 void block_product(const DiscreteLaplacian& L, const std::vector<const Eigen::VectorXd*>& in,
-                   const std::vector<Eigen::VectorXd*>& out, RowBlock& X, RowBlock& Y) {
+                   const std::vector<Eigen::VectorXd*>& out,
+                   const std::vector<const DiscreteLaplacian::Volumes*>& vol, RowBlock& X,
+                   RowBlock& Y) {
   if (in.empty()) return;
   X.resize(static_cast<Eigen::Index>(L.n_unknowns()), static_cast<Eigen::Index>(in.size()));
   for (std::size_t c = 0; c < in.size(); ++c) X.col(static_cast<Eigen::Index>(c)) = *in[c];
-  L.apply_block(X, Y);
+  // Only where some series has other volumes (the matrix-free storage has none).
+  const bool other = std::any_of(vol.begin(), vol.end(), [](auto* v) { return v != nullptr; });
+  L.apply_block(X, Y, other ? vol : std::vector<const DiscreteLaplacian::Volumes*>{});
   for (std::size_t c = 0; c < out.size(); ++c) *out[c] = Y.col(static_cast<Eigen::Index>(c));
 }
 
@@ -210,14 +216,15 @@ std::vector<HeatResult> solve_heat_block(const Particles& p, const DiscreteLapla
   RowBlock X, Y;
   std::vector<const Eigen::VectorXd*> in;
   std::vector<Eigen::VectorXd*> out;
+  std::vector<const DiscreteLaplacian::Volumes*> vol;
   // M U for the listed series, one product for all of them.
   auto update_MU = [&](const std::vector<HeatSeries*>& list) {
-    in.clear(), out.clear();
+    in.clear(), out.clear(), vol.clear();
     for (HeatSeries* h : list) {
-      in.push_back(&h->U()), out.push_back(&h->MU());
+      in.push_back(&h->U()), out.push_back(&h->MU()), vol.push_back(h->volumes());
       h->count_product();
     }
-    block_product(L, in, out, X, Y);
+    block_product(L, in, out, vol, X, Y);
   };
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<HeatSeries*> running, solving, next;
@@ -237,16 +244,17 @@ std::vector<HeatResult> solve_heat_block(const Particles& p, const DiscreteLapla
     // The CG of the implicit series in lockstep: one block product per iteration for the
     // series not yet converged; a converged series keeps its iterate.
     for (;;) {
-      in.clear(), out.clear();
+      in.clear(), out.clear(), vol.clear();
       std::vector<HeatSeries*> pending;
       for (HeatSeries* h : solving)
         if (!h->cg().done()) pending.push_back(h);
       if (pending.empty()) break;
       for (std::size_t i = 0; i < pending.size(); ++i) {
         in.push_back(&pending[i]->cg().direction()), out.push_back(&Mp[i]);
+        vol.push_back(pending[i]->volumes());
         pending[i]->count_product();
       }
-      block_product(L, in, out, X, Y);
+      block_product(L, in, out, vol, X, Y);
       for (std::size_t i = 0; i < pending.size(); ++i) {
         pending[i]->system_product(pending[i]->cg().direction(), Mp[i], Ap[i]);
         pending[i]->cg().update(pending[i]->U(), Ap[i]);

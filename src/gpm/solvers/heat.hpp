@@ -46,6 +46,11 @@ struct HeatSetting {
   // step on) instead of U^k.  Off by default: the stored results were made from U^k, and a
   // different start gives the same solution only to the CG tolerance.
   bool extrapolate = false;
+  // Other volumes on the Laplacian's particles (DiscreteLaplacian::volumes_for: V_i = Δx²
+  // beside (A.10)'s on one assembled Laplacian, one reading more per series, not one
+  // Laplacian more); nullptr: the Laplacian's own.  The series' numbers equal those of a
+  // Laplacian built with these volumes, bit for bit.
+  const DiscreteLaplacian::Volumes* volumes = nullptr;
 };
 
 struct HeatResult {

@@ -284,23 +284,37 @@ void DiscreteLaplacian::plan_blocks() {
 }
 
 Eigen::VectorXd DiscreteLaplacian::diagonal_with(const Particles& p, const WeightFunction& w,
-                                                 const std::vector<double>& V,
-                                                 double cell) const {
+                                                 const std::vector<double>& V, double cell,
+                                                 std::vector<double>* boundary) const {
   const CellList cl(p.x, p.y, cell, Domain{}.lo(), Domain{}.lo());
   const auto& index = cl.index();
   const RadialG G(w);
   const double scale = 2 * kD / (h_ * h_ * h_ * h_);
   const int64_t rows = static_cast<int64_t>(omega_.size());
   Eigen::VectorXd diag(rows);
-#pragma omp parallel for schedule(dynamic, 64)
-  for (int64_t k = 0; k < rows; ++k) {
-    const int32_t j = omega_[k];
-    double d = 0;
-    cl.for_each_neighbour(p.x[j], p.y[j], h_, [&](int32_t slot, double, double, double r2) {
-      const int32_t i = index[slot];
-      if (i != j) d = diagonal_term(d, scale * V[i], G(std::sqrt(r2) / h_));
-    });
-    diag[k] = d;
+  if (boundary) boundary->assign(b_col_.size(), 0.0);
+#pragma omp parallel
+  {
+    std::vector<std::pair<int32_t, double>> row_b;
+#pragma omp for schedule(dynamic, 64)
+    for (int64_t k = 0; k < rows; ++k) {
+      const int32_t j = omega_[k];
+      double d = 0;
+      row_b.clear();
+      cl.for_each_neighbour(p.x[j], p.y[j], h_, [&](int32_t slot, double, double, double r2) {
+        const int32_t i = index[slot];
+        if (i == j) return;
+        const double g = G(std::sqrt(r2) / h_);
+        d = diagonal_term(d, scale * V[i], g);
+        if (boundary && unknown_[i] < 0) row_b.emplace_back(i, scale * V[i] * g);  // as assemble()
+      });
+      diag[k] = d;
+      if (!boundary) continue;
+      // assemble() sorts the row's boundary entries by particle: the same order here.
+      std::sort(row_b.begin(), row_b.end());
+      int64_t o = b_ptr_[k];
+      for (auto& [i, c] : row_b) (*boundary)[static_cast<std::size_t>(o++)] = c;
+    }
   }
   return diag;
 }
@@ -317,7 +331,8 @@ DiscreteLaplacian::Volumes DiscreteLaplacian::volumes_for(const Particles& p,
   v.at_unknowns.resize(static_cast<Eigen::Index>(omega_.size()));
   for (std::size_t k = 0; k < omega_.size(); ++k)
     v.at_unknowns[static_cast<Eigen::Index>(k)] = V[omega_[k]];
-  v.diagonal = diagonal_with(p, w, V, h_ / 2);  // the cells of assemble()
+  v.diagonal = diagonal_with(p, w, V, h_ / 2, &v.boundary);  // the cells of assemble()
+  v.all = V;
   return v;
 }
 
@@ -632,6 +647,26 @@ void DiscreteLaplacian::apply_full(const Eigen::VectorXd& v, Eigen::VectorXd& y)
   const KernelResult r = kernel_->apply(omega_, std::vector<std::vector<double>>{field});
   const auto lap = r.laplacian(0, 0);
   for (int64_t k = 0; k < rows; ++k) y[k] = lap[k];
+}
+
+void DiscreteLaplacian::apply_full(const Eigen::VectorXd& v, Eigen::VectorXd& y,
+                                   const Volumes* other) const {
+  if (!other) return apply_full(v, y);
+  if (!assembled_ || full_storage_)
+    throw InputError("apply_full: other volumes need the assembled (half) storage");
+  if (v.size() != static_cast<Eigen::Index>(n_))
+    throw InputError("apply_full: vector of size " + std::to_string(v.size()) + ", expected " +
+                     std::to_string(n_));
+  // The Ω × Ω part as one column of apply_block with the other volumes (bit for bit that
+  // Laplacian's apply()), then its boundary columns, as apply_full sums them.
+  const int64_t rows = static_cast<int64_t>(omega_.size());
+  RowBlock X(rows, 1), Y;
+  for (int64_t k = 0; k < rows; ++k) X(k, 0) = v[omega_[k]];
+  apply_block(X, Y, {other});
+  y = Y.col(0);
+  for (int64_t k = 0; k < rows; ++k)
+    for (int64_t o = b_ptr_[k]; o < b_ptr_[k + 1]; ++o)
+      y[k] += other->boundary[static_cast<std::size_t>(o)] * v[b_col_[o]];
 }
 
 void DiscreteLaplacian::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {

@@ -107,9 +107,13 @@ class DiscreteLaplacian {
   // The parts of M_ΩΩ that depend on the volumes, for other volumes V' on the same
   // particles, weight and h (the stored K_kl do not): V' at the unknowns and the diagonal
   // of the Laplacian built with V', summed in the order of its assembly, so that a column
-  // multiplied with them equals that Laplacian's apply() bit for bit.  Assembled half only.
+  // multiplied with them equals that Laplacian's apply() bit for bit; the Ω × B block's
+  // values with V' (in the stored order) and V' itself, for apply_full and the norms of a
+  // solver that runs several volumes on one Laplacian (the heat readings).  Assembled half only.
   struct Volumes {
     Eigen::VectorXd at_unknowns, diagonal;
+    std::vector<double> boundary;  // the Ω × B entries with V', aligned with the stored ones
+    std::vector<double> all;       // V' at every particle
   };
   Volumes volumes_for(const Particles& p, const WeightFunction& w,
                       const std::vector<double>& V) const;
@@ -117,6 +121,9 @@ class DiscreteLaplacian {
   // this one's own); InputError unless assembled as the half.
   void apply_block(const RowBlock& X, RowBlock& Y,
                    const std::vector<const Volumes*>& per_column) const;
+  // apply_full for the Laplacian of other volumes (volumes_for), bit for bit as that
+  // Laplacian's apply_full; nullptr: this one's own.
+  void apply_full(const Eigen::VectorXd& v_full, Eigen::VectorXd& y, const Volumes* other) const;
   // The diagonal of M_ΩΩ: −2d Σ_{i≠j} V_i w_h/r² (negative for a positive weight).
   const Eigen::VectorXd& diagonal() const { return diag_; }
 
@@ -129,9 +136,11 @@ class DiscreteLaplacian {
   void assemble(const Particles& p, const WeightFunction& w);
   void assemble_full(const Particles& p, const WeightFunction& w);
   // The diagonal for volumes V, summed over the neighbours in the order of a cell list of
-  // cells `cell` wide (h/2: the assembly's order; h/4: the matrix-free one's).
+  // cells `cell` wide (h/2: the assembly's order; h/4: the matrix-free one's); with
+  // `boundary`, also the Ω × B entries for V in the stored order (assembled half only).
   Eigen::VectorXd diagonal_with(const Particles& p, const WeightFunction& w,
-                                const std::vector<double>& V, double cell) const;
+                                const std::vector<double>& V, double cell,
+                                std::vector<double>* boundary = nullptr) const;
   void plan_blocks();
   void apply_assembled(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
   template <int W>

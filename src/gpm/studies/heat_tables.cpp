@@ -33,6 +33,44 @@ std::vector<int> heat_levels(const HeatTable& t, bool paper, const std::string& 
   return lv;
 }
 
+std::string HeatReading::name() const {
+  return h_rule + (volumes == "cell" ? "_cell" : "") + (dt_rule == "exact" ? "_exact" : "");
+}
+
+std::string HeatReading::file_suffix() const {
+  return std::string(h_rule == "h15" ? "_h15" : "") + (dt_rule == "exact" ? "_dtexact" : "") +
+         (volumes == "cell" ? "_cellvol" : "");
+}
+
+std::vector<HeatReading> heat_reading_matrix(const std::vector<std::string>& h_rules,
+                                             const std::vector<std::string>& volumes,
+                                             const std::vector<std::string>& dt_rules) {
+  auto check = [](const std::vector<std::string>& given, const char* option,
+                  std::initializer_list<const char*> valid) {
+    if (given.empty()) throw InputError(std::string("--") + option + ": no choice given");
+    for (auto& g : given) {
+      bool ok = false;
+      for (const char* v : valid) ok = ok || g == v;
+      std::string names;
+      for (const char* v : valid) names += (names.empty() ? "" : ", ") + std::string(v);
+      if (!ok) throw InputError(std::string("--") + option + ": '" + g + "' is not one of " + names);
+    }
+  };
+  check(h_rules, "h-rule", {"h10", "h15"});
+  check(volumes, "volumes", {"lattice", "cell"});
+  check(dt_rules, "dt-rule", {"fit", "exact"});
+  std::vector<HeatReading> m;
+  for (auto& h : h_rules)
+    for (auto& v : volumes)
+      for (auto& d : dt_rules) {
+        HeatReading r{h, v, d};
+        for (auto& o : m)
+          if (o.name() == r.name()) throw InputError("reading " + r.name() + " given twice");
+        m.push_back(r);
+      }
+  return m;
+}
+
 const std::vector<std::string>& heat_columns() {
   static const std::vector<std::string> c = {
       "weight", "theta", "level", "dx", "h", "N", "N_omega", "storage", "K", "dt", "rel_error",

@@ -37,6 +37,24 @@ std::vector<int> heat_levels(const HeatTable& t, bool paper, const std::string& 
 
 constexpr double kHeatKappa = 0.5, kHeatT = 0.1;
 
+// One reading of the heat tables' set-up (paper/04-setup-rule.md): the h rule (h10 as
+// printed, h15), the volumes (lattice: (A.10)'s |Ω_H|/N as printed, cell: Δx²) and the time
+// step (fit: Δt = T/K as printed, exact: Δt = Δt₀).  The one map from a reading to its name
+// in the rate tables and to its store file (tables/store_lib.sh's heat_file mirrors it).
+struct HeatReading {
+  std::string h_rule = "h10", volumes = "lattice", dt_rule = "fit";
+  // h10, h15_cell, h10_exact, h15_cell_exact, …
+  std::string name() const;
+  // The store file's suffix after "thesis_table4_6": "" for the printed reading, else
+  // _h15, _dtexact, _cellvol in that order.
+  std::string file_suffix() const;
+};
+// Every combination of the given choices, h rule outermost, then volumes, then time step;
+// InputError naming an unknown choice.
+std::vector<HeatReading> heat_reading_matrix(const std::vector<std::string>& h_rules,
+                                             const std::vector<std::string>& volumes,
+                                             const std::vector<std::string>& dt_rules);
+
 // The columns of a heat data file; the first three (weight, θ, level) are the unit's key.
 const std::vector<std::string>& heat_columns();
 

@@ -89,12 +89,28 @@ std::vector<int> StudyRunner::levels(const std::vector<int>& quick,
 
 LevelCache& StudyRunner::open(std::vector<std::pair<std::string, std::string>> params,
                               std::vector<std::string> columns, int key_columns) {
-  cache_ = std::make_unique<LevelCache>(out_, std::move(params), std::move(columns),
-                                        key_columns, mode_, rank_ == 0);
-  if (cache_->reused() > 0 && rank_ == 0)
-    std::fprintf(stderr, "[%s] reusing %zu stored rows of %s\n", program_.c_str(),
-                 cache_->reused(), out_.c_str());
-  return *cache_;
+  return *open_files({{out_, std::move(params)}}, std::move(columns), key_columns).front();
+}
+
+std::vector<LevelCache*> StudyRunner::open_files(std::vector<DataFile> files,
+                                                 std::vector<std::string> columns,
+                                                 int key_columns) {
+  if (!caches_.empty()) throw std::logic_error("StudyRunner: data files opened twice");
+  std::vector<LevelCache*> out;
+  for (auto& f : files) {
+    for (auto& p : paths_)
+      if (p == f.path) throw InputError("one data file named twice in one run: " + f.path);
+    // A file that refuses (InputError) leaves the earlier ones' locks to their destructors.
+    caches_.push_back(std::make_unique<LevelCache>(f.path, std::move(f.params), columns,
+                                                   key_columns, mode_, rank_ == 0));
+    paths_.push_back(f.path);
+    saved_added_.push_back(0);
+    if (caches_.back()->reused() > 0 && rank_ == 0)
+      std::fprintf(stderr, "[%s] reusing %zu stored rows of %s\n", program_.c_str(),
+                   caches_.back()->reused(), f.path.c_str());
+    out.push_back(caches_.back().get());
+  }
+  return out;
 }
 
 void StudyRunner::expect(double work, const char* unit) {
@@ -157,14 +173,15 @@ void StudyRunner::reduce(ErrorMaxima& m) const {
 
 // A program may claim several units before computing them (the θ of one Laplacian): their
 // rows come in the order of the claims, each unit closed by unit_done().
-void StudyRunner::add(std::vector<std::string> row) {
+void StudyRunner::add(std::size_t file, std::vector<std::string> row) {
+  if (file >= caches_.size()) throw std::logic_error("StudyRunner::add: no data file " + std::to_string(file));
   if (size_ == 1) {
-    cache_->add(std::move(row));
+    caches_[file]->add(std::move(row));
     return;
   }
   if (claimed_.empty()) throw std::logic_error("StudyRunner::add: a row of no claimed unit");
   if (claimed_.front().shared && rank_ != 0) return;  // every rank has them: rank 0's are kept
-  mine_.emplace_back(claimed_.front().unit, std::move(row));
+  mine_.push_back({claimed_.front().unit, file, std::move(row)});
 }
 
 // The header's record of the run so far: wall time and peak memory.
@@ -184,10 +201,15 @@ void StudyRunner::report(double work, const std::string& line) {
 }
 
 void StudyRunner::unit_done(double work, const std::string& line) {
-  if (size_ == 1) {  // several ranks: rank 0 writes everything in finish()
-    stamp(cache_->table());
-    cache_->save();
-  }
+  if (size_ == 1)  // several ranks: rank 0 writes everything in finish()
+    for (std::size_t f = 0; f < caches_.size(); ++f) {
+      // Of several files, only those this unit added to (a file's wall time is the run's
+      // up to its last unit).
+      if (caches_.size() > 1 && caches_[f]->added() == saved_added_[f]) continue;
+      stamp(caches_[f]->table());
+      caches_[f]->save();
+      saved_added_[f] = caches_[f]->added();
+    }
   if (!claimed_.empty()) claimed_.pop_front();
   report(work, line);
 }
@@ -204,8 +226,8 @@ void StudyRunner::save_level(TsvTable& t, double work, const std::string& line) 
 void StudyRunner::gather_rows() {
 #ifdef GPM_MPI
   std::string text;
-  for (auto& [unit, row] : mine_) {
-    text += std::to_string(unit);
+  for (auto& [unit, file, row] : mine_) {
+    text += std::to_string(unit) + "\t" + std::to_string(file);
     for (auto& cell : row) text += "\t" + cell;
     text += "\n";
   }
@@ -220,42 +242,55 @@ void StudyRunner::gather_rows() {
   MPI_Gatherv(text.data(), len, MPI_CHAR, all.data(), lens.data(), offs.data(), MPI_CHAR, 0,
               MPI_COMM_WORLD);
   if (rank_ != 0) return;
-  std::vector<std::pair<long, std::vector<std::string>>> rows;
+  std::vector<MyRow> rows;
   std::istringstream in(all);
   for (std::string line; std::getline(in, line);) {
     std::vector<std::string> cells;
     std::istringstream ls(line);
     for (std::string c; std::getline(ls, c, '\t');) cells.push_back(c);
-    const long unit = std::stol(cells.front());
-    cells.erase(cells.begin());
-    rows.emplace_back(unit, std::move(cells));
+    const long unit = std::stol(cells.at(0));
+    const std::size_t file = std::stoul(cells.at(1));
+    cells.erase(cells.begin(), cells.begin() + 2);
+    rows.push_back({unit, file, std::move(cells)});
   }
   // Within a unit the rows keep their order (stable sort): one rank made them all.
   std::stable_sort(rows.begin(), rows.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (auto& [unit, row] : rows) cache_->add(std::move(row));
-  stamp(cache_->table());
-  cache_->table().set("mpi_ranks", std::to_string(size_));
-  cache_->save();
+                   [](const MyRow& a, const MyRow& b) { return a.unit < b.unit; });
+  for (auto& r : rows) caches_.at(r.file)->add(std::move(r.row));
+  for (auto& c : caches_) {
+    stamp(c->table());
+    c->table().set("mpi_ranks", std::to_string(size_));
+    c->save();
+  }
 #endif
 }
 
 bool StudyRunner::finish() {
   if (progress_) progress_->finish();
-  if (!cache_) return true;
+  if (caches_.empty()) return true;
   if (size_ > 1) {
     gather_rows();
     if (rank_ != 0) return false;  // rank 0 alone writes (the file and what derives from it)
   }
-  cache_->finish();
-  if (!cache_->writes()) return false;
-  if (cache_->rows().empty()) throw InputError("no level selected: nothing to write to " + out_);
-  if (cache_->added() == 0)
-    std::printf("%s: nothing to compute: %s holds every selected unit (%zu rows, %.1f s)\n",
-                program_.c_str(), out_.c_str(), cache_->rows().size(), elapsed_s());
-  else
-    std::printf("%s: wrote %s (%zu rows: %zu new, %zu reused, %.1f s)\n", program_.c_str(),
-                out_.c_str(), cache_->rows().size(), cache_->added(), cache_->reused(), elapsed_s());
+  // Verify/recheck/census: every file is checked before the first difference is thrown.
+  std::exception_ptr first;
+  for (auto& c : caches_) try {
+      c->finish();
+    } catch (const StoreMismatch&) {
+      if (!first) first = std::current_exception();
+    }
+  if (first) std::rethrow_exception(first);
+  if (!caches_.front()->writes()) return false;
+  for (std::size_t f = 0; f < caches_.size(); ++f) {
+    const LevelCache& c = *caches_[f];
+    if (c.rows().empty()) throw InputError("no level selected: nothing to write to " + paths_[f]);
+    if (c.added() == 0)
+      std::printf("%s: nothing to compute: %s holds every selected unit (%zu rows, %.1f s)\n",
+                  program_.c_str(), paths_[f].c_str(), c.rows().size(), elapsed_s());
+    else
+      std::printf("%s: wrote %s (%zu rows: %zu new, %zu reused, %.1f s)\n", program_.c_str(),
+                  paths_[f].c_str(), c.rows().size(), c.added(), c.reused(), elapsed_s());
+  }
   return true;
 }
 

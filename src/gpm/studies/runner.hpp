@@ -81,7 +81,18 @@ class StudyRunner {
   // `key_columns` of a row.  Says how many rows it reuses.
   LevelCache& open(std::vector<std::pair<std::string, std::string>> params,
                    std::vector<std::string> columns, int key_columns);
-  LevelCache& cache() { return *cache_; }
+  LevelCache& cache() { return *caches_.at(0); }
+  // Several data files from one run: variants of a set-up that share its costly part (the
+  // heat readings of one Laplacian: volumes and time-step rules), each its own file with its
+  // own parameters, the columns and unit keys common.  Rows go to a file by its index
+  // (add(file, row)); every file is cached, verified and written as open()'s one.  The
+  // files' paths replace --out (which names the pattern they were made from).
+  struct DataFile {
+    std::string path;
+    std::vector<std::pair<std::string, std::string>> params;
+  };
+  std::vector<LevelCache*> open_files(std::vector<DataFile> files, std::vector<std::string> columns,
+                                      int key_columns);
 
   // Whether this process computes the next unit still to do.  Called, in loop order, for every
   // unit not in the cache (the same sequence on every rank, with the same costs); always
@@ -100,7 +111,8 @@ class StudyRunner {
   void reduce(ErrorMaxima& m) const;
   // One row of a unit this process computed (LevelCache::add on one process; kept for the
   // gathering in finish() on several).
-  void add(std::vector<std::string> row);
+  void add(std::vector<std::string> row) { add(0, std::move(row)); }
+  void add(std::size_t file, std::vector<std::string> row);
   int rank() const { return rank_; }
   int ranks() const { return size_; }
 
@@ -128,7 +140,9 @@ class StudyRunner {
   Kind kind_;
   uint64_t seed_ = 1;
   CacheMode mode_ = CacheMode::run;
-  std::unique_ptr<LevelCache> cache_;
+  std::vector<std::unique_ptr<LevelCache>> caches_;  // open() or open_files()
+  std::vector<std::string> paths_;
+  std::vector<std::size_t> saved_added_;  // rows each file had added when last written
   std::unique_ptr<Progress> progress_;
   double done_ = 0;
   std::chrono::steady_clock::time_point start_;
@@ -140,8 +154,13 @@ class StudyRunner {
     bool shared;
   };
   std::deque<Claimed> claimed_;  // units claimed here and not yet done, in claim order
-  // Rows computed here while several ranks run: (unit number, row).
-  std::vector<std::pair<long, std::vector<std::string>>> mine_;
+  // Rows computed here while several ranks run: unit number, file index, row.
+  struct MyRow {
+    long unit;
+    std::size_t file;
+    std::vector<std::string> row;
+  };
+  std::vector<MyRow> mine_;
   void gather_rows();
   void stamp(TsvTable& t) const;
   void report(double work, const std::string& line);
