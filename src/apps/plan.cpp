@@ -66,6 +66,8 @@ int body(int argc, char** argv) {
       .output("summary", "", "TSV: per (study, level), per study and total (optional)")
       .opt("calibration", "", "reuse the calibration in the header of this earlier plan file")
       .output("calibration-table", "", "TSV: the calibration as a readable table (optional)")
+      .output("heat-matrix", "", "TSV: the heat tables' whole reading matrix priced alone, per\n"
+                                 "  reading and batched (heat_matrix_costs; optional)")
       .opt("bench", "data/bench/kernel.tsv", "make bench's kernel file, shown beside the "
                                              "calibration when present")
       .flag("quiet", "do not print the table");
@@ -188,6 +190,40 @@ int body(int argc, char** argv) {
   }
   if (!a.str("summary").empty()) s.save(a.str("summary"));
 
+  // --- The heat reading matrix: every reading of Tables 4.5-4.7, priced three ways, beside
+  // what the profile runs of those tables today (its one reading per h rule, trims applied).
+  const std::vector<HeatMatrixCost> hm = heat_matrix_costs(profile, cal);
+  TsvTable hmt;
+  hmt.set("program", "plan --heat-matrix");
+  hmt.set("profile", profile_name(profile));
+  hmt.set("calibration_source", cal.source);
+  hmt.set("readings", "h10, h15 x volumes lattice (A.10), cell (dx^2) x dt = T/K, dt = dt0: 8 per table");
+  hmt.set("columns_note", "alone: every series streams the Laplacian by itself; per_reading: one run per "
+                          "reading, its theta together; batched: every series of a (level, h rule, "
+                          "weight) in one block stream; catalog: the units of these tables the profile "
+                          "runs today (h10 and h15 with (A.10) volumes and dt = T/K, trims applied)");
+  add_provenance(hmt);
+  hmt.columns = {"table", "series", "alone_s", "per_reading_s", "batched_s", "catalog_s",
+                 "batched_over_per_reading"};
+  HeatMatrixCost total{"all", 0, 0, 0, 0};
+  double catalog_total = 0;
+  for (auto& m : hm) {
+    double catalog = 0;
+    std::string study = "thesis_table" + m.table;
+    std::replace(study.begin(), study.end(), '.', '_');
+    for (auto& u : units)
+      if (u.trimmed.empty() && (u.study == study || u.study == study + "_h15")) catalog += u.time_s;
+    hmt.add_row({m.table, fmt(m.series), fmt(m.alone_s), fmt(m.per_reading_s), fmt(m.batched_s),
+                 fmt(catalog), fmt(m.batched_s / m.per_reading_s)});
+    total.series += m.series, total.alone_s += m.alone_s, total.per_reading_s += m.per_reading_s;
+    total.batched_s += m.batched_s, catalog_total += catalog;
+  }
+  hmt.add_row({"all", fmt(total.series), fmt(total.alone_s), fmt(total.per_reading_s),
+               fmt(total.batched_s), fmt(catalog_total), fmt(total.batched_s / total.per_reading_s)});
+  hmt.set("profile_total_today_s", all.time_s);
+  hmt.set("profile_total_with_batched_matrix_s", all.time_s - catalog_total + total.batched_s);
+  if (!a.str("heat-matrix").empty()) hmt.save(a.str("heat-matrix"));
+
   // --- The calibration as a table (quantity, value, unit). --------------------------------
   if (!a.str("calibration-table").empty()) {
     TsvTable c;
@@ -206,6 +242,8 @@ int body(int argc, char** argv) {
     c.add_row({"assembled product (full matrix)", fmt(cal.spmv_full_s_per_nnz * 1e9), "ns/non-zero"});
     c.add_row({"matrix-free product: pair rate", fmt(1 / cal.matrix_free.per_pair_s), "pairs/s"});
     c.add_row({"matrix-free product: per target", fmt(cal.matrix_free.per_target_s * 1e6), "us"});
+    for (auto& [w, r] : cal.block_ratio)
+      c.add_row({"block product of " + fmt(w) + " columns, per vector", fmt(r), "x single product"});
     c.add_row({"calibration wall time", fmt(cal.seconds), "s"});
     c.add_row({"calibration CPU time", fmt(cal.cpu_seconds), "s"});
     c.add_row({"load average before / after", fmt(cal.load_before) + " / " + fmt(cal.load_after), ""});
@@ -258,6 +296,11 @@ int body(int argc, char** argv) {
       std::printf("%-22s %5s %5s %11s %11s %12s   (predicted: fused passes shared, the rest dealt whole)\n",
                   (fmt(ranks[i]) + " PROCESSES").c_str(), "", "", "", "",
                   human_time(makespan[i]).c_str());
+    std::printf("HEAT READING MATRIX (%d series): alone %s, per reading %s, batched %s; the profile "
+                "runs %s of these tables today; whole profile %s -> %s with the matrix batched\n",
+                total.series, human_time(total.alone_s).c_str(), human_time(total.per_reading_s).c_str(),
+                human_time(total.batched_s).c_str(), human_time(catalog_total).c_str(),
+                human_time(all.time_s).c_str(), human_time(all.time_s - catalog_total + total.batched_s).c_str());
     std::printf("wrote %s%s%s\n", a.str("out").c_str(), a.str("summary").empty() ? "" : " and ",
                 a.str("summary").c_str());
   }

@@ -116,6 +116,7 @@ int body(int argc, char** argv) {
                             "  unstable theta = 0 run still has the error (4.2) and a rate; or a factor:\n"
                             "  stop when ||U^k|| > blowup * ||U^0|| (l2(Omega_H))")
       .opt("thetas", "", "run only these theta of the table (comma list; default: all of them)")
+      .opt("weights", "", "run only these weights (comma list; default: all three)")
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
       .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB)");
   run.parse(argc, argv);
@@ -141,6 +142,14 @@ int body(int argc, char** argv) {
     for (double th : thetas)
       if (std::find(ts.thetas.begin(), ts.thetas.end(), th) == ts.thetas.end())
         throw InputError("--thetas: " + fmt(th) + " is not a theta of Table " + ts.table);
+  }
+  // A subset of the weights, as of the θ: a run only adds units.
+  std::vector<std::string> weights = pde_weights();
+  if (!a.str("weights").empty()) {
+    weights = a.list("weights");
+    for (auto& w : weights)
+      if (std::find(pde_weights().begin(), pde_weights().end(), w) == pde_weights().end())
+        throw InputError("--weights: '" + w + "' is not a weight of the heat tables");
   }
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
@@ -183,7 +192,7 @@ int body(int argc, char** argv) {
       const double h = pde_h(h_rule, dx);
       const double dt0 = ts.c * std::pow(h, ts.p);
       bool checked = false;
-      for (const auto& wname : pde_weights()) {
+      for (const auto& wname : weights) {
         // The series still to do of this weight: (reading, θ), every reading of this h rule.
         // They share one Laplacian (on a cluster they go to one rank together).
         struct Todo {

@@ -199,7 +199,18 @@ Calibration calibrate() {
       L.apply(x, y);  // warm-up
       const double per_nnz = best_of(5, [&] { L.apply(x, y); }) / static_cast<double>(L.nnz());
       (storage == LaplacianStorage::full ? c.spmv_full_s_per_nnz : c.spmv_s_per_nnz) = per_nnz;
+      if (storage != LaplacianStorage::assembled) continue;
+      // The block product on the same matrix: time per vector over the single product's.
+      const double single = per_nnz * static_cast<double>(L.nnz());
+      for (int s : {3, 6, 12}) {
+        const DiscreteLaplacian::RowBlock X =
+            DiscreteLaplacian::RowBlock::Ones(static_cast<Eigen::Index>(L.n_unknowns()), s);
+        DiscreteLaplacian::RowBlock Y;
+        L.apply_block(X, Y);  // warm-up
+        c.block_ratio[s] = best_of(3, [&] { L.apply_block(X, Y); }) / (s * single);
+      }
     }
+    for (auto& [s, r] : c.block_ratio) log(("block product per vector / single, s = " + fmt(s)).c_str(), r);
     log("assembled product s/nnz", c.spmv_s_per_nnz);
     log("full-matrix product s/nnz", c.spmv_full_s_per_nnz);
   }
@@ -279,6 +290,7 @@ void Calibration::write(TsvTable& t) const {
   t.set("cal.matrix_free.per_pair_s", matrix_free.per_pair_s);
   for (auto& [k, v] : poisson_its) t.set("cal.poisson_its." + k, v);
   for (auto& [k, v] : heat_its) t.set("cal.heat_its." + k, v);
+  for (auto& [k, v] : block_ratio) t.set("cal.block_ratio." + fmt(k), v);
 }
 
 Calibration Calibration::read(const TsvTable& t) {
@@ -305,7 +317,9 @@ Calibration Calibration::read(const TsvTable& t) {
   for (auto& [k, v] : t.meta) {
     if (k.rfind("cal.poisson_its.", 0) == 0) c.poisson_its[k.substr(16)] = parse_number(v, k);
     if (k.rfind("cal.heat_its.", 0) == 0) c.heat_its[k.substr(13)] = parse_number(v, k);
+    if (k.rfind("cal.block_ratio.", 0) == 0) c.block_ratio[std::stoi(k.substr(16))] = parse_number(v, k);
   }
+  if (c.block_ratio.empty()) throw InputError("calibration: no block-product ratios in the header");
   if (c.poisson_its.empty() || c.heat_its.empty())
     throw InputError("calibration: no CG iteration counts in the header");
   return c;
@@ -468,6 +482,87 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
   for (int k : paper ? voronoi_study().levels.paper : voronoi_study().levels.quick) {
     add_voronoi("core_voronoi", "grid", k);
     for (int s : voronoi_study().seeds) add_voronoi("core_voronoi", "jittered/seed=" + fmt(s), k);
+  }
+  return out;
+}
+
+// --- The heat reading matrix priced three ways ---------------------------------------------
+
+namespace {
+
+// Seconds of one block product of s columns: s single products times the calibrated
+// per-vector ratio, interpolated linearly in s between the measured widths (beyond the
+// widest, its ratio: wider blocks go in passes of 16).
+double block_product_s(double single_s, double s, const Calibration& c) {
+  if (s <= 0) return 0;
+  double lo_s = 1, lo_r = 1;
+  for (auto& [w, r] : c.block_ratio) {
+    if (s <= w) return s * single_s * (lo_r + (r - lo_r) * (s - lo_s) / (w - lo_s));
+    lo_s = w, lo_r = r;
+  }
+  return s * single_s * lo_r;
+}
+
+// One step of a group of series sharing one stream: a product M·U for all of them, then the
+// lockstep CG, iteration j a block of the series that still iterate (mean CG its per step
+// each; θ = 0: none).  `shared`: block products (assembled half), else column by column.
+double group_step_s(const std::vector<double>& its, double single_s, bool shared, const Calibration& c) {
+  auto product = [&](double s) { return shared ? block_product_s(single_s, s, c) : s * single_s; };
+  double t = product(static_cast<double>(its.size()));
+  const double most = its.empty() ? 0 : *std::max_element(its.begin(), its.end());
+  for (double j = 0; j < most; j += 1) {
+    // The share of iteration j+1 each series still makes (fractional means count in part).
+    double width = 0;
+    for (double n : its) width += std::clamp(n - j, 0.0, 1.0);
+    t += product(width);
+  }
+  return t;
+}
+
+}  // namespace
+
+std::vector<HeatMatrixCost> heat_matrix_costs(Profile profile, const Calibration& c) {
+  const Domain dom;
+  const bool paper = profile == Profile::paper;
+  const int n_readings_per_h = 4;  // 2 volumes × 2 time-step rules
+  std::vector<HeatMatrixCost> out;
+  for (auto& hp : heat_tables()) {
+    HeatMatrixCost m;
+    m.table = hp.table;
+    m.series = 2 * n_readings_per_h * static_cast<int>(hp.thetas.size()) * static_cast<int>(pde_weights().size());
+    for (const char* rule : {"h10", "h15"}) {
+      const double h5 = pde_h(rule, dx_of(5));
+      const double r5 = hp.c * std::pow(h5, hp.p) / (h5 * h5);
+      for (int k : paper ? hp.paper : hp.quick) {
+        const double dx = dx_of(k), h = pde_h(rule, dx);
+        const double N = grid_particle_count(dx, dom), targets = omega_target_estimate(dx);
+        const double nnz = estimated_laplacian_nnz(static_cast<std::size_t>(N),
+                                                   static_cast<std::size_t>(targets), h, dom);
+        const bool assembled = kAssembledBytesPerNonzero * nnz <= kMaxAssembledBytes;
+        const double pairs = predicted_pairs(dx, h, dom);
+        const double single = assembled ? pairs * c.spmv_s_per_nnz : c.matrix_free.seconds(targets, pairs);
+        const double setup = assembled ? pairs * c.setup_s_per_nnz : 2 * single;
+        const double dt0 = hp.c * std::pow(h, hp.p);
+        const double K = std::ceil(kHeatT / dt0 - 1e-9);
+        for (auto& w : pde_weights()) {
+          std::vector<double> its;  // one reading's θ
+          for (double th : hp.thetas)
+            its.push_back(th > 0 ? c.heat_its.at(hp.table + "/" + rule + "/" + w + "/" + fmt(th)) *
+                                       std::sqrt((dt0 / (h * h)) / r5)
+                                 : 0.0);
+          std::vector<double> all;  // every reading of this h rule
+          for (int r = 0; r < n_readings_per_h; ++r) all.insert(all.end(), its.begin(), its.end());
+          for (double n : its) m.alone_s += n_readings_per_h * (setup + K * (1 + n) * single);
+          m.per_reading_s += n_readings_per_h * (setup + K * group_step_s(its, single, assembled, c));
+          // Batched: one Laplacian (plus a volumes pass for the other volumes, priced as a
+          // set-up); matrix-free, each volumes choice has its own Laplacian and no block pass.
+          m.batched_s += assembled ? 2 * setup + K * group_step_s(all, single, true, c)
+                                   : 2 * (setup + K * group_step_s(std::vector<double>(all.begin(), all.begin() + all.size() / 2),
+                                                                   single, false, c));
+        }
+      }
+    }
+    out.push_back(m);
   }
   return out;
 }

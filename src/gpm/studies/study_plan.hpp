@@ -57,6 +57,9 @@ struct Calibration {
   PassCost matrix_free;                   // one matrix-free product, per target and per pair
   std::map<std::string, double> poisson_its;  // "h10/<weight>" → CG iterations at Δx = 2^-5
   std::map<std::string, double> heat_its;     // "4.5/h10/<weight>/<θ>" → mean per step, 2^-5
+  // The block product's time per vector over the single product's, at s = 3, 6, 12 columns
+  // (the assembled half at Δx = 2^-7, as spmv_s_per_nnz); 1 at s = 1.
+  std::map<int, double> block_ratio;
   double seconds = 0;                     // wall time of the calibration
   double cpu_seconds = 0;                 // its process CPU time (all threads)
   double load_before = -1, load_after = -1;  // 1-minute load average (/proc/loadavg)
@@ -85,6 +88,20 @@ struct PlanUnit {
 };
 
 std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c);
+
+// The heat tables' whole reading matrix (2 h rules × 2 volumes × 2 time-step rules, every θ
+// of each table, the profile's levels without trims) priced three ways, per table:
+//   alone       every series streams the Laplacian by itself (before the block product);
+//   per_reading one run per reading, its θ advancing together (thesis_heat with one reading);
+//   batched     one run per table, every series of a (level, h rule, weight) in one block
+//               stream (thesis_heat with lists; matrix-free units gain nothing: no block pass).
+// Laplacian set-ups included (per reading, or per h rule when batched).
+struct HeatMatrixCost {
+  std::string table;
+  int series = 0;
+  double alone_s = 0, per_reading_s = 0, batched_s = 0;
+};
+std::vector<HeatMatrixCost> heat_matrix_costs(Profile profile, const Calibration& c);
 
 // The names of the modelled studies, in plan order.
 std::vector<std::string> planned_studies();
