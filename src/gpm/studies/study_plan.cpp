@@ -22,6 +22,7 @@
 #include "gpm/solvers/poisson_probes.hpp"
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/heat_tables.hpp"
+#include "gpm/studies/registry.hpp"
 #include "gpm/studies/thesis_truncation.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -115,16 +116,8 @@ double load_average() {
 }  // namespace
 
 std::vector<std::string> planned_studies() {
-  std::vector<std::string> s = {"imoto_fig5_table1"};
-  for (auto& t : thesis_table_specs()) s.push_back(t.program);
-  s.push_back("thesis_table4_4");
-  for (auto& hp : heat_tables())
-    for (const char* suffix : {"", "_h15"}) {
-      std::string name = "thesis_table" + hp.table + suffix;
-      std::replace(name.begin(), name.end(), '.', '_');
-      s.push_back(name);
-    }
-  s.push_back("core_voronoi");
+  std::vector<std::string> s;
+  for (auto& r : study_registry()) s.insert(s.end(), r.files.begin(), r.files.end());
   return s;
 }
 
@@ -325,165 +318,75 @@ Calibration Calibration::read(const TsvTable& t) {
   return c;
 }
 
-std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
-  std::vector<PlanUnit> out;
+// --- Pricing units: the formulas every registered study uses ------------------------------
+
+PlanUnit UnitPricer::base(const std::string& study, const std::string& variant, int k, double h) const {
   const Domain dom;
-  const bool paper = profile == Profile::paper;
-  auto base = [&](const std::string& study, const std::string& variant, int k, double h) {
-    PlanUnit u;
-    u.study = study, u.variant = variant, u.level = k, u.dx = dx_of(k), u.h = h;
-    u.N = grid_particle_count(u.dx, dom);
-    u.targets = omega_target_estimate(u.dx);
-    u.pairs = h > 0 ? predicted_pairs(u.dx, h, dom) : 0;
-    return u;
-  };
-  // Memory of a fused pass: particles (x, y, flag) 17 B, volumes 8 B, the kernel's sorted
-  // copies (x, y, V, index) 28 B and cell heads ~4 B, per field the values and exact
-  // values/derivatives (original and sorted order) ~48 B, per result column 8 B per target.
-  auto fused_mib = [&](const PlanUnit& u, const FusedMix& m) {
-    const double nf = static_cast<double>(m.functions.size());
-    return c.base_mib + (u.N * (57 + 48 * nf) + u.targets * 8.0 * m.columns()) / kMiB;
-  };
-  auto add_fused = [&](const std::string& study, const std::string& variant, int k, double h,
-                       const std::string& mix_name) {
-    PlanUnit u = base(study, variant, k, h);
-    const FusedMix& m = mix(mix_name);
-    u.method = "fused";
-    u.time_s = u.time_before_s = c.fused.at(mix_name).seconds(u.targets, u.pairs);
-    u.mem_mib = fused_mib(u, m);
-    u.basis = "a*N_omega + b*pairs, mix " + mix_name;
-    out.push_back(u);
-  };
-  auto add_voronoi = [&](const std::string& study, const std::string& variant, int k) {
-    PlanUnit u = base(study, variant, k, 0);
-    u.method = "voronoi";
-    u.time_s = u.time_before_s = c.voronoi_s_per_particle * u.N;
-    u.mem_mib = c.base_mib + 190.0 * u.N / kMiB;
-    u.basis = "s/particle * N";
-    out.push_back(u);
-  };
+  PlanUnit u;
+  u.study = study, u.variant = variant, u.level = k, u.dx = dx_of(k), u.h = h;
+  u.N = grid_particle_count(u.dx, dom);
+  u.targets = omega_target_estimate(u.dx);
+  u.pairs = h > 0 ? predicted_pairs(u.dx, h, dom) : 0;
+  return u;
+}
 
-  // imoto §5: one pass per (level, m), nine weights.
-  for (int k : paper ? imoto_study().levels.paper : imoto_study().levels.quick)
-    for (double m : imoto_study().orders) add_fused("imoto_fig5_table1", "m=" + fmt(m), k, imoto_h(m, dx_of(k)), "imoto9");
+// Memory of a fused pass: particles (x, y, flag) 17 B, volumes 8 B, the kernel's sorted
+// copies (x, y, V, index) 28 B and cell heads ~4 B, per field the values and exact
+// values/derivatives (original and sorted order) ~48 B, per result column 8 B per target.
+void UnitPricer::add_fused(const std::string& study, const std::string& variant, int k, double h,
+                           const std::string& mix_name) {
+  PlanUnit u = base(study, variant, k, h);
+  const FusedMix& m = mix(mix_name);
+  u.method = "fused";
+  u.time_s = u.time_before_s = c_.fused.at(mix_name).seconds(u.targets, u.pairs);
+  const double nf = static_cast<double>(m.functions.size());
+  u.mem_mib = c_.base_mib + (u.N * (57 + 48 * nf) + u.targets * 8.0 * m.columns()) / kMiB;
+  u.basis = "a*N_omega + b*pairs, mix " + mix_name;
+  out_.push_back(u);
+}
 
-  // Thesis Tables 4.1–4.3: per (reading, volumes, level); Voronoi once per level.
-  for (auto& t : thesis_table_specs()) {
-    std::vector<int> all;
-    for (HReading r : t.readings) {
-      const auto& lv = paper ? t.paper_levels : (r == HReading::printed ? t.quick_printed : t.quick_scaled);
-      all.insert(all.end(), lv.begin(), lv.end());
-      for (int k : lv)
-        for (const char* vol : {"voronoi", "uniform"})
-          if (!(paper && std::string(vol) == "uniform" && k > t.paper_uniform_max_level)) {
-            add_fused(t.program, h_reading_name(r) + "/" + vol, k,
-                      thesis_h(r, t.c, t.p, dx_of(k)), t.mix());
-            if (paper && r == HReading::printed && k > t.paper_printed_max_level)
-              out.back().trimmed = "printed reading stops at 2^-" + fmt(t.paper_printed_max_level);
-          }
-    }
-    std::sort(all.begin(), all.end());
-    all.erase(std::unique(all.begin(), all.end()), all.end());
-    for (int k : all) add_voronoi(t.program, "voronoi", k);
-  }
+void UnitPricer::add_voronoi(const std::string& study, const std::string& variant, int k) {
+  PlanUnit u = base(study, variant, k, 0);
+  u.method = "voronoi";
+  u.time_s = u.time_before_s = c_.voronoi_s_per_particle * u.N;
+  u.mem_mib = c_.base_mib + 190.0 * u.N / kMiB;
+  u.basis = "s/particle * N";
+  out_.push_back(u);
+}
 
-  // The Laplacian products: assembled (kAssembledBytesPerNonzero) unless over the programs'
-  // memory budget, then matrix-free.  `pairs` is the non-zero count (self included = diagonal).
-  auto product_s = [&](const PlanUnit& u, bool assembled) {
-    return assembled ? u.pairs * c.spmv_s_per_nnz : c.matrix_free.seconds(u.targets, u.pairs);
-  };
-  // Before the symmetric half: the full matrix where 12 B per non-zero fit the budget.
-  auto product_before_s = [&](const PlanUnit& u) {
-    const bool full = 12.0 * estimated_laplacian_nnz(static_cast<std::size_t>(u.N),
-                                                     static_cast<std::size_t>(u.targets), u.h,
-                                                     dom) <= kMaxAssembledBytes;
-    return full ? u.pairs * c.spmv_full_s_per_nnz : c.matrix_free.seconds(u.targets, u.pairs);
-  };
-  auto is_assembled = [&](const PlanUnit& u) {
-    return kAssembledBytesPerNonzero *
-               estimated_laplacian_nnz(static_cast<std::size_t>(u.N),
-                                       static_cast<std::size_t>(u.targets), u.h, dom) <=
-           kMaxAssembledBytes;
-  };
-  // Memory: particles and volumes 25 B, ~8 vectors over the particles (data, solution,
-  // right-hand side) 64 B, CG's 6 vectors over Ω 48 B, the assembled storage per non-zero
-  // and its diagonal, volumes and row pointers (or the kernel's sorted copies ~40 B per particle).
-  auto pde_mib = [&](const PlanUnit& u, bool assembled) {
-    return c.base_mib + (u.N * (25 + 64) + u.targets * 48 +
-                         (assembled ? kAssembledBytesPerNonzero * u.pairs + 36 * u.targets
-                                    : 40 * u.N)) / kMiB;
-  };
+// The Laplacian: assembled (kAssembledBytesPerNonzero) unless over the programs' memory
+// budget, then matrix-free.  `pairs` is the non-zero count (self included = diagonal).
+bool UnitPricer::is_assembled(const PlanUnit& u) const {
+  return kAssembledBytesPerNonzero *
+             estimated_laplacian_nnz(static_cast<std::size_t>(u.N), static_cast<std::size_t>(u.targets), u.h,
+                                     Domain{}) <=
+         kMaxAssembledBytes;
+}
 
-  // Poisson (Table 4.4): set-up + (CG iterations + 2) products; iterations ∝ 1/h.
-  for (int k : paper ? poisson_table().levels.paper : poisson_table().levels.quick)
-    for (const char* rule : {"h10", "h15"})
-      for (auto& w : pde_weights()) {
-        PlanUnit u = base("thesis_table4_4", std::string(rule) + "/" + w, k, pde_h(rule, dx_of(k)));
-        const bool as = is_assembled(u);
-        const double its = c.poisson_its.at(std::string(rule) + "/" + w) * pde_h(rule, dx_of(5)) / u.h;
-        u.products = its + 2;
-        u.method = as ? "assembled" : "matrix_free";
-        const double setup = as ? u.pairs * c.setup_s_per_nnz : 2 * product_s(u, false);
-        u.time_s = setup + u.products * product_s(u, as);
-        u.time_before_s = setup + u.products * product_before_s(u);
-        u.mem_mib = pde_mib(u, as);
-        u.basis = "setup + (CG its " + fmt(std::round(its)) + " + 2) products";
-        out.push_back(u);
-      }
+double UnitPricer::product_s(const PlanUnit& u, bool assembled) const {
+  return assembled ? u.pairs * c_.spmv_s_per_nnz : c_.matrix_free.seconds(u.targets, u.pairs);
+}
 
-  // Heat (Tables 4.5–4.7, both h rules): K = ⌈T/Δt₀⌉ steps, one product per step (M·U^k,
-  // which also serves the CG's initial and true residuals) plus (θ > 0) the CG iterations;
-  // the Laplacian's set-up once per (level, weight), not in the per-row seconds.
-  for (auto& hp : heat_tables())
-    for (const char* rule : {"h10", "h15"}) {
-      std::string study = "thesis_table" + hp.table + (std::string(rule) == "h15" ? "_h15" : "");
-      std::replace(study.begin(), study.end(), '.', '_');
-      const double h5 = pde_h(rule, dx_of(5));
-      const double r5 = hp.c * std::pow(h5, hp.p) / (h5 * h5);
-      const std::vector<int> run = heat_levels(hp, paper, rule);
-      for (int k : paper ? hp.paper : hp.quick)
-        for (auto& w : pde_weights()) {
-          const std::string trimmed =
-              std::find(run.begin(), run.end(), k) == run.end()
-                  ? "h15 reading stops at 2^-" + fmt(hp.paper_h15_max_level) + " (Table 4.4 settles h10)"
-                  : "";
-          const double h = pde_h(rule, dx_of(k));
-          PlanUnit a = base(study, "setup/" + w, k, h);
-          const bool as = is_assembled(a);
-          a.method = as ? "assembled" : "matrix_free";
-          a.time_s = as ? a.pairs * c.setup_s_per_nnz : 2 * product_s(a, false);
-          a.time_before_s = a.time_s;
-          a.mem_mib = pde_mib(a, as);
-          a.recorded = false;
-          a.basis = "Laplacian set-up (not in the rows' seconds)";
-          a.trimmed = trimmed;
-          out.push_back(a);
-          const double dt0 = hp.c * std::pow(h, hp.p);
-          const double K = std::ceil(kHeatT / dt0 - 1e-9);
-          for (double th : hp.thetas) {
-            PlanUnit u = base(study, w + "/theta=" + fmt(th), k, h);
-            double its = 0;
-            if (th > 0)
-              its = c.heat_its.at(hp.table + "/" + rule + "/" + w + "/" + fmt(th)) *
-                    std::sqrt((dt0 / (h * h)) / r5);
-            u.products = K * (1 + its);
-            u.method = a.method;
-            u.time_s = u.products * product_s(u, as);
-            u.time_before_s = u.products * product_before_s(u);
-            u.mem_mib = a.mem_mib;
-            u.basis = "K=" + fmt(K) + " steps, " + fmt(std::round(its * 10) / 10) + " CG its/step";
-            u.trimmed = trimmed;
-            out.push_back(u);
-          }
-        }
-    }
+// Before the symmetric half: the full matrix where 12 B per non-zero fit the budget.
+double UnitPricer::product_before_s(const PlanUnit& u) const {
+  const bool full = 12.0 * estimated_laplacian_nnz(static_cast<std::size_t>(u.N),
+                                                   static_cast<std::size_t>(u.targets), u.h,
+                                                   Domain{}) <= kMaxAssembledBytes;
+  return full ? u.pairs * c_.spmv_full_s_per_nnz : c_.matrix_free.seconds(u.targets, u.pairs);
+}
 
-  // core_voronoi: the plain grid once per level, the jittered grid per seed.
-  for (int k : paper ? voronoi_study().levels.paper : voronoi_study().levels.quick) {
-    add_voronoi("core_voronoi", "grid", k);
-    for (int s : voronoi_study().seeds) add_voronoi("core_voronoi", "jittered/seed=" + fmt(s), k);
-  }
-  return out;
+// Memory: particles and volumes 25 B, ~8 vectors over the particles (data, solution,
+// right-hand side) 64 B, CG's 6 vectors over Ω 48 B, the assembled storage per non-zero
+// and its diagonal, volumes and row pointers (or the kernel's sorted copies ~40 B per particle).
+double UnitPricer::pde_mib(const PlanUnit& u, bool assembled) const {
+  return c_.base_mib + (u.N * (25 + 64) + u.targets * 48 +
+                        (assembled ? kAssembledBytesPerNonzero * u.pairs + 36 * u.targets : 40 * u.N)) / kMiB;
+}
+
+std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
+  UnitPricer pricer(profile, c);
+  for (auto& study : study_registry()) study.plan(pricer);
+  return pricer.units();
 }
 
 // --- The heat reading matrix priced three ways ---------------------------------------------
@@ -550,15 +453,16 @@ std::vector<HeatMatrixCost> heat_matrix_costs(Profile profile, const Calibration
             its.push_back(th > 0 ? c.heat_its.at(hp.table + "/" + rule + "/" + w + "/" + fmt(th)) *
                                        std::sqrt((dt0 / (h * h)) / r5)
                                  : 0.0);
-          std::vector<double> all;  // every reading of this h rule
+          // Every reading of this h rule; and those of one volumes choice (2 time-step rules).
+          std::vector<double> all, one_volumes;
           for (int r = 0; r < n_readings_per_h; ++r) all.insert(all.end(), its.begin(), its.end());
+          for (int r = 0; r < n_readings_per_h / 2; ++r) one_volumes.insert(one_volumes.end(), its.begin(), its.end());
           for (double n : its) m.alone_s += n_readings_per_h * (setup + K * (1 + n) * single);
           m.per_reading_s += n_readings_per_h * (setup + K * group_step_s(its, single, assembled, c));
           // Batched: one Laplacian (plus a volumes pass for the other volumes, priced as a
           // set-up); matrix-free, each volumes choice has its own Laplacian and no block pass.
           m.batched_s += assembled ? 2 * setup + K * group_step_s(all, single, true, c)
-                                   : 2 * (setup + K * group_step_s(std::vector<double>(all.begin(), all.begin() + all.size() / 2),
-                                                                   single, false, c));
+                                   : 2 * (setup + K * group_step_s(one_volumes, single, false, c));
         }
       }
     }
@@ -582,56 +486,8 @@ double num_or_nan(const std::string& s) {
 std::map<std::pair<std::string, int>, RecordedUnit> recorded_units(
     const std::string& study, const TsvTable& d,
     const std::map<std::pair<std::string, int>, double>& planned_pairs) {
-  std::map<std::pair<std::string, int>, RecordedUnit> out;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  auto level = [&](const std::vector<std::string>& r) {
-    return static_cast<int>(parse_number(r[d.require_column("level")], "level"));
-  };
-  auto v = [&](const std::vector<std::string>& r, const char* name) {
-    return num_or_nan(r[d.require_column(name)]);
-  };
-  // A unit's time is repeated on each of its rows: keep the first.
-  auto put = [&](const std::string& var, int k, double s, double work) {
-    out.emplace(std::make_pair(var, k), RecordedUnit{s, work});
-  };
-  if (study == "imoto_fig5_table1") {
-    for (auto& r : d.rows) put("m=" + r[d.require_column("m")], level(r), v(r, "time_s"), v(r, "pairs"));
-  } else if (std::any_of(thesis_table_specs().begin(), thesis_table_specs().end(),
-                         [&](const ThesisTableSpec& t) { return t.program == study; })) {
-    for (auto& r : d.rows) {
-      const int k = level(r);
-      put(r[d.require_column("h_reading")] + "/" + r[d.require_column("volumes")], k, v(r, "time_s"),
-          v(r, "pairs"));
-      const double vs = v(r, "voronoi_s");  // the level's Voronoi time, on each of its rows
-      if (vs > 0) {
-        auto& slot = out[{"voronoi", k}];
-        slot.seconds = std::max(slot.seconds, vs);
-        slot.pair_interactions = nan;
-      }
-    }
-  } else if (study == "thesis_table4_4") {
-    for (auto& r : d.rows)
-      put(r[d.require_column("h_rule")] + "/" + r[d.require_column("weight")], level(r), v(r, "seconds"),
-          v(r, "nnz") * (v(r, "cg_iterations") + 2));
-  } else if (study.rfind("thesis_table4_", 0) == 0) {  // heat tables
-    for (auto& r : d.rows) {
-      const std::string var = r[d.require_column("weight")] + "/theta=" + r[d.require_column("theta")];
-      const int k = level(r);
-      const double th = v(r, "theta");
-      const double per_step = (th < 1 ? 1 : 0) + (th > 0 ? v(r, "cg_mean_iterations") + 1 : 0);
-      auto it = planned_pairs.find({var, k});
-      put(var, k, v(r, "seconds"),
-          it == planned_pairs.end() ? nan : it->second * v(r, "steps_done") * per_step);
-    }
-  } else if (study == "core_voronoi") {
-    for (auto& r : d.rows) {
-      const std::string dist = r[d.require_column("distribution")];
-      put(dist == "grid" ? std::string("grid") : dist + "/seed=" + r[d.require_column("seed")],
-          level(r), v(r, "time_s"), nan);
-    }
-  } else {
-    throw InputError("recorded_units: study '" + study + "' is not modelled");
-  }
+  RecordedUnits out;
+  registered_study_of_file(study).recorded(study, d, planned_pairs, out);
   return out;
 }
 

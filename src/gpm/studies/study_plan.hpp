@@ -3,7 +3,8 @@
 // peak memory, before anything runs; and, after a run, the time each study recorded for
 // the same unit, so that prediction and measurement can be compared.
 //
-// Modelled studies (the data file's base name is the study's name):
+// Modelled studies: the entries of the study registry (registry.hpp), each pricing its own
+// units with the formulas of UnitPricer below (the data file's base name is the study's):
 //   imoto_fig5_table1           one fused pass (nine weights, one field) per (level, m)
 //   thesis_table4_1, 4_2, 4_3   one fused pass per (h reading, volumes, level), plus the
 //                               Voronoi volumes once per level
@@ -13,10 +14,11 @@
 // Not modelled (their cost is small or not neighbour sums): imoto_regularity (covering
 // radius and LPs), koba_sato_*, the figure programs.
 //
-// The levels, h rules, weight mixes and time-step rules below mirror the study programs
-// (src/apps/<study>.cpp); h comes from the same library functions (imoto_h, thesis_h).  A
-// level or unit in a data file that the plan lacks is reported by the comparison
-// (plan_vs_actual), so a drift between the two shows up in the report.
+// The levels, h rules, weight mixes and time-step rules come from the catalog's definitions
+// (catalog.hpp, thesis_truncation.hpp, heat_tables.hpp), which the study programs read too;
+// h from the same library functions (imoto_h, thesis_h, pde_h).  A level or unit in a data
+// file that the plan lacks is reported by the comparison (plan_vs_actual), so a drift
+// between the two shows up in the report.
 //
 // Times come from a calibration run on the spot (calibrate(): a few seconds), on small
 // levels of the studies' own code paths:
@@ -89,6 +91,36 @@ struct PlanUnit {
 
 std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c);
 
+// The cost formulas every study's plan prices its units with (one place; registry.cpp's
+// entries call them): a unit's particles, targets and pairs at a level and h; a fused pass
+// of a weight mix; a Voronoi decomposition; the Laplacian's storage, product and memory.
+class UnitPricer {
+ public:
+  UnitPricer(Profile profile, const Calibration& c) : profile_(profile), c_(c) {}
+  bool paper() const { return profile_ == Profile::paper; }
+  const Calibration& cal() const { return c_; }
+  std::vector<PlanUnit>& units() { return out_; }
+  // A unit of `study` (its data file's name) with N, targets and pairs at level k and h.
+  PlanUnit base(const std::string& study, const std::string& variant, int k, double h) const;
+  // Appends one fused pass of the weight mix `mix_name` (fused_mixes()).
+  void add_fused(const std::string& study, const std::string& variant, int k, double h,
+                 const std::string& mix_name);
+  // Appends one Voronoi decomposition of the level's particles.
+  void add_voronoi(const std::string& study, const std::string& variant, int k);
+  // The Laplacian of a unit (`pairs` = its non-zeros): assembled unless over the programs'
+  // memory budget; one product (assembled or matrix-free); one product with the full matrix
+  // where it fit (the storage before the symmetric half); the unit's peak memory.
+  bool is_assembled(const PlanUnit& u) const;
+  double product_s(const PlanUnit& u, bool assembled) const;
+  double product_before_s(const PlanUnit& u) const;
+  double pde_mib(const PlanUnit& u, bool assembled) const;
+
+ private:
+  Profile profile_;
+  const Calibration& c_;
+  std::vector<PlanUnit> out_;
+};
+
 // The heat tables' whole reading matrix (2 h rules × 2 volumes × 2 time-step rules, every θ
 // of each table, the profile's levels without trims) priced three ways, per table:
 //   alone       every series streams the Laplacian by itself (before the block product);
@@ -114,6 +146,8 @@ std::vector<std::string> planned_studies();
 struct RecordedUnit {
   double seconds = 0, pair_interactions = 0;
 };
+using PlannedPairs = std::map<std::pair<std::string, int>, double>;
+using RecordedUnits = std::map<std::pair<std::string, int>, RecordedUnit>;
 std::map<std::pair<std::string, int>, RecordedUnit> recorded_units(
     const std::string& study, const TsvTable& data,
     const std::map<std::pair<std::string, int>, double>& planned_pairs);

@@ -1,0 +1,75 @@
+// The study registry (src/gpm/studies/registry.hpp): every study the catalog runs is priced
+// by one registry entry, the plan's studies are the entries' data files, and a data file is
+// read back by the entry that writes it.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <set>
+
+#include "gpm/error.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/studies/catalog.hpp"
+#include "gpm/studies/heat_tables.hpp"
+#include "gpm/studies/registry.hpp"
+#include "gpm/studies/thesis_truncation.hpp"
+
+using namespace gpm;
+
+namespace {
+// A calibration with every key the plan reads (made-up rates: the test checks coverage and
+// bookkeeping, not speed).
+Calibration made_up_calibration() {
+  Calibration c;
+  c.base_mib = 10, c.voronoi_s_per_particle = 1e-6, c.setup_s_per_nnz = 1e-8;
+  c.spmv_s_per_nnz = 1e-9, c.spmv_full_s_per_nnz = 2e-9;
+  c.matrix_free = {1e-7, 1e-8};
+  c.fused["imoto9"] = {1e-7, 1e-8};
+  for (auto& t : thesis_table_specs()) c.fused[t.mix()] = {1e-7, 1e-8};
+  for (const char* rule : {"h10", "h15"})
+    for (auto& w : pde_weights()) {
+      c.poisson_its[std::string(rule) + "/" + w] = 50;
+      for (auto& hp : heat_tables())
+        for (double th : hp.thetas)
+          if (th > 0) c.heat_its[hp.table + "/" + rule + "/" + w + "/" + fmt(th)] = 3;
+    }
+  c.block_ratio = {{3, 0.6}, {6, 0.4}, {12, 0.25}};
+  return c;
+}
+}  // namespace
+
+TEST_CASE("registry: every catalog study is priced, every registered file has units", "[unit][registry]") {
+  std::set<std::string> files;
+  for (auto& s : study_registry()) files.insert(s.files.begin(), s.files.end());
+  for (auto& e : study_catalog()) {
+    INFO("catalog study " << e.name);
+    CHECK(files.count(e.name) == 1);
+  }
+  const auto planned = planned_studies();
+  CHECK(std::set<std::string>(planned.begin(), planned.end()) == files);
+  CHECK(planned.size() == files.size());  // each file once
+  const Calibration c = made_up_calibration();
+  for (Profile p : {Profile::quick, Profile::paper}) {
+    std::set<std::string> priced;
+    for (auto& u : plan_units(p, c)) {
+      priced.insert(u.study);
+      CHECK(u.time_s >= 0);
+    }
+    CHECK(priced == files);
+  }
+  CHECK_THROWS_AS(registered_study_of_file("thesis_table4_9"), InputError);
+}
+
+TEST_CASE("registry: a heat data file read back per unit", "[unit][registry]") {
+  TsvTable d;
+  d.columns = {"weight", "theta", "level", "seconds", "steps_done", "cg_mean_iterations"};
+  d.add_row({"quartic_polynomial", "1", "6", "2.5", "10", "3"});
+  d.add_row({"quartic_polynomial", "0", "6", "0.5", "10", "0"});
+  const PlannedPairs planned = {{{"quartic_polynomial/theta=1", 6}, 1000.0},
+                                {{"quartic_polynomial/theta=0", 6}, 1000.0}};
+  const auto r = recorded_units("thesis_table4_6_h15", d, planned);
+  REQUIRE(r.size() == 2);
+  // θ = 1: (CG its + 1) products per step; θ = 0: one.
+  CHECK(r.at({"quartic_polynomial/theta=1", 6}).pair_interactions == Approx(1000.0 * 10 * 4));
+  CHECK(r.at({"quartic_polynomial/theta=0", 6}).pair_interactions == Approx(1000.0 * 10 * 1));
+  CHECK(r.at({"quartic_polynomial/theta=1", 6}).seconds == 2.5);
+}
