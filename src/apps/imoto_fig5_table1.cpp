@@ -247,11 +247,15 @@ int body(int argc, char** argv) {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       for (std::size_t r = 0; r < nw; ++r) {
         const ImotoWeight& w = kStudy.weights[r];
-        run.add({fmt(level), fmt(m), w.op_label, w.weight, fmt(dx), fmt(h), fmt(p.size()),
-                   fmt(p.count_in_omega()), fmt(e.pairs), fmt(e.errors[r].rel_error),
-                   w.op == Operator::interp ? fmt(interp_smoothing_error(w.weight, h))
-                                            : std::string("NA"),
-                   fmt(secs), fmt(e.kernel_seconds)});
+        TsvRow row = run.row();  // the catalog's columns (imoto_study().columns), by name
+        row["level"] = fmt(level), row["m"] = fmt(m), row["operator"] = w.op_label;
+        row["weight"] = w.weight, row["dx"] = fmt(dx), row["h"] = fmt(h), row["N"] = fmt(p.size());
+        row["N_in_omega"] = fmt(p.count_in_omega()), row["pairs"] = fmt(e.pairs);
+        row["rel_error"] = fmt(e.errors[r].rel_error);
+        // The smoothing part is known in closed form for the interpolant only.
+        row["smoothing_part"] = w.op == Operator::interp ? fmt(interp_smoothing_error(w.weight, h)) : "NA";
+        row["time_s"] = fmt(secs), row["kernel_s"] = fmt(e.kernel_seconds);
+        run.add(row);
       }
       run.unit_done(estimated_pairs(level, m),
                     line_printf("level %d m=%g N=%zu h=%.4g pairs=%.3g %.2fs (%.3g pairs/s)  "

@@ -242,16 +242,24 @@ int body(int argc, char** argv) {
             const Todo& t = todo[here[i]];
             const HeatResult& res = rs[i];
             const HeatReading& r = readings[t.reading];
+            // The row, by column name (heat_columns()); a blown-up series has no error.
             const std::string na = "NA";
-            run.add(t.reading,
-                    {wname, fmt(t.theta), fmt(k), fmt(dx), fmt(h), fmt(p.size()), fmt(L.n_unknowns()),
-                     L.assembled() ? "assembled" : "matrix_free", fmt(static_cast<long long>(res.K)), fmt(res.dt),
-                     res.blew_up ? na : fmt(res.rel_error), res.blew_up ? na : fmt(res.rel_error_max),
-                     fmt(res.growth_max), res.blew_up ? "yes" : "no",
-                     res.blew_up ? fmt(static_cast<long long>(res.blowup_step)) : na,
-                     res.blew_up ? fmt(res.growth) : na, res.blew_up ? fmt(res.amplification) : na,
-                     fmt(static_cast<long long>(res.steps_done)), fmt(res.mean_cg_iterations),
-                     fmt(res.max_rel_residual), fmt(res.seconds_per_step), fmt(res.seconds)});
+            TsvRow row = run.row();
+            row["weight"] = wname, row["theta"] = fmt(t.theta), row["level"] = fmt(k);
+            row["dx"] = fmt(dx), row["h"] = fmt(h), row["N"] = fmt(p.size());
+            row["N_omega"] = fmt(L.n_unknowns()), row["storage"] = L.assembled() ? "assembled" : "matrix_free";
+            row["K"] = fmt(static_cast<long long>(res.K)), row["dt"] = fmt(res.dt);
+            row["rel_error"] = res.blew_up ? na : fmt(res.rel_error);
+            row["rel_error_max"] = res.blew_up ? na : fmt(res.rel_error_max);
+            row["growth_max"] = fmt(res.growth_max), row["blew_up"] = res.blew_up ? "yes" : "no";
+            row["blowup_step"] = res.blew_up ? fmt(static_cast<long long>(res.blowup_step)) : na;
+            row["growth"] = res.blew_up ? fmt(res.growth) : na;
+            row["amplification"] = res.blew_up ? fmt(res.amplification) : na;
+            row["steps_done"] = fmt(static_cast<long long>(res.steps_done));
+            row["cg_mean_iterations"] = fmt(res.mean_cg_iterations);
+            row["max_rel_residual"] = fmt(res.max_rel_residual);
+            row["s_per_step"] = fmt(res.seconds_per_step), row["seconds"] = fmt(res.seconds);
+            run.add(t.reading, row);
             const std::string head = line_printf(
                 "%s%s%s: %-28s theta=%-3g dx=2^-%d h=%.4f K=%ld ", ts.table.c_str(),
                 readings.size() > 1 ? " " : "", readings.size() > 1 ? r.name().c_str() : "",

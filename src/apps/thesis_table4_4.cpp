@@ -87,11 +87,15 @@ int body(int argc, char** argv) {
           if (p.in_omega[i]) err = std::max(err, std::fabs(d.g[i] - r.U[i]));
         const double secs =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        run.add({rule, wname, fmt(k), fmt(dx), fmt(h), fmt(p.size()),
-                   fmt(L.n_unknowns()), fmt(static_cast<long long>(L.nnz())),
-                   L.assembled() ? "assembled" : "matrix_free", fmt(err / d.umax),
-                   fmt(r.cg.iterations), fmt(r.cg.rel_residual), fmt(L.assembly_seconds()),
-                   fmt(r.solve_seconds), fmt(secs)});
+        TsvRow row = run.row();  // poisson_table().columns, by name
+        row["h_rule"] = rule, row["weight"] = wname, row["level"] = fmt(k), row["dx"] = fmt(dx);
+        row["h"] = fmt(h), row["N"] = fmt(p.size()), row["N_omega"] = fmt(L.n_unknowns());
+        row["nnz"] = fmt(static_cast<long long>(L.nnz()));
+        row["storage"] = L.assembled() ? "assembled" : "matrix_free";
+        row["rel_error"] = fmt(err / d.umax), row["cg_iterations"] = fmt(r.cg.iterations);
+        row["rel_residual"] = fmt(r.cg.rel_residual), row["assembly_s"] = fmt(L.assembly_seconds());
+        row["solve_s"] = fmt(r.solve_seconds), row["seconds"] = fmt(secs);
+        run.add(row);
         run.unit_done(0, line_printf("%s %-28s dx=2^-%d h=%.4f N=%zu nnz=%.3g %s  err=%.4e  "
                                      "CG %d it (res %.1e)  %.1f s",
                                      rule.c_str(), wname.c_str(), k, h, p.size(),

@@ -71,3 +71,15 @@ TEST_CASE("Args rejects unknown options and missing values", "[args]") {
   a.parse(2, const_cast<char**>(argv3));
   CHECK_THROWS_AS(a.positive("h"), InputError);
 }
+
+TEST_CASE("TsvRow: cells by column name, unknown and unset names refused", "[unit][tsv]") {
+  TsvTable t;
+  t.columns = {"level", "h", "rel_error"};
+  TsvRow r = t.named_row();
+  r["rel_error"] = "0.5", r["level"] = "7";
+  CHECK_THROWS_AS(r.cells(), std::logic_error);  // h left unset
+  r["h"] = "0.1";
+  t.add_row(r);
+  CHECK(t.rows.back() == std::vector<std::string>{"7", "0.1", "0.5"});
+  CHECK_THROWS_AS(r["H"], std::logic_error);  // not a column
+}

@@ -43,6 +43,24 @@ std::optional<std::string> TsvTable::get(const std::string& key) const {
 
 void TsvTable::add_row(std::vector<std::string> row) { rows.push_back(std::move(row)); }
 
+TsvRow::TsvRow(std::vector<std::string> columns)
+    : columns_(std::move(columns)), cells_(columns_.size()), set_(columns_.size(), false) {}
+
+std::string& TsvRow::operator[](const std::string& name) {
+  for (std::size_t c = 0; c < columns_.size(); ++c)
+    if (columns_[c] == name) {
+      set_[c] = true;
+      return cells_[c];
+    }
+  throw std::logic_error("row: '" + name + "' is not a column");
+}
+
+std::vector<std::string> TsvRow::cells() const {
+  for (std::size_t c = 0; c < columns_.size(); ++c)
+    if (!set_[c]) throw std::logic_error("row: column '" + columns_[c] + "' left unset");
+  return cells_;
+}
+
 int TsvTable::column(const std::string& name) const {
   for (std::size_t c = 0; c < columns.size(); ++c)
     if (columns[c] == name) return static_cast<int>(c);

@@ -16,6 +16,23 @@
 
 namespace gpm {
 
+// A row filled by column name — row["h"] = fmt(h) — instead of by position, so that a row
+// and its column list, often in different files, cannot drift apart: a name that is not a
+// column throws at once, a column left unset throws when the cells are taken (both
+// std::logic_error: a programming error, not bad input).
+class TsvRow {
+ public:
+  explicit TsvRow(std::vector<std::string> columns);
+  std::string& operator[](const std::string& name);
+  // Every cell, in column order.
+  std::vector<std::string> cells() const;
+  const std::vector<std::string>& columns() const { return columns_; }
+
+ private:
+  std::vector<std::string> columns_, cells_;
+  std::vector<bool> set_;
+};
+
 struct TsvTable {
   std::vector<std::pair<std::string, std::string>> meta;  // ordered `# key = value`
   std::vector<std::string> columns;
@@ -28,6 +45,9 @@ struct TsvTable {
   void set(const std::string& key, double value);
   std::optional<std::string> get(const std::string& key) const;
   void add_row(std::vector<std::string> row);
+  // An empty row of this table's columns, and that row once filled (its cells in order).
+  TsvRow named_row() const { return TsvRow(columns); }
+  void add_row(const TsvRow& row) { add_row(row.cells()); }
   int column(const std::string& name) const;  // -1 if absent
   // The column's index, or an InputError naming the file and the missing column.
   int require_column(const std::string& name) const;

@@ -96,6 +96,7 @@ std::vector<LevelCache*> StudyRunner::open_files(std::vector<DataFile> files,
                                                  std::vector<std::string> columns,
                                                  int key_columns) {
   if (!caches_.empty()) throw std::logic_error("StudyRunner: data files opened twice");
+  columns_ = columns;
   std::vector<LevelCache*> out;
   for (auto& f : files) {
     for (auto& p : paths_)

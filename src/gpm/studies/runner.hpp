@@ -113,6 +113,10 @@ class StudyRunner {
   // gathering in finish() on several).
   void add(std::vector<std::string> row) { add(0, std::move(row)); }
   void add(std::size_t file, std::vector<std::string> row);
+  // A row of the study's own columns filled by name (TsvRow), and that row added.
+  TsvRow row() const { return TsvRow(columns_); }
+  void add(const TsvRow& row) { add(0, row.cells()); }
+  void add(std::size_t file, const TsvRow& row) { add(file, row.cells()); }
   int rank() const { return rank_; }
   int ranks() const { return size_; }
 
@@ -142,6 +146,7 @@ class StudyRunner {
   CacheMode mode_ = CacheMode::run;
   std::vector<std::unique_ptr<LevelCache>> caches_;  // open() or open_files()
   std::vector<std::string> paths_;
+  std::vector<std::string> columns_;  // the study's own (open_files)
   std::vector<std::size_t> saved_added_;  // rows each file had added when last written
   std::unique_ptr<Progress> progress_;
   double done_ = 0;
