@@ -345,10 +345,14 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
           std::string label;
           for (auto& c : thesis_cases())
             if (c.function == er.function) label = c.label;
-          run.add({h_reading_name(r), volumes_name(v), fmt(k), er.weight,
-                     operator_name(er.op), label, fmt(dx), fmt(h), fmt(h / dom.H),
-                     fmt(p.size()), fmt(p.count_in_omega()), fmt(e.pairs), fmt(er.rel_error),
-                     fmt(pass_s), fmt(vor_s), fmt(rss)});
+          TsvRow row = run.row();  // thesis_table_columns(), by name
+          row["h_reading"] = h_reading_name(r), row["volumes"] = volumes_name(v), row["level"] = fmt(k);
+          row["weight"] = er.weight, row["operator"] = operator_name(er.op), row["function"] = label;
+          row["dx"] = fmt(dx), row["h"] = fmt(h), row["h_over_H"] = fmt(h / dom.H);
+          row["N"] = fmt(p.size()), row["N_omega"] = fmt(p.count_in_omega()), row["pairs"] = fmt(e.pairs);
+          row["rel_error"] = fmt(er.rel_error), row["time_s"] = fmt(pass_s), row["voronoi_s"] = fmt(vor_s);
+          row["peak_rss_mib"] = fmt(rss);
+          run.add(row);
         }
         run.unit_done(predicted_pairs(dx, h),
                       line_printf("level %d %s/%s h=%.5g%s N=%zu pairs=%.3g pass %.2fs "
