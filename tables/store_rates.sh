@@ -118,9 +118,10 @@ for t in 4_5 4_6 4_7; do
       "$pub/thesis_table${t}_long.tsv" "$f" >> "$tmp/blown.tsv"
   done
 done
-# imoto: seed 1 is the reproduction; seeds 2, 3 and the plain grid (no jitter) show how much
-# of a rate is one realization's particle noise.
-for v in all seed2 seed3 plain; do
+# imoto: seed 1 is the reproduction; seeds 2-6 (where stored) and the plain grid (no jitter)
+# show how much of a rate is one realization's particle noise; cellvol (where stored) is the
+# delta-free error, V_i = dx^2 instead of |Omega_H|/N.
+for v in all seed2 seed3 seed4 seed5 seed6 plain cellvol; do
   f=$store/imoto_fig5_table1.tsv
   [ $v = all ] || f=$store/imoto_fig5_table1_$v.tsv
   if [ -f "$f" ]; then
@@ -161,7 +162,8 @@ identified_h=$(sed -n 's/^# decided_h_rule = \([a-z0-9]*\).*/\1/p' "$ident")
       { k = $c[keys[1]]; for (j=2;j<=nk;j++) k = k " " $c[keys[j]];
         seed = match(s, /seed[0-9]+$/) ? substr(s, RSTART) : ""
         setup = s ~ /uniform/ ? "beyond the document (uniform volumes)" \
-              : seed != "" ? "another jitter realization" : s == "plain" ? "plain grid (no jitter)" : "document"
+              : seed != "" ? "another jitter realization" : s == "plain" ? "plain grid (no jitter)" \
+              : (t == "imoto_table1" && s == "cellvol") ? "delta-free volumes (V_i = dx^2)" : "document"
         sl = s
         # Table 4.4 prints one rate per weight for both readings of h: one slice per reading.
         if (t == "thesis_table4_4") { sl = $c["h_rule"] (seed != "" ? "_" seed : "") (s == "cellvol" ? "_cell" : ""); k = $c["weight"] }
