@@ -1,6 +1,6 @@
 // bench_kernel: throughput of the neighbour-sum kernel (pairs with r < h per second).
 //
-// Setting (notes/kernel-throughput.md): jittered grid Δx = 2^-9 (seed 1), h = 0.03, uniform
+// Setting (the report's performance appendix, paper/60-performance.md): jittered grid Δx = 2^-9 (seed 1), h = 0.03, uniform
 // volumes, targets = the particles in Ω (262,144), one field (sin 2π(x+y)).  The pairs
 // (target, i) with |x_i − x_j| < h, the target itself included, are counted once, untimed;
 // every rate is that count divided by the wall time of one kernel call (best of the

@@ -8,7 +8,7 @@
 // with q = r/h and G(q) = w(q)/q² — imoto (2)–(4) = thesis (1.2)–(1.4) written with
 // w_h(r) = w(q)/h² and 1/r² = 1/(h² q²).  d = 2.
 //
-// How (see notes/kernel-throughput.md; measured gains in bench/bench_kernel.cpp):
+// How (measured gains: bench/bench_kernel.cpp and the report's performance appendix, paper/60-performance.md):
 //  * particles sorted by cells of size h/cells_per_h (CellList, default h/4), structure of
 //    arrays, the volumes and the fields gathered into the sorted order; targets processed
 //    in cell order (locality), OpenMP dynamic schedule over chunks of targets;
