@@ -53,7 +53,7 @@ const std::vector<HRule> kHRules = {{"printed", "h10"}, {"scaled", "h15"}};
 // products there); the paper profile goes to 2^-9 (matrix-free at 2^-8, 2^-9 for printed h).
 // The quick profile adds the coarse 2^-4 so that its limits against Δx are a trend of
 // three points, not a line through two (2^-7 would cost minutes).
-const std::vector<int> kQuick = {4, 5, 6}, kPaper = {5, 6, 7, 8, 9};
+const ProfileLevels kLevels = {{4, 5, 6}, {5, 6, 7, 8, 9}};  // quick, paper
 constexpr double kKappa = 0.5;
 constexpr double kThetaQ = 0.25;       // the implicit-but-not-unconditional case
 constexpr double kBelow = 0.9, kAbove = 1.1;
@@ -65,7 +65,7 @@ int body(int argc, char** argv) {
                   "heat problem, from the largest eigenvalue of the discrete Laplacian (Lanczos),\n"
                   "confirmed by runs at 0.9 and 1.1 times the limit, against the bound (3.3).\n"
                   "--seed jitters the particles; the start vectors use seed 1.",
-                  "quick (dx = 2^-4..2^-6) or paper (2^-5..2^-9)");
+                  kLevels.help());
   Args& a = run.args();
   a.opt("tol", "1e-4", "Lanczos: stop when the Ritz residual <= tol * lambda_max")
       .opt("steps", "100", "confirmation runs: at most this many steps")
@@ -80,7 +80,7 @@ int body(int argc, char** argv) {
   if (!(stop_growth > 1)) throw InputError("--stop-growth must exceed 1, got " + a.str("stop-growth"));
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
-  const std::vector<int> levels = run.levels(kQuick, kPaper);
+  const std::vector<int> levels = run.levels(kLevels.quick, kLevels.paper);
 
   // --- The data file: one row per (weight, h rule, level). --------------------------------
   LevelCache& cache = run.open(
