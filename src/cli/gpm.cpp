@@ -37,6 +37,7 @@
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/solvers/poisson_probes.hpp"
 #include "gpm/studies/catalog.hpp"
+#include "gpm/studies/heat_tables.hpp"
 #include "gpm/studies/profile.hpp"
 #include "gpm/studies/store.hpp"
 #include "gpm/theory/smoothing.hpp"
@@ -487,8 +488,10 @@ int cmd_store_seal(int argc, char** argv) {
 int cmd_study(int argc, char** argv) {
   const std::string first = argc >= 3 ? argv[2] : "";
   if (first == "--help" || first == "-h") {
-    std::cout << "usage: gpm study --list | gpm study NAME [options of its program]\n"
+    std::cout << "usage: gpm study --list | gpm study --readings | gpm study NAME [options of its program]\n"
                  "  --list      every catalog study: document item, program, levels per profile\n"
+                 "  --readings  the heat tables' set-up readings: name, h rule, volumes, time step,\n"
+                 "              store file suffix (thesis_heat's {reading})\n"
                  "  NAME        runs the study's program with its fixed arguments, then the\n"
                  "              options given (e.g. --profile quick --out FILE); see\n"
                  "              gpm study NAME --help for them\n";
@@ -512,6 +515,16 @@ int cmd_study(int argc, char** argv) {
     }
     print(t);
     return first.empty() ? 2 : 0;
+  }
+  if (first == "--readings") {
+    TsvTable t;
+    t.set("program", "gpm study --readings");
+    add_provenance(t);
+    t.columns = {"reading", "h_rule", "volumes", "dt_rule", "file_suffix"};
+    for (auto& r : heat_reading_matrix({"h10", "h15"}, {"lattice", "cell"}, {"fit", "exact"}))
+      t.add_row({r.name(), r.h_rule, r.volumes, r.dt_rule, r.file_suffix()});
+    print(t);
+    return 0;
   }
   const CatalogEntry& e = catalog_entry(first);
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe");
