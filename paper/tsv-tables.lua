@@ -11,6 +11,18 @@
 -- that regenerates it, and for each data file it plots (its `data="a.tsv,b.tsv"` attribute,
 -- else the `datadir.'/x.tsv'` names found in figures/<name>.gp and the scripts it loads)
 -- the program, its command line, profile, seed, git revision and wall time.
+--
+-- Numbers in the prose are read from data files too, never typed:
+--   []{.datum file="store_score.tsv" where="table=total,slice=as printed" column="agrees"}
+-- becomes the value of that cell (column may be "a-b" or "a+b" of two columns; sum="yes"
+-- adds the column over every matching row; a where value "~PATTERN" is a Lua pattern), and
+--   []{.counts file=... where=... columns="agrees:agree,unexplained:unexplained" total="rates"}
+-- becomes "18 agree, 31 unexplained …": the listed columns that are not zero, which must add
+-- up to the total column, so that no category is left out unnoticed.
+-- A Div of class page-one (title page: abstract and verdict table) is set before the table
+-- of contents (pandoc's abstract slot).  A raw caret in text (2^-8, h^2, (x)^{1/5}) is set as
+-- a superscript, and a table cell that is nan must have its word: the block's nan attribute,
+-- "what failed" for every column or "column=what failed,…" per column.
 
 local datadir = "data/quick"
 
@@ -47,6 +59,121 @@ local function read_tsv(path)
   f:close()
   if not header then fail("data file has no header: " .. path) end
   return meta, header, rows
+end
+
+local tsv_cache = {}
+local function read_tsv_cached(path)
+  if not tsv_cache[path] then
+    local meta, header, rows = read_tsv(path)
+    tsv_cache[path] = {meta = meta, header = header, rows = rows}
+  end
+  return tsv_cache[path]
+end
+
+local function column_index(t, name, path)
+  for i, h in ipairs(t.header) do if h == name then return i end end
+  fail("column '" .. name .. "' not in " .. path)
+end
+
+-- The rows of a data file that satisfy where="col=value,col=~pattern".
+local function matching_rows(el)
+  local file = el.attributes["file"] or fail("datum without file= attribute")
+  local path = file:sub(1, 1) == "/" and file or (datadir .. "/" .. file)
+  local t = read_tsv_cached(path)
+  local conds = {}
+  for _, c in ipairs(split(el.attributes["where"] or "", ",")) do
+    local k, v = c:match("^([^=]+)=(.*)$")
+    if k then table.insert(conds, {idx = column_index(t, k, path), val = v}) end
+  end
+  local out = {}
+  for _, r in ipairs(t.rows) do
+    local ok = true
+    for _, c in ipairs(conds) do
+      local cell = r[c.idx] or ""
+      if c.val:sub(1, 1) == "~" then ok = ok and cell:match("^" .. c.val:sub(2) .. "$") ~= nil
+      else ok = ok and cell == c.val end
+    end
+    if ok then table.insert(out, r) end
+  end
+  if #out == 0 then fail("no row of " .. path .. " where " .. (el.attributes["where"] or "")) end
+  return t, path, out
+end
+
+-- The number in column spec ("name", "a-b" or "a+b") of row r.
+local function column_value(t, path, r, spec)
+  local a, op, b = spec:match("^([%w_]+)([%+%-])([%w_]+)$")
+  local function num(name)
+    local v = tonumber(r[column_index(t, name, path)])
+    if not v then fail("column '" .. name .. "' of " .. path .. " is not a number") end
+    return v
+  end
+  if a then return op == "+" and num(a) + num(b) or num(a) - num(b) end
+  return r[column_index(t, spec, path)]
+end
+
+-- meta="key": a header line's value instead of a cell; map="value=words;value=words": the
+-- words the prose gives for each value the data may hold (a value without words stops the build).
+local function datum_words(el, v)
+  local map = el.attributes["map"]
+  if not map then return pandoc.Str(tostring(v)) end
+  for _, e in ipairs(split(map, ";")) do
+    local k, words = e:match("^([^=]+)=(.*)$")
+    if k == v then return pandoc.Str(words) end
+  end
+  fail("datum value '" .. tostring(v) .. "' has no words in the map of " .. (el.attributes["file"] or "?"))
+end
+
+local function datum(el)
+  if el.attributes["meta"] then
+    local file = el.attributes["file"] or fail("datum without file= attribute")
+    local t = read_tsv_cached(datadir .. "/" .. file)
+    local v = t.meta[el.attributes["meta"]] or fail("no header line '" .. el.attributes["meta"] .. "' in " .. file)
+    return datum_words(el, v)
+  end
+  local t, path, rows = matching_rows(el)
+  local spec = el.attributes["column"] or fail("datum without column= attribute")
+  local v
+  if el.attributes["sum"] == "yes" then
+    v = 0
+    for _, r in ipairs(rows) do v = v + tonumber(column_value(t, path, r, spec)) end
+  else
+    if #rows > 1 then fail(#rows .. " rows of " .. path .. " where " .. el.attributes["where"] .. ": a datum needs one") end
+    v = column_value(t, path, rows[1], spec)
+  end
+  if type(v) == "number" and v == math.floor(v) then v = string.format("%d", v) end
+  return datum_words(el, v)
+end
+
+local function counts(el)
+  local t, path, rows = matching_rows(el)
+  if #rows > 1 then fail(#rows .. " rows of " .. path .. " where " .. el.attributes["where"] .. ": counts need one") end
+  local r, parts, sum = rows[1], {}, 0
+  for _, spec in ipairs(split(el.attributes["columns"] or fail("counts without columns="), ",")) do
+    local name, word = spec:match("^([^:]+):(.*)$")
+    local v = tonumber(column_value(t, path, r, name or spec)) or fail("column '" .. spec .. "' of " .. path .. " is not a number")
+    sum = sum + v
+    if v ~= 0 then table.insert(parts, string.format("%d %s", v, word or spec)) end
+  end
+  local total = tonumber(column_value(t, path, r, el.attributes["total"] or fail("counts without total=")))
+  if sum ~= total then
+    fail(string.format("counts of %s add up to %d, not %s = %d: a category is missing", path, sum, el.attributes["total"], total))
+  end
+  local text = #parts > 1 and (table.concat(parts, ", ", 1, #parts - 1) .. " and " .. parts[#parts]) or (parts[1] or "none")
+  return pandoc.Str(text)
+end
+
+-- "nan" in a table cell: the word the block gives for its column (nan="word" or
+-- nan="col=word,col=word"); without one the build stops.
+local function nan_word(el, column, path)
+  local spec = el.attributes["nan"]
+  if spec then
+    if not spec:find("=") then return spec end
+    for _, e in ipairs(split(spec, ",")) do
+      local k, v = e:match("^([^=]+)=(.*)$")
+      if k == column then return v end
+    end
+  end
+  fail("a nan cell in column '" .. column .. "' of " .. path .. " without a word saying what failed (nan= attribute)")
 end
 
 local function fmtnum(s, digits)
@@ -190,7 +317,11 @@ local function tsv_block(el)
     if not fidx or r[fidx] == fval then
       local cells = {}
       for _, c in ipairs(cols) do
-        table.insert(cells, {pandoc.Plain(pandoc.Str(fmtnum(r[c.idx] or "", digits)))})
+        local v = fmtnum(r[c.idx] or "", digits)
+        if v:lower():match("^[%-%+]?nan$") then v = nan_word(el, header[c.idx], path) end
+        -- A long identifier (thesis_table4_5_h15) may wrap after an underscore, nowhere else.
+        v = v:gsub("_", "_\u{200B}")
+        table.insert(cells, {pandoc.Plain(pandoc.Str(v))})
       end
       table.insert(body, cells)
     end
@@ -199,6 +330,50 @@ local function tsv_block(el)
   local prov = provenance(path, meta, "make " .. path .. " PROFILE=" .. profile)
   local simple = pandoc.SimpleTable({pandoc.Str(caption)}, aligns, widths, heads, body)
   return {pandoc.utils.from_simple_table(simple), prov}
+end
+
+-- A raw caret in text, "2^-8", "h^2", "(x)^{1/5}": the exponent as a superscript (with a
+-- true minus sign), so that no source or data file's plain-text notation reaches the page.
+local function caret_inlines(text)
+  if not text:find("^", 1, true) then return nil end
+  local out, pos = {}, 1
+  while true do
+    local s, e, exp = text:find("%^{([^}]*)}", pos)
+    local s2, e2, exp2 = text:find("%^(%-?[%d%.]*%d)", pos)
+    if s2 and (not s or s2 < s) then s, e, exp = s2, e2, exp2 end
+    if not s then break end
+    if s > pos then table.insert(out, pandoc.Str(text:sub(pos, s - 1))) end
+    table.insert(out, pandoc.Superscript({pandoc.Str((exp:gsub("%-", "−")))}))
+    pos = e + 1
+  end
+  if #out == 0 then return nil end
+  if pos <= #text then table.insert(out, pandoc.Str(text:sub(pos))) end
+  return out
+end
+
+-- Page one: the blocks of the page-one Div go to the abstract slot, before the table of
+-- contents; the provenance of its tables is kept for the appendix.
+local function lift_page_one(doc)
+  local out, prov = {}, {}
+  for _, b in ipairs(doc.blocks) do
+    if b.t == "Div" and b.classes:includes("page-one") then
+      local kept = {}
+      for _, x in ipairs(b.content) do
+        if x.t == "Div" and x.classes:includes("provenance") then table.insert(prov, x)
+        else table.insert(kept, x) end
+      end
+      doc.meta.abstract = pandoc.MetaBlocks(kept)
+      doc.meta["abstract-title"] = pandoc.MetaInlines({pandoc.Str("Abstract")})
+    else
+      table.insert(out, b)
+    end
+  end
+  -- Its provenance heads the first chapter's, so that the appendix still lists every table.
+  local i = 1
+  while i <= #out and not (out[i].t == "Header" and out[i].level == 1) do i = i + 1 end
+  for k = #prov, 1, -1 do table.insert(out, i + 1, prov[k]) end
+  doc.blocks = out
+  return doc
 end
 
 -- The reader's order: one short line per chapter naming its data files, and every table's
@@ -257,6 +432,10 @@ return {
     CodeBlock = function(el)
       if el.classes:includes("tsv") then return tsv_block(el) end
     end,
+    Span = function(el)
+      if el.classes:includes("datum") then return datum(el) end
+      if el.classes:includes("counts") then return counts(el) end
+    end,
     Image = function(el)
       if not exists(el.src) then fail("figure missing: " .. el.src) end
     end,
@@ -268,5 +447,7 @@ return {
       end
     end
   },
+  { Str = function(el) return caret_inlines(el.text) end },
+  { Pandoc = lift_page_one },
   { Pandoc = gather_provenance }
 }
