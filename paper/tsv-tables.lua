@@ -277,6 +277,30 @@ local function figure_provenance(img)
   return provenance(items, nil, cmd)
 end
 
+-- A cell's text as inlines that wrap between words only: a browser also breaks after a
+-- hyphen or a slash ("other-|levels", "1.5e-|16"), so a piece holding one is kept on one
+-- line (class nobr, paper/style.css).  A long identifier (thesis_table4_5_h15) may wrap after
+-- an underscore, a long formula after a plus: a zero-width space marks those points.
+local function cell_inlines(v)
+  v = v:gsub("_", "_\u{200B}")
+  local out = {}
+  for word, space in v:gmatch("(%S+)(%s*)") do
+    if #word > 20 then word = word:gsub("%+", "+\u{200B}") end
+    local parts = {}
+    for piece in (word .. "\u{200B}"):gmatch("(.-)\u{200B}") do table.insert(parts, piece) end
+    for i, piece in ipairs(parts) do
+      if i > 1 then table.insert(out, pandoc.Str("\u{200B}")) end
+      if piece:find("[-/]") or piece:find("–", 1, true) or piece:find("−", 1, true) then
+        table.insert(out, pandoc.Span({pandoc.Str(piece)}, pandoc.Attr("", {"nobr"})))
+      elseif piece ~= "" then
+        table.insert(out, pandoc.Str(piece))
+      end
+    end
+    if space ~= "" then table.insert(out, pandoc.Space()) end
+  end
+  return out
+end
+
 local function tsv_block(el)
   local file = el.attributes["file"]
   if not file then fail("tsv block without file= attribute") end
@@ -309,7 +333,7 @@ local function tsv_block(el)
   end
   local heads, aligns, widths, body = {}, {}, {}, {}
   for _, c in ipairs(cols) do
-    table.insert(heads, {pandoc.Plain(pandoc.Str(c.label))})
+    table.insert(heads, {pandoc.Plain(cell_inlines(c.label))})
     table.insert(aligns, pandoc.AlignDefault)
     table.insert(widths, 0)
   end
@@ -319,9 +343,7 @@ local function tsv_block(el)
       for _, c in ipairs(cols) do
         local v = fmtnum(r[c.idx] or "", digits)
         if v:lower():match("^[%-%+]?nan$") then v = nan_word(el, header[c.idx], path) end
-        -- A long identifier (thesis_table4_5_h15) may wrap after an underscore, nowhere else.
-        v = v:gsub("_", "_\u{200B}")
-        table.insert(cells, {pandoc.Plain(pandoc.Str(v))})
+        table.insert(cells, {pandoc.Plain(cell_inlines(v))})
       end
       table.insert(body, cells)
     end
@@ -332,14 +354,15 @@ local function tsv_block(el)
   return {pandoc.utils.from_simple_table(simple), prov}
 end
 
--- A raw caret in text, "2^-8", "h^2", "(x)^{1/5}": the exponent as a superscript (with a
+-- A raw caret in text, "2^-8", "h^2", "10^-(m-1)", "(x)^{1/5}": the exponent as a superscript (with a
 -- true minus sign), so that no source or data file's plain-text notation reaches the page.
 local function caret_inlines(text)
   if not text:find("^", 1, true) then return nil end
   local out, pos = {}, 1
   while true do
     local s, e, exp = text:find("%^{([^}]*)}", pos)
-    local s2, e2, exp2 = text:find("%^(%-?[%d%.]*%d)", pos)
+    local s2, e2, exp2 = text:find("%^(%-?%b())", pos)
+    if not s2 then s2, e2, exp2 = text:find("%^(%-?[%w%.]+)", pos) end
     if s2 and (not s or s2 < s) then s, e, exp = s2, e2, exp2 end
     if not s then break end
     if s > pos then table.insert(out, pandoc.Str(text:sub(pos, s - 1))) end
@@ -438,6 +461,9 @@ return {
     end,
     Image = function(el)
       if not exists(el.src) then fail("figure missing: " .. el.src) end
+      -- The figure's name survives --self-contained (as data-figure), for the browser check.
+      local base = el.src:match("([%w_%-]+)%.svg$")
+      if base then el.attributes["figure"] = base; return el end
     end,
     -- A figure (an image alone in its paragraph) is followed by its provenance line.
     Para = function(el)
