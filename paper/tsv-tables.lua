@@ -112,13 +112,14 @@ local function column_value(t, path, r, spec)
 end
 
 -- meta="key": a header line's value instead of a cell; map="value=words;value=words": the
--- words the prose gives for each value the data may hold (a value without words stops the build).
+-- words the prose gives for each value the data may hold, a value being a Lua pattern
+-- ("h15.*") or the value itself (a value without words stops the build).
 local function datum_words(el, v)
   local map = el.attributes["map"]
   if not map then return pandoc.Str(tostring(v)) end
   for _, e in ipairs(split(map, ";")) do
     local k, words = e:match("^([^=]+)=(.*)$")
-    if k == v then return pandoc.Str(words) end
+    if k == v or tostring(v):match("^" .. k .. "$") then return pandoc.Str(words) end
   end
   fail("datum value '" .. tostring(v) .. "' has no words in the map of " .. (el.attributes["file"] or "?"))
 end
@@ -282,6 +283,9 @@ end
 -- line (class nobr, paper/style.css).  A long identifier (thesis_table4_5_h15) may wrap after
 -- an underscore, a long formula after a plus: a zero-width space marks those points.
 local function cell_inlines(v)
+  -- The author's name as a word (a program's label "imoto §5 (Π1)"), not inside a file name,
+  -- an identifier or a command line, is set capitalized.
+  if not v:find(" --", 1, true) then v = v:gsub("%f[%w_/%-]imoto%f[^%w_%-]", "Imoto") end
   v = v:gsub("_", "_\u{200B}")
   local out = {}
   for word, space in v:gmatch("(%S+)(%s*)") do

@@ -11,8 +11,8 @@
 #   cor71      Corollary 7.1: printed coefficients that hold (koba_sato_cor71.tsv, holds);
 #   bounds     Theorems 1.3–1.6: cases where a bound falls below the measured error
 #              (koba_sato_bounds_summary.tsv, violations);
-#   covering   imoto's covering bound: (level, seed) pairs where it holds (imoto_regularity_cover.tsv);
-#   fig3       imoto Fig. 3: r_N of the uniform against the non-uniform distribution;
+#   covering   Imoto's covering bound: (level, seed) pairs where it holds (imoto_regularity_cover.tsv);
+#   fig3       Imoto Fig. 3: r_N of the uniform against the non-uniform distribution;
 #   count      N of the distribution at Δx = 2⁻⁵ against the printed 1521 (core_voronoi.tsv);
 #   weights W  the plotted weights: printed formulas that fail normalization
 #              (core_weights_errata.tsv) and the norm of the corrected ones (core_weights.tsv);
