@@ -210,7 +210,7 @@ span() {
         E += 1 - (1 - px) * (1 - py) }
       END { printf "2^-%d: N = %d in the square, %d in the rounded neighbourhood; %.0f expected to leave; volume mismatch %+.3f%% mirrored, %+.3f%% dropped;", k, n, r, E, 100 * (A / (n * dx * dx) - 1), 100 * (A / ((n - E) * dx * dx) - 1) }')"
   done
-  printf 'Omega_H: the square (-H, 1+H)^2 or the rounded H-neighbourhood of Omega; jittered particles that leave Omega_H mirrored back or dropped\t%s\tthe square: its node count at 2^-5 is the N printed with Figure 4.1; particles mirrored (kept), the dropped alternative changes the volume mismatch by the amounts listed\n' "$ev"
+  printf 'Omega_H: the square (-H, 1+H)^2 or the rounded H-neighbourhood of Omega; jittered particles that leave Omega_H mirrored back or dropped\t%s\tthe square: Imoto Sec. 5 sets Omega_H = (-0.1, 1.1)^2 in so many words, and its node count at 2^-5 is the N printed with Figure 4.1; particles mirrored (kept), the dropped alternative changes the volume mismatch by the amounts listed\n' "$ev"
 
   # --- w^bell of the heat and Poisson studies (thesis §4.2-4.3). -------------------------------
   printf 'w^bell of Sections 4.2-4.3: which registry weight\tthesis 4.1.2: the operators with the quartic polynomial are those of SPH with the bell-shaped kernel (Remark A.1: w = -(r/d) d/dr w^S); the unit test "quartic_polynomial is -(r/2) d/dr of the bell-shaped kernel" checks the registry weight against central differences of (5/pi)(1+3r)(1-r)^3 at r = 0.05..0.95\tquartic_polynomial (and piecewise cubic / quintic polynomial for w^cubic, w^quintic, by the same remark)\n'
