@@ -260,6 +260,36 @@ local function figure_data(img)
   return names
 end
 
+-- A caption may only name what its data hold: a file name (x.tsv) must exist in the data
+-- folder or the result store, and the ends of a level range "2^-a … 2^-b" must be levels of
+-- the figure's data files (their level column).
+local function check_caption(img, items)
+  local text = pandoc.utils.stringify(img.caption or {}):gsub("%^", ""):gsub("−", "-")
+  for f in text:gmatch("[%w_%-]+%.tsv") do
+    if not (exists(datadir .. "/" .. f) or exists("results/paper/" .. f)) then
+      fail("figure " .. img.src .. ": its caption names " .. f .. ", which is not in " .. datadir .. " or the result store")
+    end
+  end
+  for a, b in text:gmatch("2%-(%d+)%s*…%s*2%-(%d+)") do
+    local have, any = {}, false
+    for _, it in ipairs(items) do
+      local t = read_tsv_cached(it.path)
+      for i, h in ipairs(t.header) do
+        if h == "level" then
+          any = true
+          for _, r in ipairs(t.rows) do have[r[i]] = true end
+        end
+      end
+    end
+    for _, l in ipairs({a, b}) do
+      if not any or not have[l] then
+        fail("figure " .. img.src .. ": its caption names level 2^-" .. l .. ", which its data (" ..
+             (items[1] and items[1].path or "none") .. ") do not hold")
+      end
+    end
+  end
+end
+
 local function figure_provenance(img)
   local base = img.src:match("figures/out/([%w_%-]+)%.svg$")
   if not base then return nil end
@@ -270,6 +300,7 @@ local function figure_provenance(img)
     local meta = read_tsv(path)
     table.insert(items, {path = path, meta = meta})
   end
+  check_caption(img, items)
   local cmd = "make " .. img.src .. (img.src:match("/store_") and "" or (" PROFILE=" .. profile))
   if #items == 0 then
     return pandoc.Div({pandoc.Para({pandoc.Str("Regenerate: "), pandoc.Code(cmd),
