@@ -36,7 +36,7 @@ endif
 # Debian packages the project needs (compilers, libraries, plotting, report).
 PACKAGES := build-essential cmake git pkg-config libeigen3-dev libcgal-dev libgmp-dev \
             libmpfr-dev libboost-dev libgsl-dev libglpk-dev glpk-utils catch2 gnuplot-nox pandoc \
-            chromium
+            chromium python3
 
 .PHONY: all report pdf test test-paper bench plan deps build data figures tables clean help
 
@@ -112,10 +112,16 @@ paper/report.html: $(REPORT_SOURCES) paper/tsv-tables.lua paper/style.css $(DATA
 # The printed form: the browser check (figures that load and draw, no table wider than an
 # A4 page, every formula in MathML) on the report, then Chromium's print to PDF of the same
 # HTML (print rules in paper/style.css).
-paper/report.pdf: paper/report.html paper/style.css tests/report/browser_check.sh
+# Then no page of the PDF may stay more than 60 % blank unless a chapter follows it
+# (tests/report/page_fill.py); BLANK_PAGES_ALLOWED is a ratchet for the pages the current
+# layout still leaves blank before a figure that does not fit: it may fall, never rise.
+BLANK_PAGES_ALLOWED := 2
+paper/report.pdf: paper/report.html paper/style.css tests/report/browser_check.sh tests/report/page_fill.py
 	bash tests/report/browser_check.sh paper/report.html
 	chromium --headless --no-sandbox --disable-gpu --no-pdf-header-footer \
-	  --print-to-pdf=$@.tmp "file://$(CURDIR)/paper/report.html" 2>/dev/null && mv $@.tmp $@
+	  --print-to-pdf=$@.tmp "file://$(CURDIR)/paper/report.html" 2>/dev/null
+	python3 tests/report/page_fill.py --allow $(BLANK_PAGES_ALLOWED) $@.tmp
+	mv $@.tmp $@
 	@echo "report: $@ (printed from paper/report.html)"
 
 report: build
