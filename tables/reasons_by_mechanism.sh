@@ -34,7 +34,7 @@ in=${1:-} out=${2:-}
         for (j = 1; j <= k; j++) {
           g = mech SUBSEP ts[j]
           detail = (p[g] + 0 == 0 ? "none pass" : (p[g] == n[g] ? "all pass" : p[g] " pass (" keys[g] ")"))
-          list = list (list == "" ? "" : "; ") ts[j] ": " n[g] " rows, " detail }
+          list = list (list == "" ? "" : "; ") ts[j] ": " n[g] (n[g] == 1 ? " row, " : " rows, ") detail }
         printf "%s\t%s\t%d\t%d\t%d\n", mech, list, total[mech], passed[mech], restores[mech] } }' "$in"
 } > "$out.tmp"
 mv "$out.tmp" "$out"
