@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # make test's check of the report's summary tables on fixtures (tests/report/fixture/tables):
-#   tables/verdicts.sh  a figure drawn from a table's rows joins that table's row, neighbouring
+#   tables/verdicts.sh  a figure drawn from a table's rows joins that table's row (before or after it), neighbouring
 #                       illustrations of one document share a row, a rate table's evidence names
 #                       only the verdicts that occur on each board, and a figure drawn from a
 #                       table that has no rates row stops the script;
@@ -22,7 +22,7 @@ bash "$src/tables/verdicts.sh" "$fx/items.tsv" "$fx/score.tsv" "$tmp" "$tmp/verd
 tab=$(printf '\t')
 expect "$tmp/verdicts.tsv" "Doc${tab}Fig. 1, Fig. 2${tab}particles; cells${tab}reproduced qualitatively${tab}illustrations drawn from the same definitions (no number to compare)${tab}ch"
 expect "$tmp/verdicts.tsv" "Doc${tab}Table 1, Fig. 3${tab}rates${tab}partial${tab}both boards: 2 agree, 1 unexplained of 3${tab}ch"
-expect "$tmp/verdicts.tsv" "Doc${tab}Table 2${tab}rates${tab}reproduced${tab}identified: 4 agree of 4; printed: 4 unexplained of 4${tab}ch"
+expect "$tmp/verdicts.tsv" "Doc${tab}Table 2, Fig. 4${tab}rates${tab}reproduced${tab}identified: 4 agree of 4; printed: 4 unexplained of 4${tab}ch"
 rows=$(grep -vc '^#' "$tmp/verdicts.tsv")
 [ "$rows" = 4 ] || { echo "FAIL: verdicts.tsv has $rows lines, expected a header and 3 rows"; fail=1; }
 if bash "$src/tables/verdicts.sh" "$fx/items_orphan.tsv" "$fx/score.tsv" "$tmp" "$tmp/orphan.tsv" 2> "$tmp/err"; then
