@@ -184,6 +184,8 @@ local function fmtnum(s, digits)
 end
 
 local profile = "quick"
+local part = "whole"  -- "paper", "supplement" or "whole" (one document with everything)
+local LONG_TABLE_ROWS = 25
 
 -- "program P, command `C`, profile, seed, git, written, wall time" of one data file.
 local function describe(path, meta)
@@ -386,7 +388,12 @@ local function tsv_block(el)
   local caption = el.attributes["caption"] or ""
   local prov = provenance(path, meta, "make " .. path .. " PROFILE=" .. profile)
   local simple = pandoc.SimpleTable({pandoc.Str(caption)}, aligns, widths, heads, body)
-  return {pandoc.utils.from_simple_table(simple), prov}
+  local tbl = pandoc.utils.from_simple_table(simple)
+  -- A long table belongs to the supplement (split_parts), unless the block says keep="paper".
+  if #body > LONG_TABLE_ROWS and el.attributes["keep"] ~= "paper" then
+    tbl = pandoc.Div({tbl}, pandoc.Attr("", {"long-table"}, {caption = caption, rows = tostring(#body)}))
+  end
+  return {tbl, prov}
 end
 
 -- A raw caret in text, "2^-8", "h^2", "10^-(m-1)", "(x)^{1/5}": the exponent as a superscript (with a
@@ -434,6 +441,64 @@ local function lift_page_one(doc)
   return doc
 end
 
+-- The paper and its supplement, from the same sources.  The paper keeps the chapters and
+-- puts a one-line pointer where a long table stood; the supplement keeps the appendices
+-- (chapters titled "Appendix …"), every long table under its chapter's title, and the
+-- provenance appendix.  Long tables are numbered S1, S2, … in source order in both.
+local function split_parts(doc)
+  if part == "whole" then return doc end
+  local out, n = {}, 0
+  -- chapter: the paper chapter being read; marked: its title has been set down in the
+  -- supplement (a chapter-mark for the provenance appendix); titled: its "Tables of" heading too.
+  local appendix, chapter, marked, titled = false, nil, false, false
+  local function mark()
+    if part == "supplement" and not appendix and not marked then
+      table.insert(out, pandoc.Div({chapter}, pandoc.Attr("", {"chapter-mark"})))
+      marked = true
+    end
+  end
+  for _, b in ipairs(doc.blocks) do
+    if b.t == "Header" and b.level == 1 then
+      appendix = pandoc.utils.stringify(b.content):match("^Appendix") ~= nil
+      chapter, marked, titled = b, false, false
+      if (part == "paper") ~= appendix then table.insert(out, b) end
+    elseif b.t == "Div" and b.classes:includes("long-table") then
+      n = n + 1
+      local label = "Table S" .. n
+      if part == "paper" then
+        if not appendix then
+          table.insert(out, pandoc.Para({pandoc.Emph({pandoc.Str(label)}),
+            pandoc.Str(" (supplement, " .. b.attributes["rows"] .. " rows): " .. b.attributes["caption"])}))
+        end
+      else
+        mark()
+        if not appendix and not titled then
+          table.insert(out, pandoc.Header(1, {pandoc.Str("Tables of: ")} .. chapter.content,
+                                          pandoc.Attr("s-" .. (chapter.identifier or ""))))
+          titled = true
+        end
+        local tbl = b.content[1]
+        tbl.caption.long = {pandoc.Plain({pandoc.Strong({pandoc.Str(label .. ".")}), pandoc.Space(),
+                                          pandoc.Str(b.attributes["caption"])})}
+        table.insert(out, tbl)
+      end
+    elseif b.t == "Div" and b.classes:includes("provenance") then
+      -- gather_provenance turns them into the paper's chapter lines and the supplement's
+      -- appendix, filed under the chapter-mark of their chapter.
+      mark()
+      table.insert(out, b)
+    elseif (part == "paper") ~= appendix then
+      table.insert(out, b)
+    end
+  end
+  if part == "supplement" then
+    doc.meta.abstract = nil
+    doc.meta.title = pandoc.MetaInlines({pandoc.Str("Supplement: ")} .. (doc.meta.title or {}))
+  end
+  doc.blocks = out
+  return doc
+end
+
 -- The reader's order: one short line per chapter naming its data files, and every table's
 -- and figure's full provenance (regenerate command; program, command, profile, seed, git
 -- revision, date and wall time of each data file) in a last appendix, grouped by chapter.
@@ -449,16 +514,26 @@ local function gather_provenance(doc)
       end
       table.insert(inl, pandoc.Str(". How each file was made (program, command, profile, seed, " ..
         "git revision, date, wall time) and the command that regenerates each table and figure: " ..
-        "the last appendix, under this chapter's title."))
-      table.insert(out, pandoc.Div({pandoc.Para(inl)}, pandoc.Attr("", {"provenance"})))
+        (part == "paper" and "the supplement's" or "the") .. " last appendix, under this chapter's title."))
+      -- The supplement lists everything in its appendix; its own chapters need no line.
+      if part ~= "supplement" then
+        table.insert(out, pandoc.Div({pandoc.Para(inl)}, pandoc.Attr("", {"provenance"})))
+      end
     end
     files, seen = {}, {}
   end
+  local function open(h)  -- a chapter whose provenance follows under its title
+    flush()
+    chapter = h
+    pending = pandoc.Header(2, h.content, pandoc.Attr("provenance-" .. (h.identifier or "")))
+  end
   for _, b in ipairs(doc.blocks) do
-    if b.t == "Header" and b.level == 1 then
-      flush()
-      chapter = b
-      pending = pandoc.Header(2, b.content, pandoc.Attr("provenance-" .. (b.identifier or "")))
+    if b.t == "Div" and b.classes:includes("chapter-mark") then
+      open(b.content[1])
+    elseif b.t == "Header" and b.level == 1 and (b.identifier or ""):match("^s%-") then
+      table.insert(out, b)  -- a supplement heading of a chapter already marked
+    elseif b.t == "Header" and b.level == 1 then
+      open(b)
       table.insert(out, b)
     elseif b.t == "Div" and b.classes:includes("provenance") then
       for f in (b.attributes["files"] or ""):gmatch("[^,]+") do
@@ -471,7 +546,7 @@ local function gather_provenance(doc)
     end
   end
   flush()
-  if #appendix > 0 then
+  if #appendix > 0 and part ~= "paper" then
     table.insert(out, pandoc.Header(1, "Appendix E. Provenance of every table and figure",
                                     pandoc.Attr("appendix-e-provenance")))
     for _, b in ipairs(appendix) do table.insert(out, b) end
@@ -484,6 +559,7 @@ return {
     Meta = function(m)
       if m.datadir then datadir = pandoc.utils.stringify(m.datadir) end
       if m.profile then profile = pandoc.utils.stringify(m.profile) end
+      if m.part then part = pandoc.utils.stringify(m.part) end
     end
   },
   {
@@ -510,5 +586,6 @@ return {
   },
   { Str = function(el) return caret_inlines(el.text) end },
   { Pandoc = lift_page_one },
+  { Pandoc = split_parts },
   { Pandoc = gather_provenance }
 }
