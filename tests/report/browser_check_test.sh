@@ -7,12 +7,7 @@
 # a raw caret and a bare nan in the text must fail, naming each.  (make report runs the check
 # on the report itself.)
 # usage: browser_check_test.sh SOURCE_DIR
-export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
-set -u
-src=$1
-fx=$src/tests/report/fixture
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/fixture_env.sh"  # LC_ALL=C, src, fx, tmp
 for page in ok bad; do
   (cd "$fx" && pandoc --from markdown --to html5 --standalone --mathml --self-contained \
      --metadata title="$page" --css "$src/paper/style.css" "$page.md" -o "$tmp/$page.html" 2>/dev/null) ||

@@ -5,12 +5,8 @@
 # a caption naming a level or a file the data lack, a nan cell without a word, counts that
 # leave a category out, a datum with no row, a value the prose has no words for.
 # usage: filter_rules_test.sh SOURCE_DIR
-export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
-set -u
-src=${1:?usage: filter_rules_test.sh SOURCE_DIR}
-fx=$src/tests/report/fixture/filter
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/fixture_env.sh"  # LC_ALL=C, src, fx, tmp
+fx=$fx/filter
 build() {  # build PAGE: pandoc with the report's filter, in the fixture folder (its data, its figures)
   (cd "$fx" && pandoc --from markdown --to html5 --lua-filter "$src/paper/tsv-tables.lua" \
      --metadata datadir=data "$1.md" -o "$tmp/$1.html" 2>&1)

@@ -4,14 +4,9 @@
 # blank by a break inside a chapter fails with its page number (and passes under --allow 1);
 # a file that is not a PDF is a usage error.
 # usage: page_fill_test.sh SOURCE_DIR
-export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
-set -u
-src=${1:?usage: page_fill_test.sh SOURCE_DIR}
-fx=$src/tests/report/fixture
+. "$(dirname "$0")/fixture_env.sh"  # LC_ALL=C, src, fx, tmp
 chrome=$(command -v chromium || command -v chromium-browser || true)
 [ -n "$chrome" ] || { echo "FAIL: chromium not installed (make deps installs it)"; exit 1; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
 for page in page_ends_chapter page_ends_early; do
   "$chrome" --headless --no-sandbox --disable-gpu --no-pdf-header-footer \
     --print-to-pdf="$tmp/$page.pdf" "file://$fx/$page.html" 2>/dev/null ||

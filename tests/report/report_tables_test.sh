@@ -7,12 +7,8 @@
 #   tables/reasons_by_mechanism.sh  reasons that differ only after their first ':' or ';' are
 #                       one mechanism, with the rows it covers and the ones that passed.
 # usage: report_tables_test.sh SOURCE_DIR
-export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
-set -u
-src=${1:?usage: report_tables_test.sh SOURCE_DIR}
-fx=$src/tests/report/fixture/tables
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/fixture_env.sh"  # LC_ALL=C, src, fx, tmp
+fx=$fx/tables
 fail=0
 expect() {  # expect FILE LINE: the file holds the line exactly
   grep -qxF "$2" "$1" || { echo "FAIL: $(basename "$1") lacks the line: $2"; fail=1; }
