@@ -493,7 +493,8 @@ local function split_parts(doc)
   end
   if part == "supplement" then
     doc.meta.abstract = nil
-    doc.meta.title = pandoc.MetaInlines({pandoc.Str("Supplement: ")} .. (doc.meta.title or {}))
+    doc.meta.title = pandoc.MetaInlines(pandoc.List({pandoc.Str("Supplement: ")}) ..
+                                        pandoc.List(doc.meta.title or {pandoc.Str("the report")}))
   end
   doc.blocks = out
   return doc

@@ -3,7 +3,8 @@
 # reads its numbers from data (datum, counts), gives its nan cells a word and names only levels
 # and files its data hold must build; each bad page must stop pandoc with its own message:
 # a caption naming a level or a file the data lack, a nan cell without a word, counts that
-# leave a category out, a datum with no row, a value the prose has no words for.
+# leave a category out, a datum with no row, a value the prose has no words for.  The same
+# sources split into a paper and a supplement (long tables and appendices to the supplement).
 # usage: filter_rules_test.sh SOURCE_DIR
 . "$(dirname "$0")/fixture_env.sh"  # LC_ALL=C, src, fx, tmp
 fx=$fx/filter
@@ -30,5 +31,22 @@ bad_counts|a category is missing
 bad_datum|no row of data/score.tsv
 bad_map|has no words in the map
 CASES
-[ $fail -eq 0 ] && echo "filter rules: good page builds, each of the 6 bad pages stopped with its message"
+# The paper and its supplement: the long table leaves the paper for a pointer, the supplement
+# holds it (numbered), the appendix and the provenance appendix; the short table stays.
+split() {  # split PART: the split fixture as that part, its text without tags
+  (cd "$fx" && pandoc --from markdown --to html5 --lua-filter "$src/paper/tsv-tables.lua" \
+     --metadata datadir=data --metadata part="$1" split.md 2>&1) | sed 's/<[^>]*>//g' | tr -s ' \n' ' '
+}
+paper=$(split paper) supplement=$(split supplement)
+for want in "Table S1 (supplement, 30 rows): A long table." "A short table."; do
+  case $paper in *"$want"*) ;; *) echo "FAIL: the paper lacks '$want'"; fail=1 ;; esac
+done
+for unwanted in "Appendix A" "Appendix E"; do
+  case $paper in *"$unwanted"*) echo "FAIL: the paper holds '$unwanted'"; fail=1 ;; esac
+done
+for want in "Table S1. A long table." "Appendix A. Details" "Appendix E. Provenance"; do
+  case $supplement in *"$want"*) ;; *) echo "FAIL: the supplement lacks '$want'"; fail=1 ;; esac
+done
+case $supplement in *"A short table."*) echo "FAIL: the supplement holds the short table"; fail=1 ;; esac
+[ $fail -eq 0 ] && echo "filter rules: good page builds, each of the 6 bad pages stopped with its message, paper and supplement split"
 exit $fail
