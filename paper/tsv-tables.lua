@@ -185,7 +185,7 @@ end
 
 local profile = "quick"
 local part = "whole"  -- "paper", "supplement" or "whole" (one document with everything)
-local LONG_TABLE_ROWS = 25
+local LONG_TABLE_ROWS = 15  -- a table longer than this is a supplement table (keep="paper" aside)
 
 -- "program P, command `C`, profile, seed, git, written, wall time" of one data file.
 local function describe(path, meta)
