@@ -445,6 +445,12 @@ end
 -- puts a one-line pointer where a long table stood; the supplement keeps the appendices
 -- (chapters titled "Appendix …"), every long table under its chapter's title, and the
 -- provenance appendix.  Long tables are numbered S1, S2, … in source order in both.
+-- A long table's caption, set as its table's caption was (raw carets as superscripts).
+local function caption_inlines(div)
+  local text = div.attributes["caption"]
+  return pandoc.List(caret_inlines(text) or {pandoc.Str(text)})
+end
+
 local function split_parts(doc)
   if part == "whole" then return doc end
   local out, n = {}, 0
@@ -467,8 +473,8 @@ local function split_parts(doc)
       local label = "Table S" .. n
       if part == "paper" then
         if not appendix then
-          table.insert(out, pandoc.Para({pandoc.Emph({pandoc.Str(label)}),
-            pandoc.Str(" (supplement, " .. b.attributes["rows"] .. " rows): " .. b.attributes["caption"])}))
+          table.insert(out, pandoc.Para(pandoc.List({pandoc.Emph({pandoc.Str(label)}),
+            pandoc.Str(" (supplement, " .. b.attributes["rows"] .. " rows): ")}) .. caption_inlines(b)))
         end
       else
         mark()
@@ -478,8 +484,8 @@ local function split_parts(doc)
           titled = true
         end
         local tbl = b.content[1]
-        tbl.caption.long = {pandoc.Plain({pandoc.Strong({pandoc.Str(label .. ".")}), pandoc.Space(),
-                                          pandoc.Str(b.attributes["caption"])})}
+        tbl.caption.long = {pandoc.Plain(pandoc.List({pandoc.Strong({pandoc.Str(label .. ".")}), pandoc.Space()}) ..
+                                         caption_inlines(b))}
         table.insert(out, tbl)
       end
     elseif b.t == "Div" and b.classes:includes("provenance") then
