@@ -36,7 +36,7 @@ endif
 # Debian packages the project needs (compilers, libraries, plotting, report).
 PACKAGES := build-essential cmake git pkg-config libeigen3-dev libcgal-dev libgmp-dev \
             libmpfr-dev libboost-dev libgsl-dev libglpk-dev glpk-utils catch2 gnuplot-nox pandoc \
-            chromium
+            chromium python3
 
 .PHONY: all report pdf test test-paper bench plan deps build data figures tables clean help
 
@@ -102,27 +102,45 @@ figures: $(FIGFILES)
 # --- report: paper/NN-*.md in name order -----------------------------------------------
 REPORT_SOURCES := $(sort $(wildcard paper/[0-9][0-9]-*.md))
 
-paper/report.html: $(REPORT_SOURCES) paper/tsv-tables.lua paper/style.css $(DATAFILES) $(FIGFILES)
-	pandoc --from markdown --to html5 --standalone --mathml --self-contained \
+# Two documents from the same sources (paper/tsv-tables.lua, metadata part): the paper
+# (chapters, page one, a pointer where a long table stood) and its supplement (appendices,
+# the long tables, the provenance of every table and figure), each with its own contents.
+REPORT_INPUTS := $(REPORT_SOURCES) paper/tsv-tables.lua paper/style.css $(DATAFILES) $(FIGFILES)
+report_html = pandoc --from markdown --to html5 --standalone --mathml --self-contained \
 	  --lua-filter paper/tsv-tables.lua --metadata datadir=$(DATA) \
-	  --metadata profile=$(PROFILE) --toc --css paper/style.css \
+	  --metadata profile=$(PROFILE) --metadata part=$(1) --toc --css paper/style.css \
 	  $(REPORT_SOURCES) -o $@.tmp && mv $@.tmp $@
+
+paper/report.html: $(REPORT_INPUTS)
+	$(call report_html,paper)
+	@echo "report: $@ (profile $(PROFILE))"
+
+paper/supplement.html: $(REPORT_INPUTS)
+	$(call report_html,supplement)
 	@echo "report: $@ (profile $(PROFILE))"
 
 # The printed form: the browser check (figures that load and draw, no table wider than an
-# A4 page, every formula in MathML) on the report, then Chromium's print to PDF of the same
-# HTML (print rules in paper/style.css).
-paper/report.pdf: paper/report.html paper/style.css tests/report/browser_check.sh
-	bash tests/report/browser_check.sh paper/report.html
+# A4 page, every formula in MathML, no text below 8 pt in a figure, no word split in a table
+# cell, no raw caret or nan) on the HTML, then Chromium's print to PDF of the same HTML (print
+# rules in paper/style.css).  Then no page of the PDF may stay more than 60 % blank unless a
+# chapter follows it (tests/report/page_fill.py); BLANK_PAGES_ALLOWED is a ratchet for the
+# pages the current layout still leaves blank before a figure that does not fit: it may fall,
+# never rise.
+BLANK_PAGES_ALLOWED := 2
+paper/%.pdf: paper/%.html paper/style.css tests/report/browser_check.sh tests/report/page_fill.py
+	bash tests/report/browser_check.sh $<
 	chromium --headless --no-sandbox --disable-gpu --no-pdf-header-footer \
-	  --print-to-pdf=$@.tmp "file://$(CURDIR)/paper/report.html" 2>/dev/null && mv $@.tmp $@
-	@echo "report: $@ (printed from paper/report.html)"
+	  --print-to-pdf=$@.tmp "file://$(CURDIR)/$<" 2>/dev/null
+	python3 tests/report/page_fill.py --allow $(BLANK_PAGES_ALLOWED) $@.tmp
+	mv $@.tmp $@
+	@echo "report: $@ (printed from $<)"
 
+REPORT_OUTPUTS := paper/report.html paper/report.pdf paper/supplement.html paper/supplement.pdf
 report: build
-	$(MAKE) --no-print-directory PROFILE=$(PROFILE) paper/report.html paper/report.pdf
+	$(MAKE) --no-print-directory PROFILE=$(PROFILE) $(REPORT_OUTPUTS)
 
 pdf: build
-	$(MAKE) --no-print-directory PROFILE=$(PROFILE) paper/report.pdf
+	$(MAKE) --no-print-directory PROFILE=$(PROFILE) paper/report.pdf paper/supplement.pdf
 
 # --- benchmarks -------------------------------------------------------------------------
 # The measured limit (bench_limit), every kernel variant as a fraction of it, and the
@@ -131,4 +149,4 @@ bench: build
 	$(MAKE) --no-print-directory BUILD=$(BUILD) bench-all
 
 clean:
-	rm -rf $(BUILD) data $(FIGOUT) $(TABOUT) paper/report.html paper/report.pdf
+	rm -rf $(BUILD) data $(FIGOUT) $(TABOUT) $(REPORT_OUTPUTS)

@@ -1,4 +1,4 @@
-# Atlas, imoto Figure 5 / Table 1: relative error against the cost of computing it, one row
+# Atlas, Imoto Figure 5 / Table 1: relative error against the cost of computing it, one row
 # per operator and one column per regular order m, the three weights of the operator in each
 # panel (line style = weight).  Every weight and operator of a (level, m) unit comes out of one
 # fused pass, so the curves of a panel share their abscissae: the bottom axis is the unit's
@@ -28,7 +28,7 @@ xlo = lo(SX_min); xhi = hi(SX_max)
 # The top axis of an m: "(time) pairs" of each of its units, as gnuplot's tic list.
 units(m) = system(sprintf("awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next } $c[\"m\"]==%s && !s[$c[\"level\"]]++ { printf \"%%s\\\"%%.2g\\\" %%s\", n++ ? \", \" : \"\", $c[\"time_s\"], $c[\"pairs\"] }' '%s'", m, f))
 set multiplot layout 3,3 margins 80.0/1100,1 - 120.0/1100,60.0/1250,1 - 110.0/1250 spacing 45.0/1100,135.0/1250 \
-    title "imoto Figure 5 / Table 1: accuracy against cost"
+    title "Imoto Figure 5 / Table 1: accuracy against cost"
 do for [k=1:3] {
   set autoscale xy
   stats rows_named(f, sprintf('$c["operator"]=="%s"', word(ops, k))) using (column("rel_error")) name 'SY' nooutput

@@ -1,5 +1,5 @@
 # Covering radius r_c / dx against dx.  Left: plain grid (exact value known); right: jittered
-# grids (three seeds, and the cells of particles in Ω for seed 1).  Both panels carry imoto's
+# grids (three seeds, and the cells of particles in Ω for seed 1).  Both panels carry Imoto's
 # claimed bound sqrt(2)(1+1/4)/2 and the thesis' range [1.4, 1.8], and share their axes.
 load 'figures/style.gp'
 set terminal svg size 1000,500 dynamic enhanced font 'Helvetica,12' background rgb 'white'
@@ -23,12 +23,12 @@ set multiplot layout 1,2 margins 0.07,0.98,0.34,0.92 spacing 0.07,0
 set title 'plain grid'
 plot grid1 using (column("dx")):(column("r_c_over_dx")) with linespoints lt 1 title 'measured', \
      grid1 using (column("dx")):(column("r_c_grid_pred")/column("dx")) with lines lt 7 title 'exact: √2·max(Δx/2, g)/Δx', \
-     grid1 using (column("dx")):(column("imoto_bound")/column("dx")) with lines lt 6 title 'imoto §5 claim √2(1+1/4)/2', \
+     grid1 using (column("dx")):(column("imoto_bound")/column("dx")) with lines lt 6 title 'Imoto §5 claim √2(1+1/4)/2', \
      1.4 with lines lt 8 title 'thesis Ch. 4 range 1.4–1.8', 1.8 with lines lt 8 notitle
 set title 'jittered grid'
 set ylabel ''
 plot for [s=1:3] jit(s) using (column("dx")):(column("r_c_over_dx")) with linespoints lt s + 1 title sprintf('seed %d', s), \
      jit(1) using (column("dx")):(column("r_c_omega_over_dx")) with linespoints lt 5 title 'seed 1, cells of particles in Ω', \
-     grid1 using (column("dx")):(column("imoto_bound")/column("dx")) with lines lt 6 title 'imoto §5 claim √2(1+1/4)/2', \
+     grid1 using (column("dx")):(column("imoto_bound")/column("dx")) with lines lt 6 title 'Imoto §5 claim √2(1+1/4)/2', \
      1.4 with lines lt 8 title 'thesis Ch. 4 range 1.4–1.8', 1.8 with lines lt 8 notitle
 unset multiplot

@@ -1,4 +1,4 @@
-# Covering radius r_N/dx of the Sec. 5 distribution for dx = 2^-5 .. 2^-10, against imoto's
+# Covering radius r_N/dx of the Sec. 5 distribution for dx = 2^-5 .. 2^-10, against Imoto's
 # claim r_N <= sqrt(2)(1+1/4)dx/2.  Left: five seeds; right: seed 1 over all cells and over the
 # cells of particles in Ω only, with the bound sqrt(2)(1+1/2)/2 that holds for interior cells.
 # The panels share their axes.
@@ -22,11 +22,11 @@ seed(s) = rows_named(f, sprintf('$c["seed"]==%d', s))
 set multiplot layout 1,2 margins 0.07,0.98,0.34,0.92 spacing 0.07,0
 set title 'five seeds'
 plot for [s=1:5] seed(s) using (column("dx")):(column("r_N_over_dx")) with linespoints lt s title sprintf('r_N, seed %d', s), \
-     seed(1) using (column("dx")):(column("claim_over_dx")) with lines lt 7 title 'claim √2(1+1/4)/2 (imoto §5)'
+     seed(1) using (column("dx")):(column("claim_over_dx")) with lines lt 7 title 'claim √2(1+1/4)/2 (Imoto §5)'
 set title 'seed 1: all cells and the cells of particles in Ω'
 set ylabel ''
 plot seed(1) using (column("dx")):(column("r_N_over_dx")) with linespoints lt 1 title 'r_N, seed 1', \
      seed(1) using (column("dx")):(column("r_N_omega_over_dx")) with linespoints lt 6 title 'seed 1, cells of particles in Ω', \
-     seed(1) using (column("dx")):(column("claim_over_dx")) with lines lt 7 title 'claim √2(1+1/4)/2 (imoto §5)', \
+     seed(1) using (column("dx")):(column("claim_over_dx")) with lines lt 7 title 'claim √2(1+1/4)/2 (Imoto §5)', \
      seed(1) using (column("dx")):(sqrt(2)*1.5/2) with lines lt 8 title 'interior bound √2(1+1/2)/2'
 unset multiplot

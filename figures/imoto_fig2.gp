@@ -1,4 +1,4 @@
-# imoto Figure 2: the Voronoi decomposition of Omega_H for the distribution of Figure 4.
+# Imoto Figure 2: the Voronoi decomposition of Omega_H for the distribution of Figure 4.
 load 'figures/style.gp'
 set terminal svg size 560,560 dynamic enhanced font 'Helvetica,12' background rgb 'white'
 set output out

@@ -1,4 +1,4 @@
-# imoto Figure 3: covering radius of a uniform and a non-uniform distribution with the same N.
+# Imoto Figure 3: covering radius of a uniform and a non-uniform distribution with the same N.
 # Omega_H is the black square.  The disc is centred at the Voronoi vertex farthest from its particle; its radius is r_N.
 load 'figures/style.gp'
 set terminal svg size 1000,520 dynamic enhanced font 'Helvetica,12' background rgb 'white'

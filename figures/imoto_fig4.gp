@@ -1,4 +1,4 @@
-# imoto Figures 1 and 4: the jittered particle distribution at dx = 2^-5 (N = 1,521) in
+# Imoto Figures 1 and 4: the jittered particle distribution at dx = 2^-5 (N = 1,521) in
 # Omega_H = (-0.1, 1.1)^2, with Omega = (0,1)^2 shaded.
 load 'figures/style.gp'
 set terminal svg size 560,560 dynamic enhanced font 'Helvetica,12' background rgb 'white'

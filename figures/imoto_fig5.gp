@@ -1,4 +1,4 @@
-# imoto Figure 5 (a)(b)(c): relative l-inf errors of the interpolant, gradient and Laplacian
+# Imoto Figure 5 (a)(b)(c): relative l-inf errors of the interpolant, gradient and Laplacian
 # against h for m = 1, 3, 5 and the weights of Sec. 5.  The document draws the nine curves of
 # an operator in one panel; here each operator is a column and each m a row, three weights per
 # panel, so that every curve can be told apart in greyscale.  Triangles: Theorem 3's rates,
@@ -16,7 +16,7 @@ P = 'tables/published/imoto_table1.tsv'
 set xlabel 'h'
 set format x '10^{%L}'
 set key bottom left box opaque font ',10' samplen 2
-set multiplot layout 3,3 title 'imoto Figure 5: relative ℓ^∞(Ω) errors (max over particles in Ω; Euclidean length for ∇) against h'
+set multiplot layout 3,3 title 'Imoto Figure 5: relative ℓ^∞(Ω) errors (max over particles in Ω; Euclidean length for ∇) against h'
 ops = "interpolant gradient laplacian"
 w1 = "Pi1 Grad1 Lap1"; w2 = "Pi2 Grad2 Lap2"; w3 = "Pi3 Grad3 Lap3"
 sym = "Π ∇ Δ"

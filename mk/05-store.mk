@@ -12,6 +12,11 @@ $(DATA)/checked_reasons.tsv: tables/checked_reasons.sh tables/store_lib.sh $(STO
 	@mkdir -p $(DATA)
 	bash $< $(STORE) $@ $(BUILD)
 
+# The same reasons, one row per mechanism with the rows it covers (the chapter's short table).
+DATAFILES += $(DATA)/checked_reasons_by_mechanism.tsv
+$(DATA)/checked_reasons_by_mechanism.tsv: tables/reasons_by_mechanism.sh $(DATA)/checked_reasons.tsv
+	bash $< $(DATA)/checked_reasons.tsv $@
+
 # The two scoreboards (as printed, as identified) and the fingerprint evidence that identifies
 # Chapter 4's set-up (setup_identification.tsv; paper/04-setup-rule.md).
 $(DATA)/store_rates.tsv: tables/store_rates.sh tables/store_lib.sh $(STORE_FILES) $(BUILD)/rate_table $(BUILD)/gpm \

@@ -14,5 +14,6 @@ $(VERIFY_STAMP): tests/report/verify_report.sh tests/report/figure_rules.sh $(so
 .PHONY: verify-report
 verify-report: $(VERIFY_STAMP)
 
-# Extra prerequisite of the report (the Makefile's pandoc recipe names its inputs itself).
-paper/report.html: $(VERIFY_STAMP)
+# Extra prerequisite of the paper and the supplement (the Makefile's pandoc recipe names its
+# inputs itself).
+paper/report.html paper/supplement.html: $(VERIFY_STAMP)

@@ -11,6 +11,18 @@
 -- that regenerates it, and for each data file it plots (its `data="a.tsv,b.tsv"` attribute,
 -- else the `datadir.'/x.tsv'` names found in figures/<name>.gp and the scripts it loads)
 -- the program, its command line, profile, seed, git revision and wall time.
+--
+-- Numbers in the prose are read from data files too, never typed:
+--   []{.datum file="store_score.tsv" where="table=total,slice=as printed" column="agrees"}
+-- becomes the value of that cell (column may be "a-b" or "a+b" of two columns; sum="yes"
+-- adds the column over every matching row; a where value "~PATTERN" is a Lua pattern), and
+--   []{.counts file=... where=... columns="agrees:agree,unexplained:unexplained" total="rates"}
+-- becomes "18 agree, 31 unexplained …": the listed columns that are not zero, which must add
+-- up to the total column, so that no category is left out unnoticed.
+-- A Div of class page-one (title page: abstract and verdict table) is set before the table
+-- of contents (pandoc's abstract slot).  A raw caret in text (2^-8, h^2, (x)^{1/5}) is set as
+-- a superscript, and a table cell that is nan must have its word: the block's nan attribute,
+-- "what failed" for every column or "column=what failed,…" per column.
 
 local datadir = "data/quick"
 
@@ -49,6 +61,122 @@ local function read_tsv(path)
   return meta, header, rows
 end
 
+local tsv_cache = {}
+local function read_tsv_cached(path)
+  if not tsv_cache[path] then
+    local meta, header, rows = read_tsv(path)
+    tsv_cache[path] = {meta = meta, header = header, rows = rows}
+  end
+  return tsv_cache[path]
+end
+
+local function column_index(t, name, path)
+  for i, h in ipairs(t.header) do if h == name then return i end end
+  fail("column '" .. name .. "' not in " .. path)
+end
+
+-- The rows of a data file that satisfy where="col=value,col=~pattern".
+local function matching_rows(el)
+  local file = el.attributes["file"] or fail("datum without file= attribute")
+  local path = file:sub(1, 1) == "/" and file or (datadir .. "/" .. file)
+  local t = read_tsv_cached(path)
+  local conds = {}
+  for _, c in ipairs(split(el.attributes["where"] or "", ",")) do
+    local k, v = c:match("^([^=]+)=(.*)$")
+    if k then table.insert(conds, {idx = column_index(t, k, path), val = v}) end
+  end
+  local out = {}
+  for _, r in ipairs(t.rows) do
+    local ok = true
+    for _, c in ipairs(conds) do
+      local cell = r[c.idx] or ""
+      if c.val:sub(1, 1) == "~" then ok = ok and cell:match("^" .. c.val:sub(2) .. "$") ~= nil
+      else ok = ok and cell == c.val end
+    end
+    if ok then table.insert(out, r) end
+  end
+  if #out == 0 then fail("no row of " .. path .. " where " .. (el.attributes["where"] or "")) end
+  return t, path, out
+end
+
+-- The number in column spec ("name", "a-b" or "a+b") of row r.
+local function column_value(t, path, r, spec)
+  local a, op, b = spec:match("^([%w_]+)([%+%-])([%w_]+)$")
+  local function num(name)
+    local v = tonumber(r[column_index(t, name, path)])
+    if not v then fail("column '" .. name .. "' of " .. path .. " is not a number") end
+    return v
+  end
+  if a then return op == "+" and num(a) + num(b) or num(a) - num(b) end
+  return r[column_index(t, spec, path)]
+end
+
+-- meta="key": a header line's value instead of a cell; map="value=words;value=words": the
+-- words the prose gives for each value the data may hold, a value being a Lua pattern
+-- ("h15.*") or the value itself (a value without words stops the build).
+local function datum_words(el, v)
+  local map = el.attributes["map"]
+  if not map then return pandoc.Str(tostring(v)) end
+  for _, e in ipairs(split(map, ";")) do
+    local k, words = e:match("^([^=]+)=(.*)$")
+    if k == v or tostring(v):match("^" .. k .. "$") then return pandoc.Str(words) end
+  end
+  fail("datum value '" .. tostring(v) .. "' has no words in the map of " .. (el.attributes["file"] or "?"))
+end
+
+local function datum(el)
+  if el.attributes["meta"] then
+    local file = el.attributes["file"] or fail("datum without file= attribute")
+    local t = read_tsv_cached(datadir .. "/" .. file)
+    local v = t.meta[el.attributes["meta"]] or fail("no header line '" .. el.attributes["meta"] .. "' in " .. file)
+    return datum_words(el, v)
+  end
+  local t, path, rows = matching_rows(el)
+  local spec = el.attributes["column"] or fail("datum without column= attribute")
+  local v
+  if el.attributes["sum"] == "yes" then
+    v = 0
+    for _, r in ipairs(rows) do v = v + tonumber(column_value(t, path, r, spec)) end
+  else
+    if #rows > 1 then fail(#rows .. " rows of " .. path .. " where " .. el.attributes["where"] .. ": a datum needs one") end
+    v = column_value(t, path, rows[1], spec)
+  end
+  if type(v) == "number" and v == math.floor(v) then v = string.format("%d", v) end
+  return datum_words(el, v)
+end
+
+local function counts(el)
+  local t, path, rows = matching_rows(el)
+  if #rows > 1 then fail(#rows .. " rows of " .. path .. " where " .. el.attributes["where"] .. ": counts need one") end
+  local r, parts, sum = rows[1], {}, 0
+  for _, spec in ipairs(split(el.attributes["columns"] or fail("counts without columns="), ",")) do
+    local name, word = spec:match("^([^:]+):(.*)$")
+    local v = tonumber(column_value(t, path, r, name or spec)) or fail("column '" .. spec .. "' of " .. path .. " is not a number")
+    sum = sum + v
+    if v ~= 0 then table.insert(parts, string.format("%d %s", v, word or spec)) end
+  end
+  local total = tonumber(column_value(t, path, r, el.attributes["total"] or fail("counts without total=")))
+  if sum ~= total then
+    fail(string.format("counts of %s add up to %d, not %s = %d: a category is missing", path, sum, el.attributes["total"], total))
+  end
+  local text = #parts > 1 and (table.concat(parts, ", ", 1, #parts - 1) .. " and " .. parts[#parts]) or (parts[1] or "none")
+  return pandoc.Str(text)
+end
+
+-- "nan" in a table cell: the word the block gives for its column (nan="word" or
+-- nan="col=word,col=word"); without one the build stops.
+local function nan_word(el, column, path)
+  local spec = el.attributes["nan"]
+  if spec then
+    if not spec:find("=") then return spec end
+    for _, e in ipairs(split(spec, ",")) do
+      local k, v = e:match("^([^=]+)=(.*)$")
+      if k == column then return v end
+    end
+  end
+  fail("a nan cell in column '" .. column .. "' of " .. path .. " without a word saying what failed (nan= attribute)")
+end
+
 local function fmtnum(s, digits)
   local n = tonumber(s)
   if not n or not digits or s:match("^%-?%d+$") then return s end
@@ -56,6 +184,8 @@ local function fmtnum(s, digits)
 end
 
 local profile = "quick"
+local part = "whole"  -- "paper", "supplement" or "whole" (one document with everything)
+local LONG_TABLE_ROWS = 15  -- a table longer than this is a supplement table (keep="paper" aside)
 
 -- "program P, command `C`, profile, seed, git, written, wall time" of one data file.
 local function describe(path, meta)
@@ -132,6 +262,36 @@ local function figure_data(img)
   return names
 end
 
+-- A caption may only name what its data hold: a file name (x.tsv) must exist in the data
+-- folder or the result store, and the ends of a level range "2^-a … 2^-b" must be levels of
+-- the figure's data files (their level column).
+local function check_caption(img, items)
+  local text = pandoc.utils.stringify(img.caption or {}):gsub("%^", ""):gsub("−", "-")
+  for f in text:gmatch("[%w_%-]+%.tsv") do
+    if not (exists(datadir .. "/" .. f) or exists("results/paper/" .. f)) then
+      fail("figure " .. img.src .. ": its caption names " .. f .. ", which is not in " .. datadir .. " or the result store")
+    end
+  end
+  for a, b in text:gmatch("2%-(%d+)%s*…%s*2%-(%d+)") do
+    local have, any = {}, false
+    for _, it in ipairs(items) do
+      local t = read_tsv_cached(it.path)
+      for i, h in ipairs(t.header) do
+        if h == "level" then
+          any = true
+          for _, r in ipairs(t.rows) do have[r[i]] = true end
+        end
+      end
+    end
+    for _, l in ipairs({a, b}) do
+      if not any or not have[l] then
+        fail("figure " .. img.src .. ": its caption names level 2^-" .. l .. ", which its data (" ..
+             (items[1] and items[1].path or "none") .. ") do not hold")
+      end
+    end
+  end
+end
+
 local function figure_provenance(img)
   local base = img.src:match("figures/out/([%w_%-]+)%.svg$")
   if not base then return nil end
@@ -142,12 +302,40 @@ local function figure_provenance(img)
     local meta = read_tsv(path)
     table.insert(items, {path = path, meta = meta})
   end
+  check_caption(img, items)
   local cmd = "make " .. img.src .. (img.src:match("/store_") and "" or (" PROFILE=" .. profile))
   if #items == 0 then
     return pandoc.Div({pandoc.Para({pandoc.Str("Regenerate: "), pandoc.Code(cmd),
       pandoc.Str(" (data files: see figures/" .. base .. ".gp).")})}, pandoc.Attr("", {"provenance"}))
   end
   return provenance(items, nil, cmd)
+end
+
+-- A cell's text as inlines that wrap between words only: a browser also breaks after a
+-- hyphen or a slash ("other-|levels", "1.5e-|16"), so a piece holding one is kept on one
+-- line (class nobr, paper/style.css).  A long identifier (thesis_table4_5_h15) may wrap after
+-- an underscore, a long formula after a plus: a zero-width space marks those points.
+local function cell_inlines(v)
+  -- The author's name as a word (a program's label "imoto §5 (Π1)"), not inside a file name,
+  -- an identifier or a command line, is set capitalized.
+  if not v:find(" --", 1, true) then v = v:gsub("%f[%w_/%-]imoto%f[^%w_%-]", "Imoto") end
+  v = v:gsub("_", "_\u{200B}")
+  local out = {}
+  for word, space in v:gmatch("(%S+)(%s*)") do
+    if #word > 20 then word = word:gsub("%+", "+\u{200B}") end
+    local parts = {}
+    for piece in (word .. "\u{200B}"):gmatch("(.-)\u{200B}") do table.insert(parts, piece) end
+    for i, piece in ipairs(parts) do
+      if i > 1 then table.insert(out, pandoc.Str("\u{200B}")) end
+      if piece:find("[-/]") or piece:find("–", 1, true) or piece:find("−", 1, true) then
+        table.insert(out, pandoc.Span({pandoc.Str(piece)}, pandoc.Attr("", {"nobr"})))
+      elseif piece ~= "" then
+        table.insert(out, pandoc.Str(piece))
+      end
+    end
+    if space ~= "" then table.insert(out, pandoc.Space()) end
+  end
+  return out
 end
 
 local function tsv_block(el)
@@ -182,7 +370,7 @@ local function tsv_block(el)
   end
   local heads, aligns, widths, body = {}, {}, {}, {}
   for _, c in ipairs(cols) do
-    table.insert(heads, {pandoc.Plain(pandoc.Str(c.label))})
+    table.insert(heads, {pandoc.Plain(cell_inlines(c.label))})
     table.insert(aligns, pandoc.AlignDefault)
     table.insert(widths, 0)
   end
@@ -190,7 +378,9 @@ local function tsv_block(el)
     if not fidx or r[fidx] == fval then
       local cells = {}
       for _, c in ipairs(cols) do
-        table.insert(cells, {pandoc.Plain(pandoc.Str(fmtnum(r[c.idx] or "", digits)))})
+        local v = fmtnum(r[c.idx] or "", digits)
+        if v:lower():match("^[%-%+]?nan$") then v = nan_word(el, header[c.idx], path) end
+        table.insert(cells, {pandoc.Plain(cell_inlines(v))})
       end
       table.insert(body, cells)
     end
@@ -198,7 +388,122 @@ local function tsv_block(el)
   local caption = el.attributes["caption"] or ""
   local prov = provenance(path, meta, "make " .. path .. " PROFILE=" .. profile)
   local simple = pandoc.SimpleTable({pandoc.Str(caption)}, aligns, widths, heads, body)
-  return {pandoc.utils.from_simple_table(simple), prov}
+  local tbl = pandoc.utils.from_simple_table(simple)
+  -- A long table belongs to the supplement (split_parts), unless the block says keep="paper".
+  if #body > LONG_TABLE_ROWS and el.attributes["keep"] ~= "paper" then
+    tbl = pandoc.Div({tbl}, pandoc.Attr("", {"long-table"}, {caption = caption, rows = tostring(#body)}))
+  end
+  return {tbl, prov}
+end
+
+-- A raw caret in text, "2^-8", "h^2", "10^-(m-1)", "(x)^{1/5}": the exponent as a superscript (with a
+-- true minus sign), so that no source or data file's plain-text notation reaches the page.
+local function caret_inlines(text)
+  if not text:find("^", 1, true) then return nil end
+  local out, pos = {}, 1
+  while true do
+    local s, e, exp = text:find("%^{([^}]*)}", pos)
+    local s2, e2, exp2 = text:find("%^(%-?%b())", pos)
+    if not s2 then s2, e2, exp2 = text:find("%^(%-?[%w%.]+)", pos) end
+    if s2 and (not s or s2 < s) then s, e, exp = s2, e2, exp2 end
+    if not s then break end
+    if s > pos then table.insert(out, pandoc.Str(text:sub(pos, s - 1))) end
+    table.insert(out, pandoc.Superscript({pandoc.Str((exp:gsub("%-", "−")))}))
+    pos = e + 1
+  end
+  if #out == 0 then return nil end
+  if pos <= #text then table.insert(out, pandoc.Str(text:sub(pos))) end
+  return out
+end
+
+-- Page one: the blocks of the page-one Div go to the abstract slot, before the table of
+-- contents; the provenance of its tables is kept for the appendix.
+local function lift_page_one(doc)
+  local out, prov = {}, {}
+  for _, b in ipairs(doc.blocks) do
+    if b.t == "Div" and b.classes:includes("page-one") then
+      local kept = {}
+      for _, x in ipairs(b.content) do
+        if x.t == "Div" and x.classes:includes("provenance") then table.insert(prov, x)
+        else table.insert(kept, x) end
+      end
+      doc.meta.abstract = pandoc.MetaBlocks(kept)
+      doc.meta["abstract-title"] = pandoc.MetaInlines({pandoc.Str("Abstract")})
+    else
+      table.insert(out, b)
+    end
+  end
+  -- Its provenance heads the first chapter's, so that the appendix still lists every table.
+  local i = 1
+  while i <= #out and not (out[i].t == "Header" and out[i].level == 1) do i = i + 1 end
+  for k = #prov, 1, -1 do table.insert(out, i + 1, prov[k]) end
+  doc.blocks = out
+  return doc
+end
+
+-- The paper and its supplement, from the same sources.  The paper keeps the chapters and
+-- puts a one-line pointer where a long table stood; the supplement keeps the appendices
+-- (chapters titled "Appendix …"), every long table under its chapter's title, and the
+-- provenance appendix.  Long tables are numbered S1, S2, … in source order in both.
+-- A long table's caption, set as its table's caption was (raw carets as superscripts).
+local function caption_inlines(div)
+  local text = div.attributes["caption"]
+  return pandoc.List(caret_inlines(text) or {pandoc.Str(text)})
+end
+
+local function split_parts(doc)
+  if part == "whole" then return doc end
+  local out, n = {}, 0
+  -- chapter: the paper chapter being read; marked: its title has been set down in the
+  -- supplement (a chapter-mark for the provenance appendix); titled: its "Tables of" heading too.
+  local appendix, chapter, marked, titled = false, nil, false, false
+  local function mark()
+    if part == "supplement" and not appendix and not marked then
+      table.insert(out, pandoc.Div({chapter}, pandoc.Attr("", {"chapter-mark"})))
+      marked = true
+    end
+  end
+  for _, b in ipairs(doc.blocks) do
+    if b.t == "Header" and b.level == 1 then
+      appendix = pandoc.utils.stringify(b.content):match("^Appendix") ~= nil
+      chapter, marked, titled = b, false, false
+      if (part == "paper") ~= appendix then table.insert(out, b) end
+    elseif b.t == "Div" and b.classes:includes("long-table") then
+      n = n + 1
+      local label = "Table S" .. n
+      if part == "paper" then
+        if not appendix then
+          table.insert(out, pandoc.Para(pandoc.List({pandoc.Emph({pandoc.Str(label)}),
+            pandoc.Str(" (supplement, " .. b.attributes["rows"] .. " rows): ")}) .. caption_inlines(b)))
+        end
+      else
+        mark()
+        if not appendix and not titled then
+          table.insert(out, pandoc.Header(1, {pandoc.Str("Tables of: ")} .. chapter.content,
+                                          pandoc.Attr("s-" .. (chapter.identifier or ""))))
+          titled = true
+        end
+        local tbl = b.content[1]
+        tbl.caption.long = {pandoc.Plain(pandoc.List({pandoc.Strong({pandoc.Str(label .. ".")}), pandoc.Space()}) ..
+                                         caption_inlines(b))}
+        table.insert(out, tbl)
+      end
+    elseif b.t == "Div" and b.classes:includes("provenance") then
+      -- gather_provenance turns them into the paper's chapter lines and the supplement's
+      -- appendix, filed under the chapter-mark of their chapter.
+      mark()
+      table.insert(out, b)
+    elseif (part == "paper") ~= appendix then
+      table.insert(out, b)
+    end
+  end
+  if part == "supplement" then
+    doc.meta.abstract = nil
+    doc.meta.title = pandoc.MetaInlines(pandoc.List({pandoc.Str("Supplement: ")}) ..
+                                        pandoc.List(doc.meta.title or {pandoc.Str("the report")}))
+  end
+  doc.blocks = out
+  return doc
 end
 
 -- The reader's order: one short line per chapter naming its data files, and every table's
@@ -216,16 +521,26 @@ local function gather_provenance(doc)
       end
       table.insert(inl, pandoc.Str(". How each file was made (program, command, profile, seed, " ..
         "git revision, date, wall time) and the command that regenerates each table and figure: " ..
-        "the last appendix, under this chapter's title."))
-      table.insert(out, pandoc.Div({pandoc.Para(inl)}, pandoc.Attr("", {"provenance"})))
+        (part == "paper" and "the supplement's" or "the") .. " last appendix, under this chapter's title."))
+      -- The supplement lists everything in its appendix; its own chapters need no line.
+      if part ~= "supplement" then
+        table.insert(out, pandoc.Div({pandoc.Para(inl)}, pandoc.Attr("", {"provenance"})))
+      end
     end
     files, seen = {}, {}
   end
+  local function open(h)  -- a chapter whose provenance follows under its title
+    flush()
+    chapter = h
+    pending = pandoc.Header(2, h.content, pandoc.Attr("provenance-" .. (h.identifier or "")))
+  end
   for _, b in ipairs(doc.blocks) do
-    if b.t == "Header" and b.level == 1 then
-      flush()
-      chapter = b
-      pending = pandoc.Header(2, b.content, pandoc.Attr("provenance-" .. (b.identifier or "")))
+    if b.t == "Div" and b.classes:includes("chapter-mark") then
+      open(b.content[1])
+    elseif b.t == "Header" and b.level == 1 and (b.identifier or ""):match("^s%-") then
+      table.insert(out, b)  -- a supplement heading of a chapter already marked
+    elseif b.t == "Header" and b.level == 1 then
+      open(b)
       table.insert(out, b)
     elseif b.t == "Div" and b.classes:includes("provenance") then
       for f in (b.attributes["files"] or ""):gmatch("[^,]+") do
@@ -238,7 +553,7 @@ local function gather_provenance(doc)
     end
   end
   flush()
-  if #appendix > 0 then
+  if #appendix > 0 and part ~= "paper" then
     table.insert(out, pandoc.Header(1, "Appendix E. Provenance of every table and figure",
                                     pandoc.Attr("appendix-e-provenance")))
     for _, b in ipairs(appendix) do table.insert(out, b) end
@@ -251,14 +566,22 @@ return {
     Meta = function(m)
       if m.datadir then datadir = pandoc.utils.stringify(m.datadir) end
       if m.profile then profile = pandoc.utils.stringify(m.profile) end
+      if m.part then part = pandoc.utils.stringify(m.part) end
     end
   },
   {
     CodeBlock = function(el)
       if el.classes:includes("tsv") then return tsv_block(el) end
     end,
+    Span = function(el)
+      if el.classes:includes("datum") then return datum(el) end
+      if el.classes:includes("counts") then return counts(el) end
+    end,
     Image = function(el)
       if not exists(el.src) then fail("figure missing: " .. el.src) end
+      -- The figure's name survives --self-contained (as data-figure), for the browser check.
+      local base = el.src:match("([%w_%-]+)%.svg$")
+      if base then el.attributes["figure"] = base; return el end
     end,
     -- A figure (an image alone in its paragraph) is followed by its provenance line.
     Para = function(el)
@@ -268,5 +591,8 @@ return {
       end
     end
   },
+  { Str = function(el) return caret_inlines(el.text) end },
+  { Pandoc = lift_page_one },
+  { Pandoc = split_parts },
   { Pandoc = gather_provenance }
 }

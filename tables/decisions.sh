@@ -108,7 +108,7 @@ span() {
     printf 'Table 4.4: the volumes of (A.10)\tnot yet in the store\topen\n'
   fi
 
-  # --- imoto Table 1, Lap1/Lap2 at m = 5: smoothing, volume mismatch and particles. -----------
+  # --- Imoto Table 1, Lap1/Lap2 at m = 5: smoothing, volume mismatch and particles. -----------
   # Per level 2^-9..2^-12: the plain-grid error beside the prediction |(1 + delta)(1 - eps) - 1|
   # (eps: gpm smoothing, no particles; delta = |Omega_H|/(N dx^2) - 1 of the stored N), the
   # errors of seeds 1-3, and the 2^-11/2^-12 rates of each against the published one.
@@ -140,13 +140,13 @@ span() {
           split("seed1 seed2 seed3 plain", vs, " ")
           for (j = 1; j <= 4; j++) if (((11, vs[j]) in e) && ((12, vs[j]) in e)) r = r sprintf(" %s %.2f", vs[j], log(e[11, vs[j]] / e[12, vs[j]]) / log(hh[11] / hh[12]))
           if ((11 in L) && (12 in L)) r = r sprintf(", predicted (plain) %.2f, eps alone %.2f (published %s).", log(pred[11] / pred[12]) / log(hh[11] / hh[12]), log(ep[11] / ep[12]) / log(hh[11] / hh[12]), pubrate)
-          printf "imoto Table 1, %s at m = 5: smoothing, volume mismatch and particles\t%s%s\t%s\n", w, ev, r,
+          printf "Imoto Table 1, %s at m = 5: smoothing, volume mismatch and particles\t%s%s\t%s\n", w, ev, r,
             "the plain-grid error is the consistency error |(1 + delta)(1 - eps) - 1| of the operator (no particle part); the jittered seeds add the particle part, which shrinks fastest between 2^-11 and 2^-12 and so steepens the two-level rate" }' \
         "$tmp/eps_$w.tsv" "$store"/imoto_fig5_table1.tsv "$store"/imoto_fig5_table1_seed[23].tsv "$store"/imoto_fig5_table1_plain.tsv
     done
   fi
 
-  # --- imoto Table 1, Lap1/Lap2 at m = 5: where in Omega the maximum sits. -------------------
+  # --- Imoto Table 1, Lap1/Lap2 at m = 5: where in Omega the maximum sits. -------------------
   # From tables/imoto_where.sh's runs (gpm trunc, which reports the particle of the maximum):
   # per weight, the distance of that particle to the boundary of Omega in units of h over the
   # jittered runs and over the plain grid, and how closely those runs' errors equal the
@@ -168,7 +168,7 @@ span() {
           for (l = 1; l <= 20; l++) if (l in L) lv = lv (lv == "" ? " 2^-" : ", 2^-") l
           for (k in e) if (k in s) { n++; r = e[k] / s[k] - 1; if (r < 0) r = -r; if (r > dev) dev = r }
           if (nj + np == 0) exit
-          printf "imoto Table 1, %s at m = 5: where the maximum sits\t", w
+          printf "Imoto Table 1, %s at m = 5: where the maximum sits\t", w
           printf "jittered runs (%d, levels%s): the largest error sits %.1f h to %.1f h inside the boundary of Omega; plain grid (%d runs): its maximum lies within %.2f h of the boundary (it is attained along whole lines where |Lap u| is largest, so its place is not informative); the runs reproduce %d stored errors to %.1e (relative)\t",
                  nj, lv, jmin, jmax, np, pmax, n, dev
           printf "%s\n", (jmin >= 1 ? "the particle part of the error is an interior effect (no boundary layer): the steep 2^-11/2^-12 rate is not a boundary artefact" : "the largest error sits within h of the boundary in some jittered run: a boundary effect cannot be excluded") }' \
@@ -210,12 +210,12 @@ span() {
         E += 1 - (1 - px) * (1 - py) }
       END { printf "2^-%d: N = %d in the square, %d in the rounded neighbourhood; %.0f expected to leave; volume mismatch %+.3f%% mirrored, %+.3f%% dropped;", k, n, r, E, 100 * (A / (n * dx * dx) - 1), 100 * (A / ((n - E) * dx * dx) - 1) }')"
   done
-  printf 'Omega_H: the square (-H, 1+H)^2 or the rounded H-neighbourhood of Omega; jittered particles that leave Omega_H mirrored back or dropped\t%s\tthe square: its node count at 2^-5 is the N printed with Figure 4.1; particles mirrored (kept), the dropped alternative changes the volume mismatch by the amounts listed\n' "$ev"
+  printf 'Omega_H: the square (-H, 1+H)^2 or the rounded H-neighbourhood of Omega; jittered particles that leave Omega_H mirrored back or dropped\t%s\tthe square: Imoto Sec. 5 sets Omega_H = (-0.1, 1.1)^2 in so many words, and its node count at 2^-5 is the N printed with Figure 4.1; particles mirrored (kept), the dropped alternative changes the volume mismatch by the amounts listed\n' "$ev"
 
   # --- w^bell of the heat and Poisson studies (thesis §4.2-4.3). -------------------------------
   printf 'w^bell of Sections 4.2-4.3: which registry weight\tthesis 4.1.2: the operators with the quartic polynomial are those of SPH with the bell-shaped kernel (Remark A.1: w = -(r/d) d/dr w^S); the unit test "quartic_polynomial is -(r/2) d/dr of the bell-shaped kernel" checks the registry weight against central differences of (5/pi)(1+3r)(1-r)^3 at r = 0.05..0.95\tquartic_polynomial (and piecewise cubic / quintic polynomial for w^cubic, w^quintic, by the same remark)\n'
 
   # --- The gradient norm (decided by the documents' definitions). ----------------------------
-  printf 'Gradient error norm\timoto Sec. 1 defines |x| as the Euclidean norm; the thesis writes [l-inf(Omega)]^2 for vector fields; test "gradient error: Euclidean norm, brute force reference" checks the fused pass against a brute-force Euclidean evaluation and that the component-wise value differs\tEuclidean length of the error vector, maximum over particles in Omega (all gradient data since this change)\n'
+  printf 'Gradient error norm\tImoto Sec. 1 defines |x| as the Euclidean norm; the thesis writes [l-inf(Omega)]^2 for vector fields; test "gradient error: Euclidean norm, brute force reference" checks the fused pass against a brute-force Euclidean evaluation and that the component-wise value differs\tEuclidean length of the error vector, maximum over particles in Omega (all gradient data since this change)\n'
 } > "$out.tmp"
 mv "$out.tmp" "$out"

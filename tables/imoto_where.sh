@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Where in Ω the largest error of imoto's Lap1 and Lap2 at m = 5 sits (issue: the m = 5 rates),
+# Where in Ω the largest error of Imoto's Lap1 and Lap2 at m = 5 sits (issue: the m = 5 rates),
 # per level and jitter realization: one `gpm trunc` run each (uniform volumes |Ω_H|/N, the
-# test function sin 2π(x+y), h = 2.6·2^(5/m−5)·Δx^(1/m) as in imoto §5).  The error must
+# test function sin 2π(x+y), h = 2.6·2^(5/m−5)·Δx^(1/m) as in Imoto §5).  The error must
 # equal the stored Table 1 row of the same (level, seed); the location is what the study's
 # data file does not record.  Levels 2^-9..2^-11 for seeds 1-3 and the plain grid, 2^-12 for
 # seed 1 (a quarter of an hour each there).  Resumable: finished rows are kept.

@@ -15,11 +15,11 @@
 #   agrees                      within rate_table's tolerance of the published rate, where the
 #                               documents claim convergence;
 #   non-convergence reproduced  within tolerance where the published theoretical rate is NA
-#                               (imoto's m = 1 rows: the rate is about 0 or -1, a different claim);
+#                               (Imoto's m = 1 rows: the rate is about 0 or -1, a different claim);
 #   indeterminate               the published rate lies inside the seed band, but the band has
 #                               fewer than 5 realizations or is wider than the tolerance;
 #   inside seed band            differs for seed 1, but the published rate lies between the
-#                               smallest and largest rate of the stored seeds 1-3 (imoto, and
+#                               smallest and largest rate of the stored seeds 1-3 (Imoto, and
 #                               the thesis tables where seeds 2 and 3 are stored);
 #   differs, checked reason     a reason in CHECKED (checked_reasons.sh) whose diagnostic passed
 #                               and includes a run that restores the published rate;

@@ -1,16 +1,13 @@
 #!/usr/bin/env bash
 # make test's check of the browser check (tests/report/browser_check.sh): a fixture page with
-# a formula, a drawn figure and a wide table under the report's own CSS must pass at the A4
-# printable width; a page with a formula pandoc cannot convert, a blank figure and a table
-# forced wider than the page must fail, naming all three.  (make report runs the check on
-# the report itself.)
+# a formula, a drawn figure, a figure whose text prints at 9 pt, superscripts and a wide table
+# of long numbers and hyphenated words under the report's own CSS must pass at the A4
+# printable width; a page with a formula pandoc cannot convert, a blank figure, a figure whose
+# text prints below 8 pt, a table forced wider than the page, a cell whose number wraps, and
+# a raw caret and a bare nan in the text must fail, naming each.  (make report runs the check
+# on the report itself.)
 # usage: browser_check_test.sh SOURCE_DIR
-export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
-set -u
-src=$1
-fx=$src/tests/report/fixture
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/fixture_env.sh"  # LC_ALL=C, src, fx, tmp
 for page in ok bad; do
   (cd "$fx" && pandoc --from markdown --to html5 --standalone --mathml --self-contained \
      --metadata title="$page" --css "$src/paper/style.css" "$page.md" -o "$tmp/$page.html" 2>/dev/null) ||
@@ -23,8 +20,9 @@ fi
 out=$(bash "$src/tests/report/browser_check.sh" "$tmp/bad.html" 2>&1); rc=$?
 printf '%s\n' "$out"
 [ $rc -eq 1 ] || { echo "FAIL: the bad page gave exit $rc, expected 1"; fail=1; }
-for kind in "FIGURE draws nothing" "TABLE wider than the page" "FORMULA not converted"; do
+for kind in "FIGURE draws nothing" "TABLE wider than the page" "FORMULA not converted" \
+    "SMALL TEXT in figure" "TABLE CELL splits \"0.000123456789012345\"" "RAW TEXT \"2^-" "RAW TEXT \" nan "; do
   printf '%s\n' "$out" | grep -q "$kind" || { echo "FAIL: the bad page's '$kind' was not reported"; fail=1; }
 done
-[ $fail -eq 0 ] && echo "browser check: good page passes, bad page rejected on all three counts"
+[ $fail -eq 0 ] && echo "browser check: good page passes, bad page rejected on every count"
 exit $fail

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# make test's check of the report filter's rules (paper/tsv-tables.lua): a fixture page that
+# reads its numbers from data (datum, counts), gives its nan cells a word and names only levels
+# and files its data hold must build; each bad page must stop pandoc with its own message:
+# a caption naming a level or a file the data lack, a nan cell without a word, counts that
+# leave a category out, a datum with no row, a value the prose has no words for.  The same
+# sources split into a paper and a supplement (long tables and appendices to the supplement).
+# usage: filter_rules_test.sh SOURCE_DIR
+. "$(dirname "$0")/fixture_env.sh"  # LC_ALL=C, src, fx, tmp
+fx=$fx/filter
+build() {  # build PAGE: pandoc with the report's filter, in the fixture folder (its data, its figures)
+  (cd "$fx" && pandoc --from markdown --to html5 --lua-filter "$src/paper/tsv-tables.lua" \
+     --metadata datadir=data "$1.md" -o "$tmp/$1.html" 2>&1)
+}
+fail=0
+out=$(build good) || { printf '%s\n' "$out"; echo "FAIL: the good page was rejected"; fail=1; }
+grep -q "6 agree, 3 differ and 1 not computed" "$tmp/good.html" 2>/dev/null ||
+  { echo "FAIL: the good page's counts are not '6 agree, 3 differ and 1 not computed'"; fail=1; }
+grep -q "no solution" "$tmp/good.html" 2>/dev/null || { echo "FAIL: the good page's nan cell lost its word"; fail=1; }
+while IFS='|' read -r page expect; do
+  out=$(build "$page"); rc=$?
+  if [ $rc -eq 0 ]; then echo "FAIL: $page was accepted"; fail=1
+  elif ! printf '%s\n' "$out" | grep -q "$expect"; then
+    printf '%s\n' "$out"; echo "FAIL: $page did not report '$expect'"; fail=1
+  fi
+done <<'CASES'
+bad_caption_level|caption names level 2^-9
+bad_caption_file|caption names errors_old.tsv
+bad_nan|without a word saying what failed
+bad_counts|a category is missing
+bad_datum|no row of data/score.tsv
+bad_map|has no words in the map
+CASES
+# The paper and its supplement: the long table leaves the paper for a pointer, the supplement
+# holds it (numbered), the appendix and the provenance appendix; the short table stays.
+split() {  # split PART: the split fixture as that part, its text without tags
+  (cd "$fx" && pandoc --from markdown --to html5 --lua-filter "$src/paper/tsv-tables.lua" \
+     --metadata datadir=data --metadata part="$1" split.md 2>&1) | sed 's/<[^>]*>//g' | tr -s ' \n' ' '
+}
+paper=$(split paper) supplement=$(split supplement)
+for want in "Table S1 (supplement, 30 rows): A long table of Uk." "A short table."; do
+  case $paper in *"$want"*) ;; *) echo "FAIL: the paper lacks '$want'"; fail=1 ;; esac
+done
+for unwanted in "Appendix A" "Appendix E"; do
+  case $paper in *"$unwanted"*) echo "FAIL: the paper holds '$unwanted'"; fail=1 ;; esac
+done
+for want in "Table S1. A long table of Uk." "Appendix A. Details" "Appendix E. Provenance"; do
+  case $supplement in *"$want"*) ;; *) echo "FAIL: the supplement lacks '$want'"; fail=1 ;; esac
+done
+case $supplement in *"A short table."*) echo "FAIL: the supplement holds the short table"; fail=1 ;; esac
+[ $fail -eq 0 ] && echo "filter rules: good page builds, each of the 6 bad pages stopped with its message, paper and supplement split"
+exit $fail
