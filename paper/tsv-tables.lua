@@ -142,6 +142,9 @@ local function datum(el)
     v = column_value(t, path, rows[1], spec)
   end
   if type(v) == "number" and v == math.floor(v) then v = string.format("%d", v) end
+  -- digits="2": significant digits of a number read from the data (a ratio, a rate).
+  local digits = el.attributes["digits"]
+  if digits and tonumber(v) then v = string.format("%." .. digits .. "g", tonumber(v)) end
   return datum_words(el, v)
 end
 
