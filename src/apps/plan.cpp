@@ -243,7 +243,7 @@ int body(int argc, char** argv) {
     c.add_row({"matrix-free product: pair rate", fmt(1 / cal.matrix_free.per_pair_s), "pairs/s"});
     c.add_row({"matrix-free product: per target", fmt(cal.matrix_free.per_target_s * 1e6), "us"});
     for (auto& [w, r] : cal.block_ratio)
-      c.add_row({"block product of " + fmt(w) + " columns, per vector", fmt(r), "x single product"});
+      c.add_row({"block product of " + fmt(w) + " columns (time per vector)", fmt(r), "x single product"});
     c.add_row({"calibration wall time", fmt(cal.seconds), "s"});
     c.add_row({"calibration CPU time", fmt(cal.cpu_seconds), "s"});
     c.add_row({"load average before / after", fmt(cal.load_before) + " / " + fmt(cal.load_after), ""});
