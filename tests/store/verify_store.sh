@@ -85,7 +85,7 @@ heat 6 _h15_cellvol "--levels 5,6,7,8,9" --thetas 0 --h-rule h15 --volumes cell
 heat 6 _h15_dtexact "--levels 5,6,7,8,9" --thetas 0 --h-rule h15 --dt-rule exact
 # The identified reading (h15, V_i = dx^2, dt = dt0): every theta at 2^-5 and the rate levels.
 heat 6 _h15_dtexact_cellvol "--levels 5,8,9" --h-rule h15 --dt-rule exact --volumes cell
-heat 5 _h15_dtexact_cellvol "--levels 4,5,6,7" --h-rule h15 --dt-rule exact --volumes cell
+heat 5 _h15_dtexact_cellvol "--levels 4,5,6,7,8" --h-rule h15 --dt-rule exact --volumes cell
 heat 7 _h15_dtexact_cellvol "--levels 5,8,9" --h-rule h15 --dt-rule exact --volumes cell
 check thesis_poisson_diagnostic.tsv "--levels 7,8,9 --variants seed1,plain,seed1_cell,plain_cell" \
   "--levels 7 --weights quartic_polynomial --variants seed1,plain,seed1_cell" thesis_poisson_diagnostic
