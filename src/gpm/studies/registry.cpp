@@ -109,7 +109,7 @@ RegisteredStudy poisson() {
           const double its = c.poisson_its.at(std::string(rule) + "/" + w) * pde_h(rule, dx_of(5)) / u.h;
           u.products = its + 2;
           u.method = as ? "assembled" : "matrix_free";
-          const double setup = as ? u.pairs * c.setup_s_per_nnz : 2 * p.product_s(u, false);
+          const double setup = p.laplacian_setup_s(u, as);
           u.time_s = setup + u.products * p.product_s(u, as);
           u.time_before_s = setup + u.products * p.product_before_s(u);
           u.mem_mib = p.pde_mib(u, as);
@@ -139,11 +139,8 @@ std::string heat_file(const HeatTable& hp, const char* rule) {
 RegisteredStudy heat(const HeatTable& hp) {
   RegisteredStudy s{heat_file(hp, "h10"), {heat_file(hp, "h10"), heat_file(hp, "h15")}, {}, {}};
   s.plan = [&hp](UnitPricer& p) {
-    const Calibration& c = p.cal();
     for (const char* rule : {"h10", "h15"}) {
       const std::string study = heat_file(hp, rule);
-      const double h5 = pde_h(rule, dx_of(5));
-      const double r5 = hp.c * std::pow(h5, hp.p) / (h5 * h5);
       const std::vector<int> run = heat_levels(hp, p.paper(), rule);
       for (int k : p.paper() ? hp.paper : hp.quick)
         for (auto& w : pde_weights()) {
@@ -155,21 +152,17 @@ RegisteredStudy heat(const HeatTable& hp) {
           PlanUnit a = p.base(study, "setup/" + w, k, h);
           const bool as = p.is_assembled(a);
           a.method = as ? "assembled" : "matrix_free";
-          a.time_s = as ? a.pairs * c.setup_s_per_nnz : 2 * p.product_s(a, false);
+          a.time_s = p.laplacian_setup_s(a, as);
           a.time_before_s = a.time_s;
           a.mem_mib = p.pde_mib(a, as);
           a.recorded = false;
           a.basis = "Laplacian set-up (not in the rows' seconds)";
           a.trimmed = trimmed;
           p.units().push_back(a);
-          const double dt0 = hp.c * std::pow(h, hp.p);
-          const double K = std::ceil(kHeatT / dt0 - 1e-9);
+          const double K = p.heat_steps(hp.table, h);
           for (double th : hp.thetas) {
             PlanUnit u = p.base(study, w + "/theta=" + fmt(th), k, h);
-            double its = 0;
-            if (th > 0)
-              its = c.heat_its.at(hp.table + "/" + rule + "/" + w + "/" + fmt(th)) *
-                    std::sqrt((dt0 / (h * h)) / r5);
+            const double its = p.heat_cg_its(hp.table, rule, w, th, h);
             u.products = K * (1 + its);
             u.method = a.method;
             u.time_s = u.products * p.product_s(u, as);

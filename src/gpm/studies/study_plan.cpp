@@ -383,6 +383,25 @@ double UnitPricer::pde_mib(const PlanUnit& u, bool assembled) const {
                         (assembled ? kAssembledBytesPerNonzero * u.pairs + 36 * u.targets : 40 * u.N)) / kMiB;
 }
 
+double UnitPricer::laplacian_setup_s(const PlanUnit& u, bool assembled) const {
+  return assembled ? u.pairs * c_.setup_s_per_nnz : 2 * product_s(u, false);
+}
+
+double UnitPricer::heat_steps(const std::string& table, double h) const {
+  const HeatTable& hp = heat_table(table);
+  return std::ceil(kHeatT / (hp.c * std::pow(h, hp.p)) - 1e-9);
+}
+
+double UnitPricer::heat_cg_its(const std::string& table, const std::string& rule,
+                               const std::string& weight, double theta, double h) const {
+  if (theta == 0) return 0;
+  const HeatTable& hp = heat_table(table);
+  const double h5 = pde_h(rule, dx_of(5));
+  const double r5 = hp.c * std::pow(h5, hp.p) / (h5 * h5);
+  const double dt0 = hp.c * std::pow(h, hp.p);
+  return c_.heat_its.at(table + "/" + rule + "/" + weight + "/" + fmt(theta)) * std::sqrt((dt0 / (h * h)) / r5);
+}
+
 std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
   UnitPricer pricer(profile, c);
   for (auto& study : study_registry()) study.plan(pricer);
@@ -425,8 +444,7 @@ double group_step_s(const std::vector<double>& its, double single_s, bool shared
 }  // namespace
 
 std::vector<HeatMatrixCost> heat_matrix_costs(Profile profile, const Calibration& c) {
-  const Domain dom;
-  const bool paper = profile == Profile::paper;
+  const UnitPricer pricer(profile, c);
   const int n_readings_per_h = 4;  // 2 volumes × 2 time-step rules
   std::vector<HeatMatrixCost> out;
   for (auto& hp : heat_tables()) {
@@ -434,25 +452,15 @@ std::vector<HeatMatrixCost> heat_matrix_costs(Profile profile, const Calibration
     m.table = hp.table;
     m.series = 2 * n_readings_per_h * static_cast<int>(hp.thetas.size()) * static_cast<int>(pde_weights().size());
     for (const char* rule : {"h10", "h15"}) {
-      const double h5 = pde_h(rule, dx_of(5));
-      const double r5 = hp.c * std::pow(h5, hp.p) / (h5 * h5);
-      for (int k : paper ? hp.paper : hp.quick) {
-        const double dx = dx_of(k), h = pde_h(rule, dx);
-        const double N = grid_particle_count(dx, dom), targets = omega_target_estimate(dx);
-        const double nnz = estimated_laplacian_nnz(static_cast<std::size_t>(N),
-                                                   static_cast<std::size_t>(targets), h, dom);
-        const bool assembled = kAssembledBytesPerNonzero * nnz <= kMaxAssembledBytes;
-        const double pairs = predicted_pairs(dx, h, dom);
-        const double single = assembled ? pairs * c.spmv_s_per_nnz : c.matrix_free.seconds(targets, pairs);
-        const double setup = assembled ? pairs * c.setup_s_per_nnz : 2 * single;
-        const double dt0 = hp.c * std::pow(h, hp.p);
-        const double K = std::ceil(kHeatT / dt0 - 1e-9);
+      for (int k : pricer.paper() ? hp.paper : hp.quick) {
+        const PlanUnit u = pricer.base("", "", k, pde_h(rule, dx_of(k)));
+        const bool assembled = pricer.is_assembled(u);
+        const double single = pricer.product_s(u, assembled);
+        const double setup = pricer.laplacian_setup_s(u, assembled);
+        const double K = pricer.heat_steps(hp.table, u.h);
         for (auto& w : pde_weights()) {
           std::vector<double> its;  // one reading's θ
-          for (double th : hp.thetas)
-            its.push_back(th > 0 ? c.heat_its.at(hp.table + "/" + rule + "/" + w + "/" + fmt(th)) *
-                                       std::sqrt((dt0 / (h * h)) / r5)
-                                 : 0.0);
+          for (double th : hp.thetas) its.push_back(pricer.heat_cg_its(hp.table, rule, w, th, u.h));
           // Every reading of this h rule; and those of one volumes choice (2 time-step rules).
           std::vector<double> all, one_volumes;
           for (int r = 0; r < n_readings_per_h; ++r) all.insert(all.end(), its.begin(), its.end());

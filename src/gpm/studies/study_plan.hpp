@@ -114,6 +114,14 @@ class UnitPricer {
   double product_s(const PlanUnit& u, bool assembled) const;
   double product_before_s(const PlanUnit& u) const;
   double pde_mib(const PlanUnit& u, bool assembled) const;
+  // The Laplacian's set-up: assembly per non-zero, or (matrix-free) two products' worth.
+  double laplacian_setup_s(const PlanUnit& u, bool assembled) const;
+  // A heat series of Table `table` (heat_tables.hpp), h rule, weight and θ at h: its steps
+  // K = ⌈T/Δt₀⌉ and its CG iterations per step, carried from the calibration's 2^-5 as
+  // √(Δt₀/h²) (0 for θ = 0).
+  double heat_steps(const std::string& table, double h) const;
+  double heat_cg_its(const std::string& table, const std::string& rule, const std::string& weight,
+                     double theta, double h) const;
 
  private:
   Profile profile_;
