@@ -155,15 +155,16 @@ int body(int argc, char** argv) {
   const double max_bytes = a.positive("max-gb") * 1e9;
   // Levels: --levels, else the profile's (with the paper profile's trim of the h rule; with
   // both h rules, the union: a level trimmed for h15 is still run for h10).
+  std::map<std::string, std::vector<int>> rule_levels;
   std::vector<int> levels;
-  for (auto& hr : h_rules)
-    for (int k : run.levels(ts.quick, heat_levels(ts, true, hr)))
+  for (auto& hr : h_rules) {
+    rule_levels[hr] = run.levels(ts.quick, heat_levels(ts, true, hr));
+    for (int k : rule_levels[hr])
       if (std::find(levels.begin(), levels.end(), k) == levels.end()) levels.push_back(k);
+  }
   std::sort(levels.begin(), levels.end());
   auto runs_level = [&](const std::string& hr, int k) {
-    if (run.levels_given()) return true;
-    const auto own = run.levels(ts.quick, heat_levels(ts, true, hr));
-    return std::find(own.begin(), own.end(), k) != own.end();
+    return std::find(rule_levels[hr].begin(), rule_levels[hr].end(), k) != rule_levels[hr].end();
   };
   require_pde_levels_fit_memory(levels, h_rules, storage, max_bytes);
   const std::string out = run.out(), rates_input = a.str("rates-input");
