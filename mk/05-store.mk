@@ -58,8 +58,12 @@ $(DATA)/verdicts.tsv: tables/verdicts.sh tables/items.tsv $(DATA)/store_score.ts
 
 # The documents' figures drawn from the store where it holds their levels (the same gnuplot
 # scripts, datadir = the store): figures/out/store_<figure>.svg.
-STORE_FIGS := thesis_fig4_8 thesis_fig4_9 thesis_fig4_10 thesis_fig4_11 thesis_heat_readings imoto_fig5
+STORE_FIGS := thesis_fig4_3 thesis_fig4_5 thesis_fig4_6 thesis_fig4_7 thesis_fig4_8 thesis_fig4_9 thesis_fig4_10 thesis_fig4_11 thesis_heat_readings imoto_fig5
 FIGFILES += $(foreach f,$(STORE_FIGS),$(FIGOUT)/store_$(f).svg)
+$(FIGOUT)/store_thesis_fig4_3.svg: $(STORE)/thesis_table4_1.tsv figures/thesis_errors.gp tables/published/thesis_table4_1_long.tsv
+$(FIGOUT)/store_thesis_fig4_5.svg: $(STORE)/thesis_table4_2.tsv figures/thesis_errors.gp tables/published/thesis_table4_2_long.tsv
+$(FIGOUT)/store_thesis_fig4_6.svg $(FIGOUT)/store_thesis_fig4_7.svg: $(STORE)/thesis_table4_3.tsv figures/thesis_errors.gp \
+    tables/published/thesis_table4_3_long.tsv
 $(FIGOUT)/store_thesis_fig4_8.svg: $(STORE)/thesis_table4_4.tsv tables/published/thesis_table4_4_long.tsv
 $(FIGOUT)/store_thesis_fig4_9.svg: $(STORE)/thesis_table4_5.tsv figures/thesis_heat.gp tables/published/thesis_table4_5_long.tsv
 $(FIGOUT)/store_thesis_fig4_10.svg: $(STORE)/thesis_table4_6.tsv figures/thesis_heat.gp tables/published/thesis_table4_6_long.tsv

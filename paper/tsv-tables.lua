@@ -446,8 +446,9 @@ end
 
 -- The paper and its supplement, from the same sources.  The paper keeps the chapters and
 -- puts a one-line pointer where a long table stood; the supplement keeps the appendices
--- (chapters titled "Appendix …"), every long table under its chapter's title, and the
--- provenance appendix.  Long tables are numbered S1, S2, … in source order in both.
+-- (chapters titled "Appendix …"), every long table and every section whose heading carries
+-- the class supplement ({.supplement}) under its chapter's title, and the provenance appendix.
+-- Long tables are numbered S1, S2, … and moved sections Section S1, S2, … in source order.
 -- A long table's caption, set as its table's caption was (raw carets as superscripts).
 local function caption_inlines(div)
   local text = div.attributes["caption"]
@@ -456,36 +457,55 @@ end
 
 local function split_parts(doc)
   if part == "whole" then return doc end
-  local out, n = {}, 0
+  local out, n, m = {}, 0, 0
   -- chapter: the paper chapter being read; marked: its title has been set down in the
-  -- supplement (a chapter-mark for the provenance appendix); titled: its "Tables of" heading too.
-  local appendix, chapter, marked, titled = false, nil, false, false
+  -- supplement (a chapter-mark for the provenance appendix); titled: its "Supplement to"
+  -- heading too.  moving: the level of a section marked {.supplement} being read (it runs
+  -- to the next heading of that level or above), nil outside one.
+  local appendix, chapter, marked, titled, moving = false, nil, false, false, nil
   local function mark()
     if part == "supplement" and not appendix and not marked then
       table.insert(out, pandoc.Div({chapter}, pandoc.Attr("", {"chapter-mark"})))
       marked = true
     end
   end
+  local function title()  -- the supplement's heading over what it holds of this chapter
+    mark()
+    if not appendix and not titled then
+      table.insert(out, pandoc.Header(1, {pandoc.Str("Supplement to: ")} .. chapter.content,
+                                      pandoc.Attr("s-" .. (chapter.identifier or ""))))
+      titled = true
+    end
+  end
   for _, b in ipairs(doc.blocks) do
+    if b.t == "Header" and moving and b.level <= moving then moving = nil end
     if b.t == "Header" and b.level == 1 then
       appendix = pandoc.utils.stringify(b.content):match("^Appendix") ~= nil
       chapter, marked, titled = b, false, false
       if (part == "paper") ~= appendix then table.insert(out, b) end
+    elseif b.t == "Header" and b.classes:includes("supplement") and not appendix then
+      -- A section the paper leaves to the supplement: a one-line pointer where it stood.
+      m = m + 1
+      moving = b.level
+      local label = "Section S" .. m
+      if part == "paper" then
+        table.insert(out, pandoc.Para(pandoc.List({pandoc.Emph({pandoc.Str(label)}),
+          pandoc.Str(" (supplement): ")}) .. b.content))
+      else
+        title()
+        table.insert(out, pandoc.Header(2, pandoc.List({pandoc.Str(label .. "."), pandoc.Space()}) ..
+                                        b.content, b.attr))
+      end
     elseif b.t == "Div" and b.classes:includes("long-table") then
       n = n + 1
       local label = "Table S" .. n
       if part == "paper" then
-        if not appendix then
+        if not appendix and not moving then
           table.insert(out, pandoc.Para(pandoc.List({pandoc.Emph({pandoc.Str(label)}),
             pandoc.Str(" (supplement, " .. b.attributes["rows"] .. " rows): ")}) .. caption_inlines(b)))
         end
       else
-        mark()
-        if not appendix and not titled then
-          table.insert(out, pandoc.Header(1, {pandoc.Str("Tables of: ")} .. chapter.content,
-                                          pandoc.Attr("s-" .. (chapter.identifier or ""))))
-          titled = true
-        end
+        title()
         local tbl = b.content[1]
         tbl.caption.long = {pandoc.Plain(pandoc.List({pandoc.Strong({pandoc.Str(label .. ".")}), pandoc.Space()}) ..
                                          caption_inlines(b))}
@@ -496,7 +516,7 @@ local function split_parts(doc)
       -- appendix, filed under the chapter-mark of their chapter.
       mark()
       table.insert(out, b)
-    elseif (part == "paper") ~= appendix then
+    elseif (part == "paper") ~= (appendix or moving ~= nil) then
       table.insert(out, b)
     end
   end

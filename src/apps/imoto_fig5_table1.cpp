@@ -84,54 +84,6 @@ double printed_pi3_error(const Particles& p, const std::vector<double>& V, doubl
   return err / ref;
 }
 
-// The cost of the paper profile (--cost-out): the measured units as they are, the others
-// extrapolated from the estimated pair count at the mean kernel rate of the finest level run.
-void write_paper_cost(const TsvTable& st, Profile profile, double wall_s, const std::string& path) {
-  // (level, m) → row of the store; a malformed cell is named by file, row and column.
-  std::map<std::pair<int, std::string>, std::size_t> measured;
-  double rate = 0;
-  int finest = -1;
-  const int c_pairs = st.require_column("pairs"), c_kernel = st.require_column("kernel_s"),
-            c_time = st.require_column("time_s"), c_level = st.require_column("level");
-  for (std::size_t i = 0; i < st.rows.size(); ++i) {
-    const int lv = static_cast<int>(st.integer(i, c_level));
-    measured[{lv, st.text(i, "m")}] = i;
-    if (lv > finest) finest = lv, rate = 0;
-  }
-  double pairs_f = 0, secs_f = 0;
-  for (auto& [key, i] : measured)
-    if (key.first == finest) pairs_f += st.number(i, c_pairs), secs_f += st.number(i, c_kernel);
-  rate = secs_f > 0 ? pairs_f / secs_f : 0;
-  TsvTable t;
-  t.set("program", "imoto_fig5_table1 --cost-out");
-  t.set("profile", profile_name(profile));
-  t.set("rate_pairs_per_s", rate);
-  t.set("rate_note", "mean kernel rate (nine weights, one field) at the finest computed level " +
-                         std::to_string(finest));
-  add_provenance(t);
-  t.columns = {"level", "m", "pairs", "time_s", "source"};
-  double total = 0;
-  for (int level : kStudy.levels.paper)
-    for (double m : kStudy.orders) {
-      auto it = measured.find({level, fmt(m)});
-      double pairs = 0, secs = 0;
-      std::string src = "measured";
-      if (it != measured.end()) {
-        pairs = st.number(it->second, c_pairs);
-        secs = st.number(it->second, c_time);
-      } else {
-        pairs = estimated_pairs(level, m);
-        secs = rate > 0 ? pairs / rate : NAN;
-        src = "extrapolated";
-      }
-      total += secs;
-      t.add_row({fmt(level), fmt(m), fmt(pairs), fmt(secs), src});
-    }
-  t.set("paper_profile_total_s", total);
-  t.set("wall_time_s", wall_s);
-  t.save(path);
-}
-
 // The (Π3) constant check (--printed-out): the printed 5/π against the normalizing 6/π on the
 // coarse levels, for the same particles as the study.
 void write_printed_pi3(const std::vector<std::pair<std::string, std::string>>& params,
@@ -177,9 +129,7 @@ int body(int argc, char** argv) {
       .output("printed-out", "", "optional TSV: (Pi3) with the printed constant 5/pi")
       .opt("printed-max-level", "8", "finest level of the --printed-out check")
       .opt("volumes", "lattice", "lattice: V_i = |Omega_H|/N as in imoto Sec. 5; cell: V_i = dx^2, the\n"
-                                 "  delta-free error (with uniform V every operator scales by |Omega_H|/(N dx^2))")
-      .output("cost-out", "", "optional TSV: pairs and time per (level, m) of the paper profile,\n"
-                           "  measured where computed, else extrapolated at the measured rate");
+                                 "  delta-free error (with uniform V every operator scales by |Omega_H|/(N dx^2))");
   run.parse(argc, argv);
   const Profile profile = run.profile();
   const std::vector<int> levels = run.levels(kStudy.levels.quick, kStudy.levels.paper);
@@ -267,9 +217,7 @@ int body(int argc, char** argv) {
   }
   if (!run.finish()) return 0;
 
-  // Side reports: the paper profile's cost, and the printed (Π3) constant.
-  if (!args.str("cost-out").empty())
-    write_paper_cost(cache.table(), profile, run.elapsed_s(), args.str("cost-out"));
+  // Side report: the printed (Π3) constant.  (The paper profile's cost is the plan's.)
   if (!args.str("printed-out").empty())
     write_printed_pi3(params, profile, levels, printed_max, seed, jitter, dom,
                       args.str("printed-out"));

@@ -32,21 +32,26 @@ bad_datum|no row of data/score.tsv
 bad_map|has no words in the map
 CASES
 # The paper and its supplement: the long table leaves the paper for a pointer, the supplement
-# holds it (numbered), the appendix and the provenance appendix; the short table stays.
+# holds it (numbered), the appendix and the provenance appendix; the short table stays; a
+# section marked {.supplement} moves (a pointer stays) up to the next heading of its level.
 split() {  # split PART: the split fixture as that part, its text without tags
   (cd "$fx" && pandoc --from markdown --to html5 --lua-filter "$src/paper/tsv-tables.lua" \
      --metadata datadir=data --metadata part="$1" split.md 2>&1) | sed 's/<[^>]*>//g' | tr -s ' \n' ' '
 }
 paper=$(split paper) supplement=$(split supplement)
-for want in "Table S1 (supplement, 30 rows): A long table of Uk." "A short table."; do
+for want in "Table S1 (supplement, 30 rows): A long table of Uk." "A short table." \
+            "Section S1 (supplement): A side section" "Main text."; do
   case $paper in *"$want"*) ;; *) echo "FAIL: the paper lacks '$want'"; fail=1 ;; esac
 done
-for unwanted in "Appendix A" "Appendix E"; do
+for unwanted in "Appendix A" "Appendix E" "Side text."; do
   case $paper in *"$unwanted"*) echo "FAIL: the paper holds '$unwanted'"; fail=1 ;; esac
 done
-for want in "Table S1. A long table of Uk." "Appendix A. Details" "Appendix E. Provenance"; do
+for want in "Table S1. A long table of Uk." "Appendix A. Details" "Appendix E. Provenance" \
+            "Section S1. A side section" "Side text."; do
   case $supplement in *"$want"*) ;; *) echo "FAIL: the supplement lacks '$want'"; fail=1 ;; esac
 done
-case $supplement in *"A short table."*) echo "FAIL: the supplement holds the short table"; fail=1 ;; esac
-[ $fail -eq 0 ] && echo "filter rules: good page builds, each of the 6 bad pages stopped with its message, paper and supplement split"
+for unwanted in "A short table." "Main text."; do
+  case $supplement in *"$unwanted"*) echo "FAIL: the supplement holds '$unwanted'"; fail=1 ;; esac
+done
+[ $fail -eq 0 ] && echo "filter rules: good page builds, each of the 6 bad pages stopped with its message, paper and supplement split (long table, marked section)"
 exit $fail

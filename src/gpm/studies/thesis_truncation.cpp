@@ -143,91 +143,13 @@ const std::vector<std::string>& thesis_table_columns() {
   return c;
 }
 
-// Paper-profile cost: measured passes as they are; the others extrapolated from the finest
-// measured pass of the same reading and volumes (pairs per second, Voronoi seconds and peak
-// memory per particle), with the pair count predicted from h and Δx and calibrated by the
-// ratio measured/predicted of that pass.
-static void write_paper_cost(const ThesisTableSpec& spec, const std::vector<HReading>& readings,
-                             const std::vector<Volumes>& volumes, const TsvTable& st,
-                             const std::string& out, const std::string& path) {
-  const Domain dom;
-  TsvTable cost;
-  cost.set("program", spec.program);
-  cost.set("table", spec.table);
-  cost.set("data", out);
-  cost.set("method", "extrapolated rows: time = pairs / (pairs per second of the finest "
-                     "measured pass) + N * (Voronoi s per particle); memory = N * (peak MiB "
-                     "per particle of the finest measured pass)");
-  add_provenance(cost);
-  cost.columns = {"h_reading", "volumes", "level", "dx", "h", "N", "pairs", "time_s",
-                  "voronoi_s", "peak_rss_mib", "source"};
-  const int cr = st.require_column("h_reading"), cv = st.require_column("volumes"),
-            cl = st.require_column("level"), cn = st.require_column("N"),
-            cp = st.require_column("pairs"), ct = st.require_column("time_s"),
-            cvo = st.require_column("voronoi_s"), cm = st.require_column("peak_rss_mib");
-  double total_s = 0, peak = 0;
-  for (HReading r : readings)
-    for (Volumes v : volumes) {
-      // Finest measured pass of (r, v): one row per request × case; take the first.  Cells
-      // by row and named column, so that a malformed one is named by file, row and column.
-      std::map<int, std::size_t> measured;
-      for (std::size_t i = 0; i < st.rows.size(); ++i)
-        if (st.rows[i][cr] == h_reading_name(r) && st.rows[i][cv] == volumes_name(v))
-          measured.emplace(static_cast<int>(st.integer(i, cl)), i);
-      if (measured.empty()) continue;
-      const std::size_t ref = measured.rbegin()->second;
-      const int kref = measured.rbegin()->first;
-      const double dxr = std::ldexp(1.0, -kref);
-      const double Nr = st.number(ref, cn);
-      const double calib = st.number(ref, cp) / predicted_pairs(dxr, thesis_h(r, spec.c, spec.p, dxr));
-      const double pps = st.number(ref, cp) / std::max(1e-9, st.number(ref, ct));
-      const double vps = st.number(ref, cvo) / Nr;
-      const double mpp = st.number(ref, cm) / Nr;
-      for (int k : spec.paper_levels) {
-        if (v == Volumes::uniform && k > spec.paper_uniform_max_level) continue;
-        const double dx = std::ldexp(1.0, -k);
-        const double h = thesis_h(r, spec.c, spec.p, dx);
-        const int64_t n1 = grid_last(dx, dom) - grid_first(dx, dom) + 1;
-        const double N = static_cast<double>(n1) * static_cast<double>(n1);
-        std::vector<std::string> row;
-        auto it = measured.find(k);
-        double ts, vs, mem, pairs;
-        std::string src;
-        if (it != measured.end()) {
-          const std::size_t m = it->second;
-          pairs = st.number(m, cp);
-          ts = st.number(m, ct);
-          vs = st.number(m, cvo);
-          mem = st.number(m, cm);
-          src = "measured";
-        } else {
-          pairs = calib * predicted_pairs(dx, h);
-          ts = pairs / pps;
-          vs = v == Volumes::voronoi ? vps * N : 0;
-          mem = mpp * N;
-          src = "extrapolated from level " + std::to_string(kref);
-        }
-        total_s += ts + vs;
-        peak = std::max(peak, mem);
-        cost.add_row({h_reading_name(r), volumes_name(v), fmt(k), fmt(dx), fmt(h), fmt(N),
-                      fmt(pairs), fmt(ts), fmt(vs), fmt(mem), src});
-      }
-    }
-  cost.set("paper_total_time_s", total_s);
-  cost.set("paper_peak_rss_mib", peak);
-  cost.save(path);
-}
-
 int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
   StudyRunner run(spec.program, spec.summary, "quick or paper (the thesis' levels)");
   Args& args = run.args();
-  args.output("cost", "", "optional TSV: paper-profile time and peak memory per pass, "
-                          "measured where run, else extrapolated")
-      .opt("readings", "", "comma-separated h readings: printed, scaled (default: the table's)")
+  args.opt("readings", "", "comma-separated h readings: printed, scaled (default: the table's)")
       .opt("volumes", "voronoi,uniform", "comma-separated volume choices: voronoi, uniform")
       .opt("max-level", "", "drop levels above this one (e.g. to bound a paper run)");
   run.parse(argc, argv);
-  const std::string& out = run.out();
   const Profile profile = run.profile();
   const uint64_t seed = run.seed();
   std::vector<HReading> readings = spec.readings;
@@ -362,10 +284,7 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
                                   rss));
       }
   }
-  if (!run.finish()) return 0;
-
-  if (!args.str("cost").empty())
-    write_paper_cost(spec, readings, volumes, cache.table(), out, args.str("cost"));
+  run.finish();
   return 0;
 }
 

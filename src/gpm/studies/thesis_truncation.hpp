@@ -53,7 +53,7 @@ const ThesisTableSpec& thesis_table_spec(const std::string& program);  // InputE
 
 // Runs the table: for each level (ascending) and each (reading, volumes) not yet in the data
 // file, one fused pass; writes one row per weight × operator × case and saves after every
-// pass.  Also writes --cost (paper-profile time and memory, measured or extrapolated).
+// pass.  The paper profile's cost of each pass is the plan's (study_plan.hpp).
 int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv);
 
 }  // namespace gpm
