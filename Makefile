@@ -123,15 +123,16 @@ paper/supplement.html: $(REPORT_INPUTS)
 # A4 page, every formula in MathML, no text below 8 pt in a figure, no word split in a table
 # cell, no raw caret or nan) on the HTML, then Chromium's print to PDF of the same HTML (print
 # rules in paper/style.css).  Then no page of the PDF may stay more than 60 % blank unless a
-# chapter follows it (tests/report/page_fill.py); BLANK_PAGES_ALLOWED is a ratchet for the
-# pages the current layout still leaves blank before a figure that does not fit: it may fall,
-# never rise.
-BLANK_PAGES_ALLOWED := 2
+# chapter follows it (tests/report/page_fill.py); BLANK_PAGES_ALLOWED_<part> is a ratchet for
+# the pages the current layout still leaves blank before a figure that does not fit: it may
+# fall, never rise.
+BLANK_PAGES_ALLOWED_report := 0
+BLANK_PAGES_ALLOWED_supplement := 2
 paper/%.pdf: paper/%.html paper/style.css tests/report/browser_check.sh tests/report/page_fill.py
 	bash tests/report/browser_check.sh $<
 	chromium --headless --no-sandbox --disable-gpu --no-pdf-header-footer \
 	  --print-to-pdf=$@.tmp "file://$(CURDIR)/$<" 2>/dev/null
-	python3 tests/report/page_fill.py --allow $(BLANK_PAGES_ALLOWED) $@.tmp
+	python3 tests/report/page_fill.py --allow $(BLANK_PAGES_ALLOWED_$*) $@.tmp
 	mv $@.tmp $@
 	@echo "report: $@ (printed from $<)"
 

@@ -22,8 +22,10 @@ set datafile commentschars "#"
 # spanning a factor f in x: call   eval triangle(x0, y0, f, s, 'label')
 # The label sits left of the triangle's lower-left corner, so neighbouring triangles do not
 # share label space.
-triangle(x0, y0, f, s, lab) = sprintf("set object polygon from %g,%g to %g,%g to %g,%g to %g,%g fs empty border lc rgb '#000000'; set label '%s' at %g,%g right font ',10'", \
-  x0, y0, x0*f, y0, x0*f, y0*f**s, x0, y0, lab, x0/1.06, y0)
+# TRI_FONT: the label's font (a figure drawn at print size sets it to its text size).
+TRI_FONT = ',10'
+triangle(x0, y0, f, s, lab) = sprintf("set object polygon from %g,%g to %g,%g to %g,%g to %g,%g fs empty border lc rgb '#000000'; set label '%s' at %g,%g right font '%s'", \
+  x0, y0, x0*f, y0, x0*f, y0*f**s, x0, y0, lab, x0/1.06, y0, TRI_FONT)
 # A log-2 x axis labelled with powers of 2 in half steps, for abscissae (such as h) that span
 # less than a decade, where '10^{%L}' would leave a single label.  Set the range first:
 #   xlo = 0.09; xhi = 0.22; eval pow2_xtics

@@ -11,11 +11,13 @@
 # sits under the two finest points of its weight's series; in the thesis' settings a thick
 # grey segment starts at the finest point of each series and rises with the PUBLISHED rate of
 # that weight and case over the last interval: where the rate agrees, it lies on the data.
-# Columns are addressed by name (the data file's header).
+# Columns are addressed by name (the data file's header).  Drawn at print size: 760 px wide
+# (the A4 text width is 703 px), every text 14 px (superscripts 11 px), so none prints below 8 pt; one legend, in
+# the first panel.
 load 'figures/style.gp'
 set datafile columnheaders
 set xlabel 'h'
-set ylabel (OP eq 'grad' ? 'max_Ω |∇v − ∇_hv| / max_Ω |∇v|  (Euclidean)' : \
+set ylabel (OP eq 'grad' ? 'max_Ω |∇v − ∇_hv| / max_Ω |∇v|' : \
             OP eq 'lap' ? 'max_Ω |Δv − Δ_hv| / max_Ω |Δv|' : 'max_Ω |v − Π_hv| / max_Ω |v|')
 stats f using (column("h")) nooutput
 xlo = STATS_min * 0.8; xhi = STATS_max * 1.25
@@ -27,22 +29,27 @@ set yrange [ylo:yhi]
 nscaled = int(system(sprintf("awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next } $c[\"h_reading\"]==\"scaled\"' '%s' | wc -l", f)))
 settings = nscaled > 0 ? "printed:voronoi scaled:voronoi printed:uniform" : "printed:voronoi printed:uniform"
 nrow = words(settings)
-set terminal svg size 1100,(330 * nrow + 90) dynamic enhanced font 'Helvetica,12' background rgb 'white'
+set terminal svg size 760,(250 * nrow + 70) dynamic enhanced font 'Helvetica,14' background rgb 'white'
 set output out
-set key top left box opaque font ',10' samplen 2
+TRI_FONT = ',14'
+set key bottom right box opaque font ',14' samplen 2 spacing 0.9
 label(i) = word(L, i)
 if (!exists("SW")) SW = '1'
 reading(s) = s[1:strstrt(s, ':') - 1]
 volumes(s) = s[strstrt(s, ':') + 1:]
-setting_name(s) = sprintf('%s h, %s', reading(s), volumes(s) eq 'voronoi' ? 'Voronoi volumes' : 'volumes |Ω_H|/N (beyond the thesis)')
+setting_name(s) = sprintf('%s h, %s', reading(s), volumes(s) eq 'voronoi' ? 'Voronoi V_i' : 'V_i = |Ω_H|/N')
 sel(r, v, w, c) = rows_named(f, sprintf('$c["h_reading"]=="%s" && $c["volumes"]=="%s" && $c["weight"]=="%s" && $c["operator"]=="%s" && $c["function"]=="%s"', r, v, w, OP, c))
 # The published rate of (weight, case) from P.
 pub(w, c) = published_rate(P, sprintf('$c["weight"]=="%s" && $c["function"]=="%s" && (!("operator" in c) || $c["operator"]=="%s")', w, c, OP))
-set multiplot layout nrow,2 title T
+set multiplot layout nrow,2 title T."\nCase 1: (x−½)^4+(y−½)^4,  Case 2: sin 2π(x+y)" font ",15"
+panel = 0
 do for [s in settings] {
   do for [c in "case1 case2"] {
     r = reading(s); v = volumes(s)
-    set title sprintf('%s — %s', c eq "case1" ? "Case 1: (x−½)^4+(y−½)^4" : "Case 2: sin 2π(x+y)", setting_name(s))
+    set title sprintf('%s: %s', c eq "case1" ? "Case 1" : "Case 2", setting_name(s))
+    panel = panel + 1
+    if (panel > 2 * nrow - 2) { set xlabel 'h' } else { unset xlabel }  # h under the last row only
+    if (panel > 1) { unset key }
     unset object; unset label; unset arrow
     if (v eq 'voronoi') {
       do for [i=1:words(W)] {
