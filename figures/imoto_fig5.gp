@@ -7,16 +7,19 @@
 # for each curve, drawn from its finest point over the last interval (where the rate agrees,
 # the segment lies on the data; m = 1 rows claim no convergence).
 # Columns are addressed by name (level, m, weight, h, rel_error of imoto_fig5_table1.tsv).
+# Drawn at print size: 760 px wide (the A4 text width is 703 px), 14 px text, so nothing
+# prints below 8 pt; panels placed by hand, each row on the h range of its m (the data fill
+# the axis), one legend below the panels (the line type is the weight's index in every panel).
 load 'figures/style.gp'
-set terminal svg size 1500,1450 dynamic enhanced font 'Helvetica,12' background rgb 'white'
+W = 760; Hc = 860
+set terminal svg size W,Hc dynamic enhanced font 'Helvetica,14' background rgb 'white'
+TRI_FONT = ',14'
 set output out
 set datafile columnheaders
 f = datadir.'/imoto_fig5_table1.tsv'
 P = 'tables/published/imoto_table1.tsv'
-set xlabel 'h'
-set format x '10^{%L}'
-set key bottom left box opaque font ',10' samplen 2
-set multiplot layout 3,3 title 'Imoto Figure 5: relative ℓ^∞(Ω) errors (max over particles in Ω; Euclidean length for ∇) against h'
+unset key
+set multiplot title "Imoto Figure 5: relative ℓ^∞(Ω) errors against h" font ',15'
 ops = "interpolant gradient laplacian"
 w1 = "Pi1 Grad1 Lap1"; w2 = "Pi2 Grad2 Lap2"; w3 = "Pi3 Grad3 Lap3"
 sym = "Π ∇ Δ"
@@ -25,10 +28,19 @@ s3 = "2 2 1"; s5 = "2 2 2"; s5h = "4 4 3"
 sel(m, w) = rows_named(f, sprintf('$c["m"]==%s && $c["weight"]=="%s"', m, w))
 pub(w, m) = published_rate(P, sprintf('$c["weight"]=="%s" && $c["m"]==%s', w, m))
 weight_of(j, k) = word(j == 1 ? w1 : j == 2 ? w2 : w3, k)
+# Panel boxes (screen fractions): columns = operators, rows = m (top to bottom 1, 3, 5).
+pl = 72.0 / W; pr = 1 - 12.0 / W; gx = 58.0 / W; pw = (pr - pl - 2 * gx) / 3
+pt = 1 - 62.0 / Hc; pb = 115.0 / Hc; gy = 52.0 / Hc; ph = (pt - pb - 2 * gy) / 3
+row = 0
 do for [m in "1 3 5"] {
+  row = row + 1
+  stats rows_named(f, sprintf('$c["m"]==%s', m)) using (column("h")) name 'HX' nooutput
   do for [k=1:3] {
-    set title sprintf('(%s) %s, m = %s', substr("abc", k, k), word(ops, k), m)
+    set lmargin at screen pl + (k - 1) * (pw + gx); set rmargin at screen pl + (k - 1) * (pw + gx) + pw
+    set tmargin at screen pt - (row - 1) * (ph + gy); set bmargin at screen pt - (row - 1) * (ph + gy) - ph
+    set title sprintf('(%s) %s, m = %s', substr("abc", k, k), word(ops, k), m) offset 0,-0.6
     set ylabel (k == 1 ? 'relative error' : '')
+    if (row == 3) { set xlabel 'h' offset 0,0.5 } else { unset xlabel }
     unset object; unset label; unset arrow
     set autoscale xy
     # Published rates, from the finest point of each curve.
@@ -47,11 +59,19 @@ do for [m in "1 3 5"] {
         ANCHOR_DROP = 0.7
       }
     }
-    set xrange [5e-4:0.1]
-    if (k < 3) { set yrange [1e-5:1] } else { set yrange [1e-4:1e3] }
+    set xrange [HX_min / 1.6 : HX_max * 1.25]
+    # m = 1 spans two decades of h; m = 3, 5 less than one: ticks at factors of 2 there.
+    if (m eq "1") { set format x '10^{%L}'; set xtics autofreq } else { set format x '%g'; set xtics 2 }
+    if (k < 3) { set yrange [1e-5:1]; set ytics 100 } else { set yrange [1e-4:1e3]; set ytics 100 }
     plot for [j=1:3] sel(m, weight_of(j, k)) using (column("h")):(column("rel_error")) \
-           with linespoints lt j title sprintf('%s%d', word(sym, k), j), \
-         NaN with lines lw 6 lc rgb '#bbbbbb' title 'published rate'
+           with linespoints lt j notitle
   }
 }
+# The key: one row under the panels.
+unset object; unset arrow; unset label; unset title; unset xlabel; unset ylabel
+unset border; unset tics; unset grid; unset logscale; set xrange [0:1]; set yrange [0:1]
+set lmargin at screen 0.02; set rmargin at screen 0.98; set bmargin at screen 0.0; set tmargin at screen 45.0 / Hc
+set key center center horizontal maxrows 1 samplen 1.5 width -3 box noopaque  # drawn once (an opaque key is drawn twice)
+plot for [j=1:3] NaN with linespoints lt j title sprintf('weight %d (Π%d, ∇%d, Δ%d)', j, j, j, j), \
+     NaN with lines lw 6 lc rgb '#bbbbbb' title 'published rate'
 unset multiplot

@@ -5,10 +5,14 @@
 # its panel; P is the published long-format table (weight, theta, numerical): each series gets a
 # grey segment from its finest point, rising with the PUBLISHED rate over the last interval
 # (where the rate agrees, the segment lies on the data).  The panels share both axes.
+# Drawn at print size: 760 px wide (the A4 text width is 703 px) with 14 px text, so nothing
+# prints below 8 pt; one legend, below the panels.
 load 'figures/style.gp'
 nth = words(thetas)
-W = 300 * nth + 300  # canvas width: the panels plus the key
-set terminal svg size W,480 dynamic enhanced font 'Helvetica,12' background rgb 'white'  # room for the key outside
+W = 760
+set terminal svg size W,470 dynamic enhanced font 'Helvetica,14' background rgb 'white'
+TRI_FONT = ',14'
+
 set output out
 set datafile columnheaders
 set xlabel 'influence radius h'
@@ -25,9 +29,14 @@ stats f using (column("h")) name 'EX' nooutput
 # Room below the data for the triangles (which sit under the finest points); only the θ drawn
 # (an explicit run that did not blow up under Δt = 0.5h² would stretch the axis by decades).
 stats rows_named(f, sprintf('$c["blew_up"]=="no" && index(" %s ", " " $c["theta"] " ")', thetas)) using (column("rel_error")) name 'EY' nooutput
-# Equal panels, the key outside the last one (never over the data or the triangles).
-set multiplot layout 1,nth margins 90.0/W,1 - 210.0/W,0.12,0.92 spacing 30.0/W,0
+# Equal panels placed by hand, then the key alone in a strip below them (never over the data
+# or the triangles; a key inside a narrow panel would stack its entries).
+set multiplot
+pl = 95.0 / W; pr = 1 - 28.0 / W; gap = 12.0 / W; pw = (pr - pl - (nth - 1) * gap) / nth
+unset key
 do for [j=1:nth] {
+  set lmargin at screen pl + (j - 1) * (pw + gap); set rmargin at screen pl + (j - 1) * (pw + gap) + pw
+  set bmargin at screen 0.25; set tmargin at screen 0.9
   unset object; unset arrow; unset label
   set autoscale xy; set logscale x 10  # drop the previous panel's ranges before the stats below
   set title sprintf('θ = %s', thn(th(j)))
@@ -42,9 +51,12 @@ do for [j=1:nth] {
   xlo = EX_min * 0.72; xhi = EX_max * 1.15; eval pow2_xtics
   set yrange [EY_min / 5 : EY_max * 3]
   if (j > 1) { set ylabel ' '; set format y '' } else { set ylabel 'relative error (4.2), ℓ^∞(0,T; ℓ^2(Ω_H))'; set format y '10^{%L}' }
-  if (j < nth) { unset key } else { set key outside right top }
-  plot for [i=1:3] sel(i, j) using (column("h")):(column("rel_error")) with linespoints \
-       lt i title wn(i), \
-       NaN with lines lw 6 lc rgb '#bbbbbb' title 'published rate'
+  plot for [i=1:3] sel(i, j) using (column("h")):(column("rel_error")) with linespoints lt i notitle
 }
+# The key: the same line types, in one row under the panels.
+unset object; unset arrow; unset label; unset title; unset xlabel; unset ylabel
+unset border; unset tics; unset grid; unset logscale; set xrange [0:1]; set yrange [0:1]
+set lmargin at screen 0.02; set rmargin at screen 0.98; set bmargin at screen 0.0; set tmargin at screen 0.09
+set key center center horizontal maxrows 1 samplen 1.5 width -3 box noopaque  # drawn once (an opaque key is drawn twice)
+plot for [i=1:3] NaN with linespoints lt i title wn(i), NaN with lines lw 6 lc rgb '#bbbbbb' title 'published rate'
 unset multiplot
