@@ -3,7 +3,8 @@
 # cells of particles in Ω only, with the bound sqrt(2)(1+1/2)/2 that holds for interior cells.
 # The panels share their axes.
 load 'figures/style.gp'
-set terminal svg size 1000,520 dynamic enhanced font 'Helvetica,12' background rgb 'white'
+# Print size: 760 px wide (A4 text width 703 px), text 13-14 px, nothing below 8 pt.
+set terminal svg size 760,600 dynamic enhanced font 'Helvetica,14' background rgb 'white'
 set output out
 set datafile columnheaders
 f = datadir.'/imoto_regularity_cover.tsv'
@@ -17,13 +18,13 @@ set xrange [DX_min/1.2:DX_max*1.2]
 set xlabel 'Δx'
 set ylabel 'r_N / Δx'
 set yrange [0.8:1.45]
-set key below center vertical maxrows 6 font ',10' samplen 3
+set key below center vertical maxrows 6 font ',14' samplen 2
 seed(s) = rows_named(f, sprintf('$c["seed"]==%d', s))
-set multiplot layout 1,2 margins 0.07,0.98,0.34,0.92 spacing 0.07,0
+set multiplot layout 1,2 margins 0.09,0.98,0.42,0.92 spacing 0.06,0
 set title 'five seeds'
 plot for [s=1:5] seed(s) using (column("dx")):(column("r_N_over_dx")) with linespoints lt s title sprintf('r_N, seed %d', s), \
      seed(1) using (column("dx")):(column("claim_over_dx")) with lines lt 7 title 'claim √2(1+1/4)/2 (Imoto §5)'
-set title 'seed 1: all cells and the cells of particles in Ω'
+set title 'seed 1: all cells, cells in Ω'
 set ylabel ''
 plot seed(1) using (column("dx")):(column("r_N_over_dx")) with linespoints lt 1 title 'r_N, seed 1', \
      seed(1) using (column("dx")):(column("r_N_omega_over_dx")) with linespoints lt 6 title 'seed 1, cells of particles in Ω', \

@@ -9,12 +9,13 @@
 #   max_Ω U / max_Ω |U| against Δx, for the cubic spike (negative on (4/7, 1)) and the
 #   positive quartic polynomial, both readings of h.  Above 0 = the principle is violated.
 load 'figures/style.gp'
-set terminal svg size 1000,460 dynamic enhanced font 'Helvetica,12' background rgb 'white'
+# Print size: 760 px wide (A4 text width 703 px), text 13-14 px, nothing below 8 pt.
+set terminal svg size 760,820 dynamic enhanced font 'Helvetica,14' background rgb 'white'
 set output out
 set datafile columnheaders
 fa = datadir.'/thesis_poisson_failure.tsv'
 fb = datadir.'/thesis_poisson_failure_h.tsv'
-set multiplot layout 1,2
+set multiplot layout 2,1  # one above the other: each panel the full width
 
 # --- left panel: h sweep ---------------------------------------------------------------
 set title 'h below the h-connectivity threshold (Δx = 2^{-5})'
@@ -27,7 +28,7 @@ set y2label 'share of Ω cut off from Γ ∪ Γ_H'
 set y2range [0:1.02]
 set y2tics 0.25 nomirror
 set ytics nomirror
-set key at graph 0.98, graph 0.62 right top box opaque font ',10'
+set key at graph 0.98, graph 0.62 right top box opaque font ',14' samplen 1.5
 set format y '10^{%L}'
 set ytics 1e-2, 1e4
 ok(s) = rows_named(fb, sprintf('$c["level"]=="5" && $c["seed"]=="%d" && $c["connected"]=="yes"', s))
@@ -54,7 +55,7 @@ set xrange [*:*] reverse
 set yrange [-0.15:1.15]
 set xlabel 'Δx'
 set ylabel 'max_Ω U / max_Ω |U|   (> 0: violated)'
-set key at graph 0.98, graph 0.6 right top box opaque font ',10'
+set key at graph 0.98, graph 0.6 right top box opaque font ',14' samplen 1.5
 # A failed solve (no number) leaves fewer than three points: those series are drawn as points only.
 cond(r, w) = sprintf('$c["h_rule"]=="%s" && $c["weight"]=="%s"', r, w)
 sel(r, w) = rows_named(fa, cond(r, w))

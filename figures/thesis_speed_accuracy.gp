@@ -4,12 +4,13 @@
 # plus, for Voronoi volumes, the Voronoi computation.  Left: the interpolants (Tables 4.1 and
 # 4.2); right: gradient and Laplacian (Table 4.3); both panels share their axes.
 load 'figures/style.gp'
-set terminal svg size 1100,600 dynamic enhanced font 'Helvetica,12' background rgb 'white'
+# Print size: 760 px wide (A4 text width 703 px), text 13-14 px, nothing below 8 pt.
+set terminal svg size 760,680 dynamic enhanced font 'Helvetica,14' background rgb 'white'
 set output out
 set datafile columnheaders
-set xlabel 'wall time of the level [s] (pass + Voronoi)'
+set xlabel 'wall time [s] (pass + Voronoi)'
 set format x '10^{%L}'
-set key below center vertical maxrows 3 font ',10' samplen 2
+set key below center vertical maxrows 6 font ',14' samplen 2
 sel(f, r, v, w, o) = rows_named(f, sprintf('$c["h_reading"]=="%s" && $c["volumes"]=="%s" && $c["weight"]=="%s" && $c["operator"]=="%s" && $c["function"]=="case2"', r, v, w, o))
 f1 = datadir.'/thesis_table4_1.tsv'; f2 = datadir.'/thesis_table4_2.tsv'; f3 = datadir.'/thesis_table4_3.tsv'
 T = '(column("time_s")+column("voronoi_s")):(column("rel_error"))'
@@ -19,8 +20,8 @@ all = sprintf("< awk -F'\t' 'FNR == 1 { hd = 0 } /^#/ { next } !hd++ { delete c;
 stats all using (column("t")):(column("e")) nooutput
 set xrange [lo(STATS_min_x):hi(STATS_max_x)]
 set yrange [lo(STATS_min_y):hi(STATS_max_y)]
-set multiplot layout 1,2 margins 0.08,0.98,0.27,0.93 spacing 0.08,0
-set title 'interpolant Π (Tables 4.1, 4.2)'
+set multiplot layout 1,2 margins 0.11,0.98,0.4,0.93 spacing 0.07,0
+set title 'Π (Tables 4.1, 4.2)'
 set ylabel 'relative ℓ^∞(Ω) error, Case 2'
 plot sel(f1, 'printed', 'voronoi', 'quadratic_spike', 'interp') using @T with linespoints lt 1 dt 1 title 'quadr. spike, Voronoi (T4.1)', \
      sel(f1, 'printed', 'uniform', 'quadratic_spike', 'interp') using @T with linespoints lt 1 dt 3 pt 6 title 'quadr. spike, |Ω_H|/N (T4.1)', \
@@ -28,7 +29,7 @@ plot sel(f1, 'printed', 'voronoi', 'quadratic_spike', 'interp') using @T with li
      sel(f1, 'printed', 'uniform', 'quintic_bspline', 'interp') using @T with linespoints lt 2 dt 3 pt 4 title 'quintic-B, |Ω_H|/N (T4.1)', \
      sel(f2, 'scaled', 'voronoi', 'cubic_spike', 'interp') using @T with linespoints lt 3 dt 1 title 'cubic spike, Voronoi (T4.2 scaled)', \
      sel(f2, 'scaled', 'uniform', 'cubic_spike', 'interp') using @T with linespoints lt 3 dt 3 pt 8 title 'cubic spike, |Ω_H|/N (T4.2 scaled)'
-set title 'gradient ∇ and Laplacian Δ, quartic weight (Table 4.3, scaled h)'
+set title '∇ and Δ, quartic (Table 4.3)'
 set ylabel ''
 plot sel(f3, 'scaled', 'voronoi', 'quartic_polynomial', 'grad') using @T with linespoints lt 4 dt 1 title '∇, Voronoi', \
      sel(f3, 'scaled', 'uniform', 'quartic_polynomial', 'grad') using @T with linespoints lt 4 dt 3 pt 10 title '∇, |Ω_H|/N', \

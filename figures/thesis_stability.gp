@@ -4,7 +4,10 @@
 # Line style = role (solid: limit, printed h; dashed: limit, scaled h; dotted: bound), colour =
 # weight; all panels share both axes.
 load 'figures/style.gp'
-set terminal svg size 1000,640 dynamic enhanced font 'Helvetica,12' background rgb 'white'
+# Print size: 760 px wide (A4 text width 703 px), 14 px text, nothing below 8 pt; panels placed
+# by hand and one key, in a strip below them (line style = role, in black).
+W = 760; Hc = 690
+set terminal svg size W,Hc dynamic enhanced font 'Helvetica,14' background rgb 'white'
 set output out
 set datafile columnheaders
 f = datadir.'/thesis_stability.tsv'
@@ -21,8 +24,10 @@ set format y '%g'
 stats f using (column("dx")) nooutput
 set xrange [STATS_max*1.2:STATS_min/1.2]
 set yrange [0:0.55]
-set key outside right top font ',10' samplen 2.5
-set multiplot layout 2,3 margins 0.08,0.79,0.11,0.93 spacing 0.04,0.13
+unset key
+set multiplot
+pl = 80.0 / W; pr = 1 - 12.0 / W; gx = 12.0 / W; pw = (pr - pl - 2 * gx) / 3
+pt = 1 - 40.0 / Hc; pb = 130.0 / Hc; gy = 85.0 / Hc; ph = (pt - pb - gy) / 2
 do for [t=1:2] {
   sfx = t == 1 ? '0' : 'q'
   do for [i=1:3] {
@@ -30,17 +35,27 @@ do for [t=1:2] {
     set ylabel (i == 1 ? 'time step / h^2' : '')
     set format y (i == 1 ? '%g' : '')
     set xlabel (t == 2 ? 'particle spacing Δx' : '')
-    if (i == 3) { set key } else { unset key }
+    set lmargin at screen pl + (i - 1) * (pw + gx); set rmargin at screen pl + (i - 1) * (pw + gx) + pw
+    set tmargin at screen pt - (t - 1) * (ph + gy); set bmargin at screen pt - (t - 1) * (ph + gy) - ph
     if (t == 1) {
-      plot sel(i, 'printed') using (column("dx")):(column("limit_over_h2_0")) with linespoints lt i dt 1 title 'limit, printed h', \
-           sel(i, 'scaled') using (column("dx")):(column("limit_over_h2_0")) with linespoints lt i dt 2 pt openpt(i) title 'limit, scaled h', \
-           sel(i, 'printed') using (column("dx")):(column("bound_over_h2_0")) with linespoints lt i dt 3 lw 1 pt 1 title 'bound (3.3), δ = 1', \
-           0.5 with lines lc rgb '#000000' dt 4 lw 1 title 'Table 4.6: 0.5 h^2'
+      plot sel(i, 'printed') using (column("dx")):(column("limit_over_h2_0")) with linespoints lt i dt 1 notitle, \
+           sel(i, 'scaled') using (column("dx")):(column("limit_over_h2_0")) with linespoints lt i dt 2 pt openpt(i) notitle, \
+           sel(i, 'printed') using (column("dx")):(column("bound_over_h2_0")) with linespoints lt i dt 3 lw 1 pt 1 notitle, \
+           0.5 with lines lc rgb '#000000' dt 4 lw 1 notitle
     } else {
-      plot sel(i, 'printed') using (column("dx")):(column("limit_over_h2_q")) with linespoints lt i dt 1 title 'limit, printed h', \
-           sel(i, 'scaled') using (column("dx")):(column("limit_over_h2_q")) with linespoints lt i dt 2 pt openpt(i) title 'limit, scaled h', \
-           sel(i, 'printed') using (column("dx")):(column("bound_over_h2_q")) with linespoints lt i dt 3 lw 1 pt 1 title 'bound (3.3), δ = 1'
+      plot sel(i, 'printed') using (column("dx")):(column("limit_over_h2_q")) with linespoints lt i dt 1 notitle, \
+           sel(i, 'scaled') using (column("dx")):(column("limit_over_h2_q")) with linespoints lt i dt 2 pt openpt(i) notitle, \
+           sel(i, 'printed') using (column("dx")):(column("bound_over_h2_q")) with linespoints lt i dt 3 lw 1 pt 1 notitle
     }
   }
 }
+# The key: the roles, drawn in black, in one strip under the panels.
+unset title; unset xlabel; unset ylabel; unset border; unset tics; unset grid; unset logscale
+set xrange [0:1]; set yrange [0:1]
+set lmargin at screen 0.02; set rmargin at screen 0.98; set bmargin at screen 0.0; set tmargin at screen 50.0 / Hc
+set key center center horizontal maxrows 2 samplen 2.5 width -2 box noopaque
+plot NaN with linespoints lt 1 dt 1 title 'limit, printed h', \
+     NaN with linespoints lt 1 dt 2 pt 6 title 'limit, scaled h', \
+     NaN with linespoints lt 1 dt 3 lw 1 pt 1 title 'bound (3.3), δ = 1', \
+     NaN with lines lc rgb '#000000' dt 4 lw 1 title 'Table 4.6: 0.5 h^2'
 unset multiplot
