@@ -142,15 +142,27 @@ int body(int argc, char** argv) {
         const double secs =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         const double h2 = h * h;
-        run.add({wname, rule.name, fmt(k), fmt(dx), fmt(h), fmt(L.n_unknowns()),
-                   L.assembled() ? "assembled" : "matrix_free", fmt(lz.lambda_max),
-                   fmt(lz.iterations), fmt(lz.residual), fmt(b0), fmt(bq), fmt(c37), fmt(lim0),
-                   fmt(limq), fmt(b0 / h2), fmt(lim0 / h2), fmt(bq / h2), fmt(limq / h2),
-                   fmt(lim0 / b0), fmt(limq / bq), fmt(delta37), fmt(dt46 / lim0),
-                   fmt(s0.growth_max), fmt(u0.growth_final), fmt(static_cast<long long>(u0.steps)),
-                   fmt(u0.last_factor), fmt(pred0), fmt(sq.growth_max), fmt(uq.growth_final),
-                   fmt(static_cast<long long>(uq.steps)), fmt(uq.last_factor), fmt(predq),
-                   confirmed ? "yes" : "no", fmt(secs)});
+        // The row, by column name: each number beside the name it is read by.
+        TsvRow row = run.row();
+        row["weight"] = wname, row["h_rule"] = rule.name, row["level"] = fmt(k);
+        row["dx"] = fmt(dx), row["h"] = fmt(h), row["N_omega"] = fmt(L.n_unknowns());
+        row["storage"] = L.assembled() ? "assembled" : "matrix_free";
+        row["lambda_max"] = fmt(lz.lambda_max), row["lanczos_iterations"] = fmt(lz.iterations);
+        row["lanczos_residual"] = fmt(lz.residual);
+        row["bound_dt_0"] = fmt(b0), row["bound_dt_q"] = fmt(bq), row["cond37_dt_0"] = fmt(c37);
+        row["limit_dt_0"] = fmt(lim0), row["limit_dt_q"] = fmt(limq);
+        row["bound_over_h2_0"] = fmt(b0 / h2), row["limit_over_h2_0"] = fmt(lim0 / h2);
+        row["bound_over_h2_q"] = fmt(bq / h2), row["limit_over_h2_q"] = fmt(limq / h2);
+        row["ratio_0"] = fmt(lim0 / b0), row["ratio_q"] = fmt(limq / bq);
+        row["delta_37"] = fmt(delta37), row["table46_over_limit"] = fmt(dt46 / lim0);
+        row["growth_below_0"] = fmt(s0.growth_max), row["growth_above_0"] = fmt(u0.growth_final);
+        row["steps_above_0"] = fmt(static_cast<long long>(u0.steps));
+        row["factor_above_0"] = fmt(u0.last_factor), row["predicted_0"] = fmt(pred0);
+        row["growth_below_q"] = fmt(sq.growth_max), row["growth_above_q"] = fmt(uq.growth_final);
+        row["steps_above_q"] = fmt(static_cast<long long>(uq.steps));
+        row["factor_above_q"] = fmt(uq.last_factor), row["predicted_q"] = fmt(predq);
+        row["confirmed"] = confirmed ? "yes" : "no", row["time_s"] = fmt(secs);
+        run.add(row);
         run.unit_done(0, line_printf(
             "%-28s %-7s dx=2^-%d h=%.4f lambda_max=%.5g (%d it) limit/h^2 = %.4f (theta 0), "
             "%.4f (1/4); bound/h^2 = %.4f, %.4f; growth %.3g / %.3g (theta 0), %.3g / %.3g (1/4) "
