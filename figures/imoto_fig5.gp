@@ -68,9 +68,7 @@ do for [m in "1 3 5"] {
   }
 }
 # The key: one row under the panels.
-unset object; unset arrow; unset label; unset title; unset xlabel; unset ylabel
-unset border; unset tics; unset grid; unset logscale; set xrange [0:1]; set yrange [0:1]
-set lmargin at screen 0.02; set rmargin at screen 0.98; set bmargin at screen 0.0; set tmargin at screen 45.0 / Hc
+KEY_TOP = 45.0 / Hc; eval key_strip
 set key center center horizontal maxrows 1 samplen 1.5 width -3 box noopaque  # drawn once (an opaque key is drawn twice)
 plot for [j=1:3] NaN with linespoints lt j title sprintf('weight %d (Π%d, ∇%d, Δ%d)', j, j, j, j), \
      NaN with lines lw 6 lc rgb '#bbbbbb' title 'published rate'

@@ -58,3 +58,9 @@ published_segment(p) = finest_points . \
 # awk condition on its named columns (as rows_named); NaN when no row does.
 published_rate(P, cond) = real(system(sprintf("awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next } (%s) { print $c[\"numerical\"]; f=1; exit } END { if (!f) print \"NaN\" }' '%s'", cond, P)))
 ANCHOR_DROP = 0.7  # how far below the finest point the triangle sits (factor in y)
+# A multiplot's key alone in a strip along the bottom of the canvas, up to screen height
+# KEY_TOP: call after the panels, then `set key …` and plot NaN series for the entries:
+#   KEY_TOP = 0.09; eval key_strip; set key center center horizontal maxrows 1 box noopaque
+key_strip = "unset object; unset arrow; unset label; unset title; unset xlabel; unset ylabel; " . \
+  "unset border; unset tics; unset grid; unset logscale; set xrange [0:1]; set yrange [0:1]; " . \
+  "set lmargin at screen 0.02; set rmargin at screen 0.98; set bmargin at screen 0.0; set tmargin at screen KEY_TOP"

@@ -54,9 +54,7 @@ do for [j=1:nth] {
   plot for [i=1:3] sel(i, j) using (column("h")):(column("rel_error")) with linespoints lt i notitle
 }
 # The key: the same line types, in one row under the panels.
-unset object; unset arrow; unset label; unset title; unset xlabel; unset ylabel
-unset border; unset tics; unset grid; unset logscale; set xrange [0:1]; set yrange [0:1]
-set lmargin at screen 0.02; set rmargin at screen 0.98; set bmargin at screen 0.0; set tmargin at screen 0.09
+KEY_TOP = 0.09; eval key_strip
 set key center center horizontal maxrows 1 samplen 1.5 width -3 box noopaque  # drawn once (an opaque key is drawn twice)
 plot for [i=1:3] NaN with linespoints lt i title wn(i), NaN with lines lw 6 lc rgb '#bbbbbb' title 'published rate'
 unset multiplot

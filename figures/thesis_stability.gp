@@ -50,9 +50,7 @@ do for [t=1:2] {
   }
 }
 # The key: the roles, drawn in black, in one strip under the panels.
-unset title; unset xlabel; unset ylabel; unset border; unset tics; unset grid; unset logscale
-set xrange [0:1]; set yrange [0:1]
-set lmargin at screen 0.02; set rmargin at screen 0.98; set bmargin at screen 0.0; set tmargin at screen 50.0 / Hc
+KEY_TOP = 50.0 / Hc; eval key_strip
 set key center center horizontal maxrows 2 samplen 2.5 width -2 box noopaque
 plot NaN with linespoints lt 1 dt 1 title 'limit, printed h', \
      NaN with linespoints lt 1 dt 2 pt 6 title 'limit, scaled h', \
