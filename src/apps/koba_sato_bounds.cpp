@@ -334,11 +334,12 @@ int body(int argc, char** argv) {
               hc.lam_cases++;
               hc.lam_empty += !c.lambda_ok;
               if (level == levels.front() && seed == seeds.front() && si == 0 && lam == lambda_sample) {
-                std::vector<std::string> row = {wn, fmt(cs), fmt(h), fmt(delta), fmt(r_sigma), fmt(w.lipschitz)};
-                for (int i = 1; i <= 12; ++i) row.push_back(fmt(c.c[i]));
-                row.push_back(fmt((r_sigma * r_sigma - delta * delta) / (h * h - delta * delta)));
-                row.push_back(fmt(l211_lhs));
-                row.push_back(fmt(l211_rhs));
+                TsvRow row = tc.named_row();
+                row["weight"] = wn, row["C_star"] = fmt(cs), row["h"] = fmt(h), row["delta"] = fmt(delta);
+                row["r_sigma"] = fmt(r_sigma), row["L_w"] = fmt(w.lipschitz);
+                for (int i = 1; i <= 12; ++i) row["c" + std::to_string(i)] = fmt(c.c[i]);
+                row["c1_cor"] = fmt((r_sigma * r_sigma - delta * delta) / (h * h - delta * delta));
+                row["lemma_2_11_lhs"] = fmt(l211_lhs), row["lemma_2_11_rhs"] = fmt(l211_rhs);
                 tc.add_row(row);
               }
               const bool step = wn == "step";
@@ -358,12 +359,21 @@ int body(int argc, char** argv) {
                                       cor.lap_c3 * sn[3] + cor.lap_c1 * sn[1],
                                       cor.box_c3 * sn[3] + cor.box_c1 * sn[1]};
                 auto cor_cell = [&](int i) { return step ? fmt(cb[i]) : std::string("NA"); };
-                t.add_row({fmt(level), fmt(static_cast<long long>(seed)), fmt(si), fmt(k),
-                           fmt(s.ax), fmt(s.ay), fmt(r_sigma), fmt(delta), fmt(cs), fmt(h),
-                           fmt(s.idx.size()), wn, fmt(w.lipschitz), fmt(lam),
-                           c.lambda_ok ? "1" : "0", f.name, fmt(e_pi), fmt(b.pi), fmt(e_grad),
-                           fmt(b.grad), fmt(e_lap), fmt(b.lap), fmt(b.lap_lemmas), fmt(e_box),
-                           fmt(b.box), cor_cell(0), cor_cell(1), cor_cell(2), cor_cell(3)});
+                TsvRow row = t.named_row();  // by column name: error beside its bound
+                row["level"] = fmt(level), row["seed"] = fmt(static_cast<long long>(seed));
+                row["site"] = fmt(si), row["k"] = fmt(k), row["ak_x"] = fmt(s.ax), row["ak_y"] = fmt(s.ay);
+                row["r_sigma"] = fmt(r_sigma), row["delta"] = fmt(delta), row["C_star"] = fmt(cs);
+                row["h"] = fmt(h), row["n_R"] = fmt(s.idx.size()), row["weight"] = wn;
+                row["L_w"] = fmt(w.lipschitz), row["lambda"] = fmt(lam);
+                row["lambda_ok"] = c.lambda_ok ? "1" : "0", row["func"] = f.name;
+                row["err_pi"] = fmt(e_pi), row["bound_pi"] = fmt(b.pi);
+                row["err_grad"] = fmt(e_grad), row["bound_grad"] = fmt(b.grad);
+                row["err_lap"] = fmt(e_lap), row["bound_lap"] = fmt(b.lap);
+                row["bound_lap_c8"] = fmt(b.lap_lemmas);
+                row["err_box"] = fmt(e_box), row["bound_box"] = fmt(b.box);
+                row["cor_pi"] = cor_cell(0), row["cor_grad"] = cor_cell(1);
+                row["cor_lap"] = cor_cell(2), row["cor_box"] = cor_cell(3);
+                t.add_row(row);
                 // Theorem 1.3 needs no λ; 1.4–1.6 need R(a_k, λh) ≠ ∅.
                 const std::string where = "level " + std::to_string(level) + ", seed " +
                                           std::to_string(seed) + ", site " + std::to_string(si) +
@@ -392,10 +402,16 @@ int body(int argc, char** argv) {
       }
       for (auto& wn : weight_names) {
         const HypCount& hc = hyp[wn];
-        th.add_row({fmt(level), fmt(static_cast<long long>(seed)), wn, fmt(p.size()), fmt(r_sigma),
-                    fmt(r_sigma / dx), fmt(sites.size()), fmt(hc.delta_ok), fmt(hc.r_empty), fmt(hc.cases),
-                    fmt(hc.covering), fmt(hc.unc_max), fmt(hc.fails26), fmt(hc.r26),
-                    fmt(hc.lam_cases), fmt(hc.lam_empty), fmt(hc.l211)});
+        TsvRow row = th.named_row();
+        row["level"] = fmt(level), row["seed"] = fmt(static_cast<long long>(seed)), row["weight"] = wn;
+        row["N"] = fmt(p.size()), row["r_sigma"] = fmt(r_sigma), row["r_sigma_over_dx"] = fmt(r_sigma / dx);
+        row["sites"] = fmt(sites.size()), row["sites_delta_cor_ok"] = fmt(hc.delta_ok);
+        row["R_empty"] = fmt(hc.r_empty), row["cases"] = fmt(hc.cases);
+        row["covering_holds"] = fmt(hc.covering), row["uncovered_rel_max"] = fmt(hc.unc_max);
+        row["eq_2_6_fails"] = fmt(hc.fails26), row["eq_2_6_ratio_max"] = fmt(hc.r26);
+        row["lambda_cases"] = fmt(hc.lam_cases), row["lambda_empty"] = fmt(hc.lam_empty);
+        row["lemma_2_11_ratio_max"] = fmt(hc.l211);
+        th.add_row(row);
       }
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
       for (TsvTable* x : {&t, &tc, &th}) x->set("wall_time_s", wall);
