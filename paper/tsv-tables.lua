@@ -141,6 +141,12 @@ local function datum(el)
     if #rows > 1 then fail(#rows .. " rows of " .. path .. " where " .. el.attributes["where"] .. ": a datum needs one") end
     v = column_value(t, path, rows[1], spec)
   end
+  -- scale="100": the number times a factor (a fraction read as per cent).
+  local scale = tonumber(el.attributes["scale"] or "")
+  if scale then
+    v = tonumber(v) or fail("datum scale= on a value that is not a number in " .. path)
+    v = v * scale
+  end
   if type(v) == "number" and v == math.floor(v) then v = string.format("%d", v) end
   -- digits="2": significant digits of a number read from the data (a ratio, a rate).
   local digits = el.attributes["digits"]

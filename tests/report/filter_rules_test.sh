@@ -16,6 +16,7 @@ fail=0
 out=$(build good) || { printf '%s\n' "$out"; echo "FAIL: the good page was rejected"; fail=1; }
 grep -q "6 agree, 3 differ and 1 not computed" "$tmp/good.html" 2>/dev/null ||
   { echo "FAIL: the good page's counts are not '6 agree, 3 differ and 1 not computed'"; fail=1; }
+grep -q "computed; 60 per" "$tmp/good.html" 2>/dev/null || { echo "FAIL: the good page's scaled datum is not 60"; fail=1; }
 grep -q "no solution" "$tmp/good.html" 2>/dev/null || { echo "FAIL: the good page's nan cell lost its word"; fail=1; }
 while IFS='|' read -r page expect; do
   out=$(build "$page"); rc=$?
