@@ -82,8 +82,9 @@ test-paper: build
 
 # --- studies, figures, report sections -------------------------------------------------
 # Each study registers itself in mk/<study>.mk: its data rule(s), appending to STUDIES
-# (data files), FIGURES (figures/out/*.svg with their prerequisites) — so an issue adds a
-# program, a gnuplot script, an mk file and a paper/NN-*.md section, and touches nothing else.
+# (data files), FIGURES (figures/out/*.svg with their prerequisites).  What else a new study
+# touches (catalog, registry, published values, store check) is listed in the README,
+# "Adding a study".
 # A data file is rebuilt only when its program changed (make's timestamps); inside a
 # program, levels already computed with the same parameters are read back, not redone.
 DATAFILES :=
