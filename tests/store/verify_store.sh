@@ -84,11 +84,13 @@ heat 6 _dtexact "--levels 5,6,7,8,9" --thetas 0 --dt-rule exact
 heat 6 _dtexact_cellvol "--levels 5,6,7,8,9" --thetas 0 --dt-rule exact --volumes cell
 heat 6 _h15_cellvol "--levels 5,6,7,8,9" --thetas 0 --h-rule h15 --volumes cell
 heat 6 _h15_dtexact "--levels 5,6,7,8,9" --thetas 0 --h-rule h15 --dt-rule exact
-# Table 4.6 under h15, every theta at the rate levels, with the other volumes and time step
-# (the reading matrix, issue 25); 2^-5 for the cheap re-check.
+# Tables 4.6 and 4.7 under h15, every theta at the rate levels, with the other volumes and
+# time step (the reading matrix, issue 25); 2^-5 for the cheap re-check.
 heat 6 _h15 "--levels 5,8,9" --h-rule h15
 heat 6 _h15_cellvol "--levels 5,8,9" --h-rule h15 --volumes cell
 heat 6 _h15_dtexact "--levels 5,8,9" --h-rule h15 --dt-rule exact
+heat 7 _h15_cellvol "--levels 5,8,9" --h-rule h15 --volumes cell
+heat 7 _h15_dtexact "--levels 5,8,9" --h-rule h15 --dt-rule exact
 # The identified reading (h15, V_i = dx^2, dt = dt0): every theta at 2^-5 and the rate levels.
 heat 6 _h15_dtexact_cellvol "--levels 5,8,9" --h-rule h15 --dt-rule exact --volumes cell
 heat 5 _h15_dtexact_cellvol "--levels 4,5,6,7,8" --h-rule h15 --dt-rule exact --volumes cell
