@@ -29,15 +29,14 @@ sel(m, w) = rows_named(f, sprintf('$c["m"]==%s && $c["weight"]=="%s"', m, w))
 pub(w, m) = published_rate(P, sprintf('$c["weight"]=="%s" && $c["m"]==%s', w, m))
 weight_of(j, k) = word(j == 1 ? w1 : j == 2 ? w2 : w3, k)
 # Panel boxes (screen fractions): columns = operators, rows = m (top to bottom 1, 3, 5).
-pl = 72.0 / W; pr = 1 - 12.0 / W; gx = 58.0 / W; pw = (pr - pl - 2 * gx) / 3
-pt = 1 - 62.0 / Hc; pb = 115.0 / Hc; gy = 52.0 / Hc; ph = (pt - pb - 2 * gy) / 3
+PL = 72.0 / W; PR = 1 - 12.0 / W; GX = 58.0 / W; PW = (PR - PL - 2 * GX) / 3
+PT = 1 - 62.0 / Hc; PB = 115.0 / Hc; GY = 52.0 / Hc; PH = (PT - PB - 2 * GY) / 3
 row = 0
 do for [m in "1 3 5"] {
   row = row + 1
   stats rows_named(f, sprintf('$c["m"]==%s', m)) using (column("h")) name 'HX' nooutput
   do for [k=1:3] {
-    set lmargin at screen pl + (k - 1) * (pw + gx); set rmargin at screen pl + (k - 1) * (pw + gx) + pw
-    set tmargin at screen pt - (row - 1) * (ph + gy); set bmargin at screen pt - (row - 1) * (ph + gy) - ph
+    eval panel_at(k, row)
     set title sprintf('(%s) %s, m = %s', substr("abc", k, k), word(ops, k), m) offset 0,-0.6
     set ylabel (k == 1 ? 'relative error' : '')
     if (row == 3) { set xlabel 'h' offset 0,0.5 } else { unset xlabel }

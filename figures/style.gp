@@ -64,3 +64,10 @@ ANCHOR_DROP = 0.7  # how far below the finest point the triangle sits (factor in
 key_strip = "unset object; unset arrow; unset label; unset title; unset xlabel; unset ylabel; " . \
   "unset border; unset tics; unset grid; unset logscale; set xrange [0:1]; set yrange [0:1]; " . \
   "set lmargin at screen 0.02; set rmargin at screen 0.98; set bmargin at screen 0.0; set tmargin at screen KEY_TOP"
+# Panels placed by hand on a grid (a key strip or per-panel titles need more room than `set
+# multiplot layout` leaves): the panel in column i, row j (from the top) spans PL + (i-1)(PW+GX)
+# across PW and PT - (j-1)(PH+GY) down PH, in screen fractions; the script sets those six.
+#   eval panel_at(i, j); plot …
+panel_at(i, j) = sprintf("set lmargin at screen %.17g; set rmargin at screen %.17g; " . \
+  "set tmargin at screen %.17g; set bmargin at screen %.17g", PL + (i - 1) * (PW + GX), \
+  PL + (i - 1) * (PW + GX) + PW, PT - (j - 1) * (PH + GY), PT - (j - 1) * (PH + GY) - PH)

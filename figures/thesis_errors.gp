@@ -16,7 +16,6 @@
 # the first panel.
 load 'figures/style.gp'
 set datafile columnheaders
-set xlabel 'h'
 set ylabel (OP eq 'grad' ? 'max_Ω |∇v − ∇_hv| / max_Ω |∇v|' : \
             OP eq 'lap' ? 'max_Ω |Δv − Δ_hv| / max_Ω |Δv|' : 'max_Ω |v − Π_hv| / max_Ω |v|')
 stats f using (column("h")) nooutput

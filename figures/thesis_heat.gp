@@ -32,11 +32,11 @@ stats rows_named(f, sprintf('$c["blew_up"]=="no" && index(" %s ", " " $c["theta"
 # Equal panels placed by hand, then the key alone in a strip below them (never over the data
 # or the triangles; a key inside a narrow panel would stack its entries).
 set multiplot
-pl = 95.0 / W; pr = 1 - 28.0 / W; gap = 12.0 / W; pw = (pr - pl - (nth - 1) * gap) / nth
+PL = 95.0 / W; PR = 1 - 28.0 / W; GX = 12.0 / W; PW = (PR - PL - (nth - 1) * GX) / nth
+PT = 0.9; PH = 0.9 - 0.25; GY = 0
 unset key
 do for [j=1:nth] {
-  set lmargin at screen pl + (j - 1) * (pw + gap); set rmargin at screen pl + (j - 1) * (pw + gap) + pw
-  set bmargin at screen 0.25; set tmargin at screen 0.9
+  eval panel_at(j, 1)
   unset object; unset arrow; unset label
   set autoscale xy; set logscale x 10  # drop the previous panel's ranges before the stats below
   set title sprintf('θ = %s', thn(th(j)))

@@ -26,8 +26,8 @@ set xrange [STATS_max*1.2:STATS_min/1.2]
 set yrange [0:0.55]
 unset key
 set multiplot
-pl = 80.0 / W; pr = 1 - 12.0 / W; gx = 12.0 / W; pw = (pr - pl - 2 * gx) / 3
-pt = 1 - 40.0 / Hc; pb = 130.0 / Hc; gy = 85.0 / Hc; ph = (pt - pb - gy) / 2
+PL = 80.0 / W; PR = 1 - 12.0 / W; GX = 12.0 / W; PW = (PR - PL - 2 * GX) / 3
+PT = 1 - 40.0 / Hc; PB = 130.0 / Hc; GY = 85.0 / Hc; PH = (PT - PB - GY) / 2
 do for [t=1:2] {
   sfx = t == 1 ? '0' : 'q'
   do for [i=1:3] {
@@ -35,8 +35,7 @@ do for [t=1:2] {
     set ylabel (i == 1 ? 'time step / h^2' : '')
     set format y (i == 1 ? '%g' : '')
     set xlabel (t == 2 ? 'particle spacing Δx' : '')
-    set lmargin at screen pl + (i - 1) * (pw + gx); set rmargin at screen pl + (i - 1) * (pw + gx) + pw
-    set tmargin at screen pt - (t - 1) * (ph + gy); set bmargin at screen pt - (t - 1) * (ph + gy) - ph
+    eval panel_at(i, t)
     if (t == 1) {
       plot sel(i, 'printed') using (column("dx")):(column("limit_over_h2_0")) with linespoints lt i dt 1 notitle, \
            sel(i, 'scaled') using (column("dx")):(column("limit_over_h2_0")) with linespoints lt i dt 2 pt openpt(i) notitle, \
