@@ -4,10 +4,14 @@
 # (level 8, seed 1), lambda = 1/2.  Left column: the test function sin 2π(x+y) with the step
 # weight of Section 7 and the Lipschitz weight Pi1 (w = 3/pi (1 - r/h)), and Corollary 7.1's
 # formula (step weight) at the measured r_sigma; right column: the plane wave with the step
-# weight.  The two panels of a row share their axes.  Columns are addressed by name
-# (koba_sato_bounds.tsv).
+# weight.  The two panels of a row share their axes (y tick labels on the left panel only).
+# Columns are addressed by name (koba_sato_bounds.tsv).
+# Drawn at print size: 760 px wide (the A4 text width is 703 px), 14 px text, so nothing
+# prints below 8 pt; panels placed by hand, and the key in a strip below them, under each
+# column the series of that column.
 load 'figures/style.gp'
-set terminal svg size 960,1250 dynamic enhanced font 'Helvetica,11' background rgb 'white'
+W = 760; Hc = 1130
+set terminal svg size W,Hc dynamic enhanced font 'Helvetica,14' background rgb 'white'
 set output out
 set datafile columnheaders
 f = datadir.'/koba_sato_bounds.tsv'
@@ -17,9 +21,11 @@ set logscale x 2
 set format x '2^{%L}'
 set xrange [1.8:70]
 lo(x) = 10**floor(log10(x)); hi(x) = 10**ceil(log10(x))
-set key box Left reverse font ',10' samplen 2 width -2
-set multiplot layout 4,2 margins 0.09,0.98,0.12,0.95 spacing 0.08,0.06 \
-    title 'Koba–Sato Theorems 1.3–1.6 at one particle: error (points) and bound (lines)'
+unset key
+# Panel boxes (screen fractions): columns = test functions, rows = operators.
+PL = 80.0 / W; PR = 1 - 14.0 / W; GX = 16.0 / W; PW = (PR - PL - GX) / 2
+PT = 1 - 78.0 / Hc; PB = 135.0 / Hc; GY = 72.0 / Hc; PH = (PT - PB - 3 * GY) / 4
+set multiplot title 'Koba–Sato Theorems 1.3–1.6 at one particle: error (points) and bound (lines)' font ',15'
 do for [p = 1:4] {
   o = word('pi grad lap box', p)
   e = 'err_'.o; b = 'bound_'.o; c = 'cor_'.o   # error, bound, Corollary 7.1 formula
@@ -32,19 +38,33 @@ do for [p = 1:4] {
   ymin = SE_min < SB_min ? SE_min : SB_min; ymin = ymin < SC_min ? ymin : SC_min
   ymax = SE_max > SB_max ? SE_max : SB_max; ymax = ymax > SC_max ? ymax : SC_max
   set yrange [lo(ymin):hi(ymax)]
-  set xlabel (p == 4 ? 'C* = h / r_σ' : '')
+  if (p == 4) { set xlabel 'C* = h / r_σ' offset 0,0.3 } else { unset xlabel }
   set ylabel 'error, bound'
-  set title name.', sin 2π(x+y)'
-  if (p < 4) { unset key } else { set key at screen 0.30,0.055 center vertical maxrows 3 }
-  plot sel('step', 'sin2pi') using (column("C_star")):(column(b)) with lines lt 1 title 'bound (step)', \
-       sel('step', 'sin2pi') using (column("C_star")):(column(e)) with points lt 1 title 'error (step)', \
-       sel('Pi1', 'sin2pi') using (column("C_star")):(column(b)) with lines lt 3 title 'bound (Π1)', \
-       sel('Pi1', 'sin2pi') using (column("C_star")):(column(e)) with points lt 3 title 'error (Π1)', \
-       sel('step', 'sin2pi') using (column("C_star")):(column(c)) with lines lt 7 title 'Cor. 7.1 (step)'
+  set format y '10^{%L}'
+  set title name.', sin 2π(x+y)' offset 0,-0.2
+  eval panel_at(1, p)
+  plot sel('step', 'sin2pi') using (column("C_star")):(column(b)) with lines lt 1 notitle, \
+       sel('step', 'sin2pi') using (column("C_star")):(column(e)) with points lt 1 notitle, \
+       sel('Pi1', 'sin2pi') using (column("C_star")):(column(b)) with lines lt 3 notitle, \
+       sel('Pi1', 'sin2pi') using (column("C_star")):(column(e)) with points lt 3 notitle, \
+       sel('step', 'sin2pi') using (column("C_star")):(column(c)) with lines lt 7 notitle
   set title name.', plane wave'
   set ylabel ''
-  if (p < 4) { unset key } else { set key at screen 0.77,0.055 center vertical maxrows 3 }
-  plot sel('step', 'wave') using (column("C_star")):(column(b)) with lines lt 2 title 'bound (step, wave)', \
-       sel('step', 'wave') using (column("C_star")):(column(e)) with points lt 2 title 'error (step, wave)'
+  set format y ''
+  eval panel_at(2, p)
+  plot sel('step', 'wave') using (column("C_star")):(column(b)) with lines lt 2 notitle, \
+       sel('step', 'wave') using (column("C_star")):(column(e)) with points lt 2 notitle
 }
+# The key, in a strip under the panels: under each column the series drawn in it.
+KEY_TOP = 72.0 / Hc; eval key_strip
+set key left center vertical maxrows 3 Left reverse samplen 2.5 width -4 nobox noopaque
+set lmargin at screen PL; set rmargin at screen PL + PW
+plot NaN with lines lt 1 title 'bound (step)', \
+     NaN with points lt 1 title 'error (step)', \
+     NaN with lines lt 3 title 'bound (Π1)', \
+     NaN with points lt 3 title 'error (Π1)', \
+     NaN with lines lt 7 title 'Cor. 7.1 (step)'
+set lmargin at screen PL + PW + GX; set rmargin at screen PR
+plot NaN with lines lt 2 title 'bound (step, wave)', \
+     NaN with points lt 2 title 'error (step, wave)'
 unset multiplot

@@ -1,5 +1,8 @@
 # One style for every figure of the report: readable in black and white
 # (point types and dash patterns carry the distinction, colour only helps).
+# Print size: the report shows a figure 623 px wide (the A4 text width of 703 px less the
+# <figure> margins), so on a 760 px canvas 14 px text prints at 8.6 pt and 12 px at 7.4 pt,
+# below the 8 pt that tests/report/browser_check.sh asks: figures drawn for print use 14 px.
 set terminal svg size 640,480 dynamic enhanced font 'Helvetica,12' background rgb 'white'
 set key top left box opaque samplen 3
 set grid lc rgb '#dddddd'

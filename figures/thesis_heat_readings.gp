@@ -2,25 +2,45 @@
 # (2.6⁴·2^-15·Δx)^{1/4}, dashed), one panel per time-step setting of Tables 4.5–4.7, the
 # piecewise cubic weight, θ = 1/2 and 1, against Δx (the two readings give different h).
 # Rows that blew up (blew_up = yes) have no error and are left out.
+# Drawn at print size: 760 px wide (the A4 text width is 703 px), 14 px text, so nothing
+# prints below 8 pt; the three panels side by side, placed by hand, each on its own error
+# axis (the settings differ by decades), and one key in a strip below them (the same four
+# series in every panel).
 load 'figures/style.gp'
-set terminal svg size 1080,400 dynamic enhanced font 'Helvetica,11' background rgb 'white'
+W = 760; Hc = 500
+set terminal svg size W,Hc dynamic enhanced font 'Helvetica,14' background rgb 'white'
 set output out
 set datafile columnheaders
-set multiplot layout 1,3
-set xlabel 'Δx'
-set ylabel 'relative error (4.2), ℓ^∞(0,T; ℓ^2(Ω_H))'
 set format x '2^{%L}'
 set logscale x 2
-set key bottom right font ',9'
+unset key
 w = 'piecewise_cubic_polynomial'
 sel(f, t) = rows_named(f, sprintf('$c["weight"]=="%s" && $c["theta"]=="%s" && $c["blew_up"]=="no"', w, t))
+PL = 78.0 / W; PR = 1 - 14.0 / W; GX = 56.0 / W; PW = (PR - PL - 2 * GX) / 3
+PT = 1 - 68.0 / Hc; PB = 130.0 / Hc; GY = 0; PH = PT - PB
+set multiplot
+i = 0
 do for [tab in '4_5 4_6 4_7'] {
+  i = i + 1
   f10 = datadir.'/thesis_table'.tab.'.tsv'
   f15 = datadir.'/thesis_table'.tab.'_h15.tsv'
-  set title tab eq '4_5' ? 'Table 4.5: Δt = 0.0025h²' : tab eq '4_6' ? 'Table 4.6: Δt = 0.5h²' : 'Table 4.7: Δt = 0.5h'
-  plot sel(f10, '0.5') using (column("dx")):(column("rel_error")) with linespoints lt 1 title 'θ = 1/2, printed h', \
-       sel(f10, '1')   using (column("dx")):(column("rel_error")) with linespoints lt 3 title 'θ = 1, printed h', \
-       sel(f15, '0.5') using (column("dx")):(column("rel_error")) with linespoints lt 2 title 'θ = 1/2, 2^{-15} reading', \
-       sel(f15, '1')   using (column("dx")):(column("rel_error")) with linespoints lt 4 title 'θ = 1, 2^{-15} reading'
+  # A margin of a quarter level on either side (points on the frame would be cut in half).
+  stats f10 using (column("dx")) name 'DX' nooutput
+  set xrange [DX_min / 1.2 : DX_max * 1.2]
+  set title (tab eq '4_5' ? "Table 4.5\nΔt = 0.0025h^2" : tab eq '4_6' ? "Table 4.6\nΔt = 0.5h^2" : "Table 4.7\nΔt = 0.5h")
+  set ylabel (i == 1 ? 'relative error (4.2), ℓ^∞(0,T; ℓ^2(Ω_H))' : '')
+  set xlabel 'Δx' offset 0,0.3
+  eval panel_at(i, 1)
+  plot sel(f10, '0.5') using (column("dx")):(column("rel_error")) with linespoints lt 1 notitle, \
+       sel(f10, '1')   using (column("dx")):(column("rel_error")) with linespoints lt 3 notitle, \
+       sel(f15, '0.5') using (column("dx")):(column("rel_error")) with linespoints lt 2 notitle, \
+       sel(f15, '1')   using (column("dx")):(column("rel_error")) with linespoints lt 4 notitle
 }
+# The key: the four series of every panel, in one strip under the panels.
+KEY_TOP = 66.0 / Hc; eval key_strip
+set key center center horizontal maxrows 2 samplen 2.5 width -1 box noopaque
+plot NaN with linespoints lt 1 title 'θ = 1/2, printed h', \
+     NaN with linespoints lt 3 title 'θ = 1, printed h', \
+     NaN with linespoints lt 2 title 'θ = 1/2, 2^{-15} reading', \
+     NaN with linespoints lt 4 title 'θ = 1, 2^{-15} reading'
 unset multiplot
