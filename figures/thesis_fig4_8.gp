@@ -6,7 +6,10 @@ set terminal svg size 760,500 dynamic enhanced font 'Helvetica,14' background rg
 TRI_FONT = ',14'
 set output out
 set datafile columnheaders
-f = datadir.'/thesis_table4_4.tsv'
+# data_file, volumes_label (set by figures/store_reading.sh): the store file of one volume
+# choice, named in the title.
+f = exists('data_file') ? data_file : datadir.'/thesis_table4_4.tsv'
+if (exists('volumes_label') && strlen(volumes_label) > 0) { set title 'volumes '.volumes_label }
 set xlabel 'influence radius h'
 set ylabel 'max_Ω|ũ − U| / max_Ω|ũ|  (ℓ^∞(Ω), relative)'
 set key at graph 0.5, graph 0.01 center bottom maxrows 4 samplen 1.5 width -4 box opaque  # in the empty lower middle, off the data and the triangle

@@ -6,7 +6,7 @@
 load 'figures/style.gp'
 # Print size: 760 px wide (A4 text width 703 px), 14 px text, nothing below 8 pt; panels placed
 # by hand and one key, in a strip below them (line style = role, in black).
-W = 760; Hc = 690
+W = 760; Hc = 580
 set terminal svg size W,Hc dynamic enhanced font 'Helvetica,14' background rgb 'white'
 set output out
 set datafile columnheaders
@@ -18,7 +18,7 @@ openpt(i) = i == 1 ? 6 : i == 2 ? 4 : 8
 sel(i, r) = rows_named(f, sprintf('$c["weight"]=="%s" && $c["h_rule"]=="%s"', wl(i), r))
 set logscale x 2
 unset logscale y
-set xtics ('2^{-5}' 2**-5, '2^{-6}' 2**-6, '2^{-7}' 2**-7, '2^{-8}' 2**-8, '2^{-9}' 2**-9)
+set xtics ('2^{-4}' 2**-4, '2^{-5}' 2**-5, '2^{-6}' 2**-6, '2^{-7}' 2**-7, '2^{-8}' 2**-8, '2^{-9}' 2**-9)
 set format y '%g'
 # Coarse levels on the left; a margin of a quarter level on either side.
 stats f using (column("dx")) nooutput

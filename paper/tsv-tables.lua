@@ -247,13 +247,22 @@ function provenance(path_or_list, meta_or_nil, make_cmd)
                     pandoc.Attr("", {"provenance"}, {files = table.concat(paths, ",")}))
 end
 
--- Data files a figure plots: explicit data= attribute, else the names its gnuplot script
--- (and the scripts it loads, except the style) spell out as datadir.'/name.tsv'.
+-- Data files a figure plots: explicit data= attribute, else its side file (below), else the
+-- names its gnuplot script (and the scripts it loads, except the style) spell out as
+-- datadir.'/name.tsv'.
 local function figure_data(img)
   local names, seen = {}, {}
   local function add(n) if not seen[n] then seen[n] = true; table.insert(names, n) end end
   if img.attributes["data"] then
     for _, n in ipairs(split(img.attributes["data"], ",")) do add(n) end
+    return names
+  end
+  -- A figure whose data file is chosen when it is drawn (figures/store_heat.sh: the store file
+  -- of the identified reading) names it in a side file, <figure>.svg.data, one path per line.
+  local side = io.open(img.src .. ".data", "r")
+  if side then
+    for l in side:lines() do if l ~= "" then add(l) end end
+    side:close()
     return names
   end
   local function scan(script, depth)
