@@ -18,12 +18,13 @@ $(DATA)/checked_reasons_by_mechanism.tsv: tables/reasons_by_mechanism.sh $(DATA)
 	bash $< $(DATA)/checked_reasons.tsv $@
 
 # The two scoreboards (as printed, as identified) and the fingerprint evidence that identifies
-# Chapter 4's set-up (setup_identification.tsv; paper/04-setup-rule.md).
-$(DATA)/store_rates.tsv: tables/store_rates.sh tables/store_lib.sh $(STORE_FILES) $(BUILD)/rate_table $(BUILD)/gpm \
-    $(BUILD)/setup_identification $(wildcard tables/published/*.tsv) $(DATA)/checked_reasons.tsv
+# Chapter 4's set-up (setup_identification.tsv; paper/04-setup-rule.md): gpm store-rates, the
+# verdicts of src/gpm/studies/verdicts.hpp.
+$(DATA)/store_rates.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published/*.tsv) $(DATA)/checked_reasons.tsv
 	@mkdir -p $(DATA)
-	bash $< $(BUILD) $(STORE) $@ $(DATA)/store_summary.tsv $(DATA)/store_score.tsv $(DATA)/checked_reasons.tsv \
-	  $(DATA)/setup_identification.tsv
+	$(BUILD)/gpm store-rates --store $(STORE) --published tables/published --checked $(DATA)/checked_reasons.tsv \
+	  --out $@ --summary $(DATA)/store_summary.tsv --score $(DATA)/store_score.tsv \
+	  --ident $(DATA)/setup_identification.tsv
 $(DATA)/store_summary.tsv $(DATA)/store_score.tsv $(DATA)/setup_identification.tsv: $(DATA)/store_rates.tsv ;
 
 # The documents' open set-up questions, with the evidence the stored runs give (every number

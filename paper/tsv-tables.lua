@@ -15,7 +15,8 @@
 -- Numbers in the prose are read from data files too, never typed:
 --   []{.datum file="store_score.tsv" where="table=total,slice=as printed" column="agrees"}
 -- becomes the value of that cell (column may be "a-b" or "a+b" of two columns; sum="yes"
--- adds the column over every matching row; a where value "~PATTERN" is a Lua pattern), and
+-- adds the column over every matching row; count="yes" gives the number of matching rows,
+-- which may be 0; a where value "~PATTERN" is a Lua pattern), and
 --   []{.counts file=... where=... columns="agrees:agree,unexplained:unexplained" total="rates"}
 -- becomes "18 agree, 31 unexplained …": the listed columns that are not zero, which must add
 -- up to the total column, so that no category is left out unnoticed.
@@ -95,7 +96,9 @@ local function matching_rows(el)
     end
     if ok then table.insert(out, r) end
   end
-  if #out == 0 then fail("no row of " .. path .. " where " .. (el.attributes["where"] or "")) end
+  if #out == 0 and el.attributes["count"] ~= "yes" then
+    fail("no row of " .. path .. " where " .. (el.attributes["where"] or ""))
+  end
   return t, path, out
 end
 
@@ -132,6 +135,8 @@ local function datum(el)
     return datum_words(el, v)
   end
   local t, path, rows = matching_rows(el)
+  -- count="yes": how many rows match (none is an answer too: "0 of 8 cases").
+  if el.attributes["count"] == "yes" then return datum_words(el, string.format("%d", #rows)) end
   local spec = el.attributes["column"] or fail("datum without column= attribute")
   local v
   if el.attributes["sum"] == "yes" then

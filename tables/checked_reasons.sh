@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Reasons for paper-scale rates that differ from the published ones, each CHECKED against the
 # stored data: one row per published rate (table, slice, key), with the diagnostic's numbers
-# (read from the store, none typed) and `check` = pass or fail.  store_rates.sh accepts a
+# (read from the store, none typed) and `check` = pass or fail.  gpm store-rates accepts a
 # reason for a differing rate only when its row here passes; otherwise the rate stays
 # "differs, unexplained".
 #

@@ -6,6 +6,8 @@
 //   gpm trunc       relative ℓ∞ error of one operator at one resolution
 //   gpm poisson, gpm heat, gpm smoothing   one PDE problem or one smoothing error
 //   gpm study       the study catalog: list the studies, or run one by name
+//   gpm store-rates the documents' rates judged against the result store (verdicts, boards;
+//                   written to the files it is given, not to stdout)
 //
 // Every subcommand writes TSV to stdout (a `# key = value` header, then columns) and
 // has --help.  Errors are one line on stderr and a non-zero exit.
@@ -39,7 +41,10 @@
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/heat_tables.hpp"
 #include "gpm/studies/profile.hpp"
+#include "gpm/studies/rates.hpp"
+#include "gpm/studies/setup_identification.hpp"
 #include "gpm/studies/store.hpp"
+#include "gpm/studies/verdicts.hpp"
 #include "gpm/theory/smoothing.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -481,6 +486,73 @@ int cmd_store_seal(int argc, char** argv) {
   return 0;
 }
 
+// gpm store-rates: the documents' rates judged against the committed result store (verdicts.hpp),
+// the report's paper-scale tables.  Every input is read and every output path checked before
+// anything is written; each output is written to a temporary file and renamed (TsvTable::save).
+int cmd_store_rates(int argc, char** argv) {
+  Args a("gpm store-rates",
+         "The documents' rates from the committed result store, with their verdicts and the two\n"
+         "scoreboards (src/gpm/studies/verdicts.hpp defines every verdict); no study is run.");
+  a.opt("store", "results/paper", "the result store")
+      .opt("published", "tables/published", "the published values (imoto_table1.tsv, thesis_table4_N_long.tsv)")
+      .opt("checked", "", "checked reasons for differing rates (tables/checked_reasons.sh); default: none")
+      .output("out", "", "the rates with their verdicts and boards (required)")
+      .output("summary", "", "where the stored rows come from, file by file")
+      .output("score", "", "the verdict counts per table and slice, and each board's totals")
+      .output("ident", "", "setup_identification's table: the fingerprint evidence of Chapter 4's reading");
+  a.parse(argc, argv, 2);
+  const std::string out = a.required("out"), store = a.str("store"), pub = a.str("published");
+  if (!std::filesystem::is_directory(store)) throw InputError("--store " + store + " is not a directory");
+  if (!std::filesystem::is_directory(pub)) throw InputError("--published " + pub + " is not a directory");
+  const CheckedReasons checked =
+      a.str("checked").empty() ? CheckedReasons{} : passed_reasons(TsvTable::load(a.str("checked")));
+
+  // The reading of Chapter 4 that Table 4.6's theta = 0 rates identify (paper/04-setup-rule.md).
+  SetupIdentification ident = identify_setup(store, TsvTable::load(published_file(pub, "thesis_table4_6")));
+  const std::vector<JudgedRate> judged = judge_rates(store_rates(store, pub, kRateTolerance),
+                                                     store_unstable_series(store, pub), checked,
+                                                     kRateTolerance, ident.identified);
+  // Header lines first, then the table's own (a TsvTable writes its meta in order).
+  auto with_header = [&](TsvTable t, const std::string& program,
+                         const std::vector<std::pair<std::string, std::string>>& lines) {
+    TsvTable h;
+    h.set("program", program);
+    for (auto& [k, v] : store_provenance(store)) h.set(k, v);
+    for (auto& [k, v] : lines) h.set(k, v);
+    t.meta.insert(t.meta.begin(), h.meta.begin(), h.meta.end());
+    return t;
+  };
+  // Every table is made before the first is written: a store file that cannot be read leaves
+  // no output half done.
+  std::vector<std::pair<std::string, TsvTable>> outputs;
+  outputs.emplace_back(
+      out, with_header(rates_table(judged), "gpm store-rates",
+                       {{"store", store},
+                        {"checked_reasons", a.str("checked").empty() ? "none (no reason accepted)" : a.str("checked")},
+                        {"note", "rates at the documents' levels from the committed paper-profile rows; status from "
+                                 "rate_table (tolerance " + fmt(kRateTolerance) + "); verdict as listed in "
+                                 "src/gpm/studies/verdicts.hpp"}}));
+  if (!a.str("summary").empty())
+    outputs.emplace_back(
+        a.str("summary"),
+        with_header(store_summary(store), "gpm store-rates (summary)",
+                    {{"store", store},
+                     {"current", "rows whose code column is the fingerprint of this build's program (gpm fingerprint)"}}));
+  if (!a.str("score").empty())
+    outputs.emplace_back(
+        a.str("score"),
+        with_header(score_table(judged, pub), "gpm store-rates (score)",
+                    {{"boards", "printed: every set-up detail as the text prints it; identified: the readings of "
+                                "paper/04-setup-rule.md (fingerprint: a published rate that identified the reading)"}}));
+  if (!a.str("ident").empty()) {
+    ident.table.set("program", "gpm store-rates (setup_identification)");
+    add_provenance(ident.table);
+    outputs.emplace_back(a.str("ident"), ident.table);
+  }
+  for (auto& [path, table] : outputs) table.save(path);
+  return 0;
+}
+
 // gpm study: the catalog (catalog.hpp) on the command line.  `--list` prints every study
 // with its document item and levels; `gpm study NAME [options]` runs the study's program
 // (from the directory of this gpm) with the study's fixed arguments and the options given,
@@ -563,6 +635,7 @@ int dispatch(int argc, char** argv) {
       "  smoothing   the Laplacian's smoothing error for a Fourier mode (no particles)\n"
       "  fingerprint the code fingerprint of programs (result-store rows)\n"
       "  store-seal  seal result-store files written before seals (once)\n"
+      "  store-rates the documents' rates judged against the result store: verdicts, boards\n"
       "  study       the study catalog: --list, or run one study by name\n";
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::cout << usage;
@@ -579,8 +652,9 @@ int dispatch(int argc, char** argv) {
   if (sub == "fingerprint") return cmd_fingerprint(argc, argv);
   if (sub == "study") return cmd_study(argc, argv);
   if (sub == "store-seal") return cmd_store_seal(argc, argv);
+  if (sub == "store-rates") return cmd_store_rates(argc, argv);
   throw InputError("unknown subcommand '" + sub + "'; valid: weights, particles, voronoi, trunc, poisson, "
-                   "heat, smoothing, fingerprint, study, store-seal");
+                   "heat, smoothing, fingerprint, study, store-seal, store-rates");
 }
 
 }  // namespace

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The [paper] tier, part of make test: every paper-scale rate in the committed result store
-# (results/paper) against its published value, on both scoreboards of store_rates.sh (the
+# (results/paper) against its published value, on both scoreboards of gpm store-rates (the
 # reading as printed and the one the documents' fingerprint identifies; each of the 80
 # published rates once per board).  The verdicts are computed from the stored rows
-# exactly as the report computes them (tables/checked_reasons.sh, tables/store_rates.sh):
+# exactly as the report computes them (tables/checked_reasons.sh, gpm store-rates):
 # agrees, non-convergence reproduced, inside the seed band, or differs with a checked reason.
 # A rate that differs without a checked reason must be listed, with what is open about it, in
 # tests/paper/known_unexplained.tsv — the package's open items, in one file.  The test fails
@@ -19,7 +19,8 @@ cd "$2"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 bash tables/checked_reasons.sh results/paper "$tmp/checked.tsv" "$build"
-bash tables/store_rates.sh "$build" results/paper "$tmp/rates.tsv" "$tmp/summary.tsv" "$tmp/score.tsv" "$tmp/checked.tsv"
+"$build/gpm" store-rates --store results/paper --checked "$tmp/checked.tsv" --out "$tmp/rates.tsv" \
+  --score "$tmp/score.tsv"
 # Both boards must cover every published rate once.
 awk -F'\t' '/^#/ || !h++ { next } $1 == "total" { if ($7 != 80) { printf "board %s covers %s rates, not 80\n", $2, $7; bad = 1 }
   else printf "board %s: %s rates; agrees %s, non-convergence %s, seed band %s, checked (restored) %s, our rate explained only %s, unexplained %s, not computed %s, undefined %s, fingerprint %s, indeterminate %s\n", $2, $7, $8, $9, $10, $11, $12, $13, $14, $15, $16, $17 }

@@ -11,7 +11,7 @@ cd "$(dirname "$0")/../.."
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 bash tables/checked_reasons.sh results/paper "$tmp/c.tsv" "$build"
-bash tables/store_rates.sh "$build" results/paper "$tmp/r.tsv" "$tmp/s.tsv" "$tmp/sc.tsv" "$tmp/c.tsv"
+"$build/gpm" store-rates --store results/paper --checked "$tmp/c.tsv" --out "$tmp/r.tsv"
 awk -F'\t' '
 function note(t, s, k) {
   if (t == "imoto_table1" && k ~ / 3$/) return "m = 3: seed 1 differs and the published rate lies outside the band of seeds 1-3 at 2^-11/2^-12 (seed_band column); no diagnostic for this row yet"

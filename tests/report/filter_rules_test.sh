@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # make test's check of the report filter's rules (paper/tsv-tables.lua): a fixture page that
-# reads its numbers from data (datum, counts), gives its nan cells a word and names only levels
+# reads its numbers from data (datum, row counts, counts), gives its nan cells a word and names only levels
 # and files its data hold must build; each bad page must stop pandoc with its own message:
 # a caption naming a level or a file the data lack, a nan cell without a word, counts that
 # leave a category out, a datum with no row, a value the prose has no words for.  The same
@@ -17,6 +17,8 @@ out=$(build good) || { printf '%s\n' "$out"; echo "FAIL: the good page was rejec
 grep -q "6 agree, 3 differ and 1 not computed" "$tmp/good.html" 2>/dev/null ||
   { echo "FAIL: the good page's counts are not '6 agree, 3 differ and 1 not computed'"; fail=1; }
 grep -q "computed; 60 per" "$tmp/good.html" 2>/dev/null || { echo "FAIL: the good page's scaled datum is not 60"; fail=1; }
+grep -q "1 printed board and 0 identified boards" "$tmp/good.html" 2>/dev/null ||
+  { echo "FAIL: the good page's row counts (count=yes, one row and none) are not 1 and 0"; fail=1; }
 grep -q "no solution" "$tmp/good.html" 2>/dev/null || { echo "FAIL: the good page's nan cell lost its word"; fail=1; }
 while IFS='|' read -r page expect; do
   out=$(build "$page"); rc=$?
