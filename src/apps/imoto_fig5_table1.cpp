@@ -190,8 +190,9 @@ int body(int argc, char** argv) {
       // All nine weights in one pass over the particle pairs within h_N.
       const auto t0 = std::chrono::steady_clock::now();
       const double h = imoto_h(m, dx);
-      ErrorMaxima maxima = fused_error_maxima(p, V, h, requests, {kStudy.function}, true, run.share());
-      run.reduce(maxima);
+      const ErrorMaxima maxima = run.shared_pass("level" + fmt(level) + "_m" + fmt(m), [&](TargetShare s) {
+        return fused_error_maxima(p, V, h, requests, {kStudy.function}, true, s);
+      });
       const FusedErrors e = relative_errors(maxima, requests, {kStudy.function});
       const double secs =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

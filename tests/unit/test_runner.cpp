@@ -1,12 +1,17 @@
-// The study runner (src/gpm/studies/runner.hpp): the common options, the levels of a run, and
-// a study of two units written, reused by a second run and checked by --verify.
+// The study runner (src/gpm/studies/runner.hpp): the common options, the levels of a run, a
+// study of two units written, reused by a second run and checked by --verify, several data
+// files from one run, and a pass split into saved parts (--parts).
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "gpm/error.hpp"
+#include "gpm/geometry/domain.hpp"
+#include "gpm/operators/fused_errors.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/studies/runner.hpp"
 #include "../temp_dir.hpp"
@@ -127,4 +132,75 @@ TEST_CASE("runner: one run, several data files", "[unit][runner]") {
   CHECK(run_two(a, b, "--verify") == 4);  // both verified, agree
   CHECK_THROWS_AS(run_two(a, b, "--verify", 3), StoreMismatch);  // b differs
   CHECK_THROWS_AS(run_two(a, a), InputError);                     // one file named twice
+}
+
+// --parts K: a shared pass split into K parts on one process, each saved as it finishes
+// (<out>.parts/), so that an interrupted unit resumes from its last saved part; the merged
+// result is bitwise the one pass over all targets, and the parts go once the unit is written.
+namespace {
+struct PassSetup {
+  Particles p = jittered_grid(std::ldexp(1.0, -5), 2);
+  std::vector<double> V = std::vector<double>(p.size(), std::ldexp(1.0, -10));
+  std::vector<ErrorRequest> req = {{"quartic_polynomial", Operator::interp},
+                                   {"piecewise_cubic_polynomial", Operator::lap}};
+  std::vector<std::string> fns = {"sin2pi"};
+  double h = 0.15;
+};
+// One unit (level 5) through shared_pass; `calls` counts the parts computed; a part numbered
+// `fail_at` throws (an interrupted run).
+ErrorMaxima run_parts(const std::string& out, const std::string& parts, int& calls, int fail_at = -1) {
+  static const PassSetup s;
+  StudyRunner run("runner_test", "test study", "quick or paper");
+  parse(run, {"runner_test", "--out", out, "--parts", parts});
+  LevelCache& cache = run.open({{"program", "runner_test"}}, {"level", "rel_error", "time_s"}, 1);
+  ErrorMaxima m;
+  if (!cache.has({"5"}) && run.claim_shared()) {
+    m = run.shared_pass("level 5/one", [&](TargetShare t) {
+      if (t.part == fail_at) throw NumericalError("interrupted at part " + fmt(t.part));
+      ++calls;
+      return fused_error_maxima(s.p, s.V, s.h, s.req, s.fns, true, t);
+    });
+    cache.add({"5", fmt(m.error.at(0)), "0.5"});
+    run.unit_done(1, "level 5");
+  }
+  run.finish();
+  return m;
+}
+}  // namespace
+
+TEST_CASE("runner: --parts saves a pass part by part and resumes it", "[unit][runner][parts]") {
+  TempDir t("gpm_runner_parts_");
+  const PassSetup s;
+  const ErrorMaxima whole = fused_error_maxima(s.p, s.V, s.h, s.req, s.fns);
+  const std::string out = t.file("p.tsv"), dir = out + ".parts";
+  int calls = 0;
+  // Interrupted at the third of four parts: the first two are saved, no row is written.
+  CHECK_THROWS_AS(run_parts(out, "4", calls, 2), NumericalError);
+  CHECK(calls == 2);
+  CHECK(std::filesystem::exists(dir + "/level_5_one.0of4.tsv"));
+  CHECK(std::filesystem::exists(dir + "/level_5_one.1of4.tsv"));
+  CHECK_FALSE(std::filesystem::exists(out));
+  // Resumed: only the last two parts are computed, and the merged maxima are the one pass's.
+  calls = 0;
+  const ErrorMaxima m = run_parts(out, "4", calls);
+  CHECK(calls == 2);
+  CHECK(m.error == whole.error);
+  CHECK(m.exact == whole.exact);
+  CHECK(m.worst == whole.worst);
+  CHECK(m.pairs == whole.pairs);
+  // The unit's row is written: its parts are gone.
+  CHECK(TsvTable::load(out).text(0, "rel_error") == fmt(whole.error.at(0)));
+  CHECK(std::filesystem::is_empty(dir));
+  // Parts of another split are not reused: a run of 3 parts computes all 3.
+  std::filesystem::remove(out);
+  CHECK_THROWS_AS(run_parts(out, "4", calls = 0, 3), NumericalError);
+  calls = 0;
+  CHECK(run_parts(out, "3", calls).error == whole.error);
+  CHECK(calls == 3);
+  // A bad count is refused by name.
+  for (const char* bad : {"0", "x", "-2", ""}) {
+    StudyRunner run("runner_test", "test study", "quick or paper");
+    CHECK_THROWS_WITH(parse(run, {"runner_test", "--out", out, "--parts", bad}),
+                      Catch::Contains("--parts '" + std::string(bad) + "'"));
+  }
 }

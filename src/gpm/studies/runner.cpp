@@ -1,6 +1,7 @@
 #include "gpm/studies/runner.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 #endif
 
 #include "gpm/error.hpp"
+#include "gpm/io/provenance.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/kernel/device_pass.hpp"
 
@@ -51,7 +53,11 @@ StudyRunner::StudyRunner(std::string program, std::string summary, std::string p
       .opt("device", "cpu",
            "where the kernel passes run: cpu, or cuda (a build configured with -DGPM_CUDA=ON "
            "on a machine with an NVIDIA GPU; matrix-free Laplacians only, see --storage)");
-  if (kind_ == Kind::units) args_.opt("seed", "1", "jitter seed (non-negative integer)");
+  if (kind_ == Kind::units)
+    args_.opt("seed", "1", "jitter seed (non-negative integer)")
+        .opt("parts", "1", "split each fused truncation pass (Tables 4.1-4.3, Imoto Sec. 5) into this\n"
+                           "  many parts, each saved in <out>.parts/ when done, so an interrupted\n"
+                           "  unit resumes from its last part (one process; other studies: no effect)");
 }
 
 StudyRunner::~StudyRunner() {
@@ -75,6 +81,15 @@ void StudyRunner::parse(int argc, char** argv) {
   if (kind_ == Kind::units) {
     mode_ = cache_mode(args_);
     seed_ = args_.seed();
+    const std::string parts = args_.str("parts");
+    char* end = nullptr;
+    const long k = std::strtol(parts.c_str(), &end, 10);
+    if (parts.empty() || *end != '\0' || k < 1 || k > 4096)
+      throw InputError("--parts '" + parts + "' is not an integer from 1 to 4096");
+    parts_ = static_cast<int>(k);
+    if (parts_ > 1 && size_ > 1)
+      throw InputError("--parts splits a pass on one process; " + std::to_string(size_) +
+                       " ranks share it already");
   }
   if (size_ > 1 && mode_ != CacheMode::run && mode_ != CacheMode::replace)
     throw InputError("--verify, --recheck and --census run on one process, not on " +
@@ -97,6 +112,7 @@ std::vector<LevelCache*> StudyRunner::open_files(std::vector<DataFile> files,
                                                  int key_columns) {
   if (!caches_.empty()) throw std::logic_error("StudyRunner: data files opened twice");
   columns_ = columns;
+  for (auto& [k, v] : files.front().params) params_text_ += k + "=" + v + ";";
   std::vector<LevelCache*> out;
   for (auto& f : files) {
     for (auto& p : paths_)
@@ -172,6 +188,82 @@ void StudyRunner::reduce(ErrorMaxima& m) const {
 #endif
 }
 
+namespace {
+// A part's maxima as text that reads back bit for bit (%a: hexadecimal floating point).
+std::string hex(double x) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%a", x);
+  return b;
+}
+double unhex(const std::string& s, const std::string& file) {
+  char* end = nullptr;
+  const double x = std::strtod(s.c_str(), &end);
+  if (s.empty() || *end != '\0') throw InputError("part file " + file + ": '" + s + "' is not a number");
+  return x;
+}
+}  // namespace
+
+ErrorMaxima StudyRunner::shared_pass(const std::string& unit,
+                                     const std::function<ErrorMaxima(TargetShare)>& pass) {
+  if (size_ > 1 || parts_ == 1) {
+    ErrorMaxima m = pass(share());
+    reduce(m);
+    return m;
+  }
+  // The part files: named by the unit (characters outside [A-Za-z0-9.-] become '_'); a part
+  // is reused only if its header names this program, code, parameters, seed and unit.
+  std::string name;
+  for (char c : unit) name += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' ? c : '_';
+  const std::string dir = out_ + ".parts";
+  const std::vector<std::pair<std::string, std::string>> id = {
+      {"program", program_}, {"code", code_fingerprint(program_)}, {"params", params_text_},
+      {"seed", std::to_string(seed_)}, {"unit", unit}, {"parts", std::to_string(parts_)}};
+  ErrorMaxima all;
+  for (int i = 0; i < parts_; ++i) {
+    const std::string file = dir + "/" + name + "." + std::to_string(i) + "of" + std::to_string(parts_) + ".tsv";
+    ErrorMaxima m;
+    bool loaded = false;
+    try {
+      const TsvTable t = TsvTable::load(file);
+      bool same = t.get("part").value_or("") == std::to_string(i);
+      for (auto& [k, v] : id) same = same && t.get(k).value_or("") == v;
+      if (same) {
+        for (auto& r : t.rows) {
+          m.error.push_back(unhex(r[t.require_column("error")], file));
+          m.exact.push_back(unhex(r[t.require_column("exact")], file));
+          m.worst.push_back(static_cast<int32_t>(unhex(r[t.require_column("worst")], file)));
+        }
+        m.pairs = unhex(t.get("pairs").value_or(""), file);
+        m.kernel_seconds = unhex(t.get("kernel_seconds").value_or(""), file);
+        loaded = true;
+      }
+    } catch (const InputError&) {
+      // no such file (or not a part file of this form): the part is computed
+    }
+    if (loaded) {
+      std::fprintf(stderr, "[%s] %s: part %d of %d read from %s\n", program_.c_str(), unit.c_str(),
+                   i + 1, parts_, file.c_str());
+    } else {
+      m = pass({i, parts_});
+      TsvTable t;
+      for (auto& [k, v] : id) t.set(k, v);
+      t.set("part", std::to_string(i));
+      t.set("pairs", hex(m.pairs));
+      t.set("kernel_seconds", hex(m.kernel_seconds));
+      t.columns = {"error", "exact", "worst"};
+      for (std::size_t j = 0; j < m.error.size(); ++j)
+        t.rows.push_back({hex(m.error[j]), hex(m.exact[j]), hex(static_cast<double>(m.worst[j]))});
+      t.save(file);  // (creates the folder)
+      std::fprintf(stderr, "[%s] %s: part %d of %d saved (%.1f s)\n", program_.c_str(), unit.c_str(),
+                   i + 1, parts_, m.kernel_seconds);
+    }
+    done_parts_.push_back(file);
+    if (i == 0) all = std::move(m);
+    else all.merge_following(m);
+  }
+  return all;
+}
+
 // A program may claim several units before computing them (the θ of one Laplacian): their
 // rows come in the order of the claims, each unit closed by unit_done().
 void StudyRunner::add(std::size_t file, std::vector<std::string> row) {
@@ -212,6 +304,10 @@ void StudyRunner::unit_done(double work, const std::string& line) {
       saved_added_[f] = caches_[f]->added();
     }
   if (!claimed_.empty()) claimed_.pop_front();
+  // The unit's rows are written: its saved parts are no longer needed.
+  if (size_ == 1 && caches_.front()->writes())
+    for (auto& f : done_parts_) std::remove(f.c_str());
+  done_parts_.clear();
   report(work, line);
 }
 

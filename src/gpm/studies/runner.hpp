@@ -4,7 +4,10 @@
 //   * the data file: its parameters and columns, the per-unit cache and the result store's
 //     fingerprints, lock and re-check (LevelCache, store.hpp);
 //   * one line per finished unit, a progress line with an ETA, the wall time and peak memory
-//     in the file's header, and the closing "wrote …" line.
+//     in the file's header, and the closing "wrote …" line;
+//   * --parts K: a shared pass (below) split into K parts on one process, each part saved in
+//     <out>.parts/ as it finishes, so that a unit longer than the time a machine is held
+//     (the fused pass at 2^-12: hours) resumes from its last saved part.
 // No inheritance: a program makes a StudyRunner, adds its own options to args(), and calls
 // open() / claim() / add() / unit_done() / finish() around its loop.
 //
@@ -31,6 +34,7 @@
 #pragma once
 #include <chrono>
 #include <deque>
+#include <functional>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -109,6 +113,13 @@ class StudyRunner {
   // Every share of the current shared unit merged in rank order (the result of one pass over
   // all targets), on every rank.  One process: unchanged.
   void reduce(ErrorMaxima& m) const;
+  // The pass of the shared unit being computed, over all its targets: `pass` computes one
+  // share.  Several ranks: this rank's share, then reduce().  One process: the whole, or with
+  // --parts K the K parts in target order, each loaded from <out>.parts/<unit>.<i>of<K>.tsv
+  // when a part of the same program, code, parameters, seed and unit was saved there, else
+  // computed and saved (atomically), then merged in order (merge_following: exactly the one
+  // pass).  A unit's part files are removed once its rows are written (unit_done).
+  ErrorMaxima shared_pass(const std::string& unit, const std::function<ErrorMaxima(TargetShare)>& pass);
   // One row of a unit this process computed (LevelCache::add on one process; kept for the
   // gathering in finish() on several).
   void add(std::vector<std::string> row) { add(0, std::move(row)); }
@@ -148,6 +159,9 @@ class StudyRunner {
   std::vector<std::string> paths_;
   std::vector<std::string> columns_;  // the study's own (open_files)
   std::vector<std::size_t> saved_added_;  // rows each file had added when last written
+  int parts_ = 1;                          // --parts
+  std::string params_text_;                // the first data file's parameters, for part files
+  std::vector<std::string> done_parts_;    // part files of the unit being computed
   std::unique_ptr<Progress> progress_;
   double done_ = 0;
   std::chrono::steady_clock::time_point start_;

@@ -257,9 +257,11 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
           V = &uniform;
         }
         const auto t0 = std::chrono::steady_clock::now();
-        // One pass (on a cluster: this rank's share of the targets, then all shares merged).
-        ErrorMaxima maxima = fused_error_maxima(p, *V, h, spec.requests, functions, true, run.share());
-        run.reduce(maxima);
+        // One pass (on a cluster: this rank's share of the targets, then all shares merged;
+        // with --parts: part by part, each saved, so a long pass resumes).
+        const ErrorMaxima maxima = run.shared_pass(
+            h_reading_name(r) + "_" + volumes_name(v) + "_level" + fmt(k),
+            [&](TargetShare s) { return fused_error_maxima(p, *V, h, spec.requests, functions, true, s); });
         const FusedErrors e = relative_errors(maxima, spec.requests, functions);
         const double pass_s = seconds_since(t0);
         const double rss = peak_rss_mib();
