@@ -32,6 +32,7 @@
 #include "gpm/operators/testfunctions.hpp"
 #include "gpm/operators/truncation.hpp"
 #include "gpm/studies/catalog.hpp"
+#include "gpm/studies/cost_model.hpp"
 #include "gpm/studies/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -41,13 +42,6 @@ namespace {
 
 // The study's levels, orders m, weights and test function: imoto_study() (catalog.hpp).
 const ImotoStudy& kStudy = imoto_study();
-
-// Expected neighbour pairs of a (level, m) unit, for the ETA only: targets in Ω times the
-// mean number of particles in a disc of radius h (density 1/Δx²).
-double estimated_pairs(int level, double m) {
-  const double dx = std::ldexp(1.0, -level), h = imoto_h(m, dx);
-  return (1.0 / (dx * dx)) * (M_PI * h * h / (dx * dx) + 1.0);
-}
 
 // The smoothing part of the interpolant's error: for a normalized radial weight,
 // Π_h v − v = (M₂/4) h² Δv + O(h⁴) with M₂ = ∫|x|² w(|x|) dx = 2π ∫ r³ w(r) dr (the continuous
@@ -166,12 +160,14 @@ int body(int argc, char** argv) {
   LevelCache& cache = run.open(params, kStudy.columns, 2);
   cache.table().set("profile", profile_name(profile));
 
-  // Work still to do, for the overall ETA (estimated from the pair counts).
+  // Work still to do, for the overall ETA: the plan's pair estimate (cost_model.hpp).
   const std::size_t nw = kStudy.weights.size();
   double total = 0;
-  for (int k : levels)
+  for (int k : levels) {
+    const double dx = std::ldexp(1.0, -k);
     for (double m : kStudy.orders)
-      if (!cache.has({fmt(k), fmt(m)}, nw)) total += estimated_pairs(k, m);
+      if (!cache.has({fmt(k), fmt(m)}, nw)) total += predicted_pairs(dx, imoto_h(m, dx));
+  }
   run.expect(total, "pairs");
 
   const std::vector<ErrorRequest> requests = kStudy.requests();
@@ -208,7 +204,7 @@ int body(int argc, char** argv) {
         row["time_s"] = fmt(secs), row["kernel_s"] = fmt(e.kernel_seconds);
         run.add(row);
       }
-      run.unit_done(estimated_pairs(level, m),
+      run.unit_done(predicted_pairs(dx, h),
                     line_printf("level %d m=%g N=%zu h=%.4g pairs=%.3g %.2fs (%.3g pairs/s)  "
                                 "Pi1 %.3g Grad1 %.3g Lap1 %.3g",
                                 level, m, p.size(), h, e.pairs, secs, e.pairs / e.kernel_seconds,
