@@ -6,16 +6,15 @@ STORE_FILES := $(wildcard $(STORE)/*.tsv)
 DATAFILES += $(DATA)/store_rates.tsv $(DATA)/store_summary.tsv $(DATA)/store_score.tsv \
              $(DATA)/checked_reasons.tsv $(DATA)/setup_identification.tsv
 
-# Reasons for differing rates, each with the diagnostic that checks it against the stored data.
-$(DATA)/checked_reasons.tsv: tables/checked_reasons.sh tables/store_lib.sh $(STORE_FILES) $(BUILD)/thesis_heat_mode_model \
-    $(wildcard tables/published/thesis_table4_*_long.tsv)
-	@mkdir -p $(DATA)
-	bash $< $(STORE) $@ $(BUILD)
-
-# The same reasons, one row per mechanism with the rows it covers (the chapter's short table).
+# Reasons for differing rates, each with the diagnostic that checks it against the stored data,
+# and the same reasons one row per mechanism with the rows it covers (the chapter's short
+# table): gpm checked-reasons, the rules of src/gpm/studies/checked_reasons.hpp.
 DATAFILES += $(DATA)/checked_reasons_by_mechanism.tsv
-$(DATA)/checked_reasons_by_mechanism.tsv: tables/reasons_by_mechanism.sh $(DATA)/checked_reasons.tsv
-	bash $< $(DATA)/checked_reasons.tsv $@
+$(DATA)/checked_reasons.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published/thesis_table4_*_long.tsv)
+	@mkdir -p $(DATA)
+	$(BUILD)/gpm checked-reasons --store $(STORE) --published tables/published --out $@ \
+	  --by-mechanism $(DATA)/checked_reasons_by_mechanism.tsv
+$(DATA)/checked_reasons_by_mechanism.tsv: $(DATA)/checked_reasons.tsv ;
 
 # The two scoreboards (as printed, as identified) and the fingerprint evidence that identifies
 # Chapter 4's set-up (setup_identification.tsv; paper/04-setup-rule.md): gpm store-rates, the

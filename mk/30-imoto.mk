@@ -12,7 +12,7 @@ $(DATA)/imoto_fig5_table1.tsv: $(BUILD)/imoto_fig5_table1
 	@touch $@  # a fully cached rerun leaves the file as it was
 
 # Table 1: rates from the two finest levels beside the published ones (judged only at the
-# document's levels 2^-11/2^-12; reasons for paper-scale deviations: tables/checked_reasons.sh).
+# document's levels 2^-11/2^-12; reasons for paper-scale deviations: gpm checked-reasons).
 $(DATA)/imoto_table1.tsv: $(BUILD)/rate_table $(DATA)/imoto_fig5_table1.tsv \
     tables/published/imoto_table1.tsv
 	$(BUILD)/rate_table --data $(DATA)/imoto_fig5_table1.tsv \

@@ -8,6 +8,8 @@
 //   gpm study       the study catalog: list the studies, or run one by name
 //   gpm store-rates the documents' rates judged against the result store (verdicts, boards;
 //                   written to the files it is given, not to stdout)
+//   gpm checked-reasons  the reasons for differing rates, each checked against the store
+//                   (written to the files it is given, not to stdout)
 //
 // Every subcommand writes TSV to stdout (a `# key = value` header, then columns) and
 // has --help.  Errors are one line on stderr and a non-zero exit.
@@ -39,6 +41,7 @@
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/solvers/poisson_probes.hpp"
 #include "gpm/studies/catalog.hpp"
+#include "gpm/studies/checked_reasons.hpp"
 #include "gpm/studies/heat_tables.hpp"
 #include "gpm/studies/profile.hpp"
 #include "gpm/studies/rates.hpp"
@@ -495,7 +498,7 @@ int cmd_store_rates(int argc, char** argv) {
          "scoreboards (src/gpm/studies/verdicts.hpp defines every verdict); no study is run.");
   a.opt("store", "results/paper", "the result store")
       .opt("published", "tables/published", "the published values (imoto_table1.tsv, thesis_table4_N_long.tsv)")
-      .opt("checked", "", "checked reasons for differing rates (tables/checked_reasons.sh); default: none")
+      .opt("checked", "", "checked reasons for differing rates (gpm checked-reasons --out); default: none")
       .output("out", "", "the rates with their verdicts and boards (required)")
       .output("summary", "", "where the stored rows come from, file by file")
       .output("score", "", "the verdict counts per table and slice, and each board's totals")
@@ -549,6 +552,46 @@ int cmd_store_rates(int argc, char** argv) {
     add_provenance(ident.table);
     outputs.emplace_back(a.str("ident"), ident.table);
   }
+  for (auto& [path, table] : outputs) table.save(path);
+  return 0;
+}
+
+// gpm checked-reasons: the reasons for differing paper-scale rates, each with the diagnostic
+// that checks it against the committed store (checked_reasons.hpp); gpm store-rates --checked
+// reads the first file.  Both tables are made before either is written (temporary file and
+// rename each): a store file that cannot be read leaves no output half done.
+int cmd_checked_reasons(int argc, char** argv) {
+  Args a("gpm checked-reasons",
+         "Reasons for paper-scale rates that differ from the published ones, each with the\n"
+         "diagnostic that checks it against the committed result store (pass or fail, and whether\n"
+         "a run restores the published rate); src/gpm/studies/checked_reasons.hpp states each rule.");
+  a.opt("store", "results/paper", "the result store")
+      .opt("published", "tables/published", "the published values (thesis_table4_N_long.tsv)")
+      .output("out", "", "one row per checked rate: table, slice, key, reason, evidence, check, restores (required)")
+      .output("by-mechanism", "", "the same reasons, one row per mechanism with the rows it covers");
+  a.parse(argc, argv, 2);
+  const std::string out = a.required("out"), store = a.str("store"), pub = a.str("published");
+  if (!std::filesystem::is_directory(store)) throw InputError("--store " + store + " is not a directory");
+  if (!std::filesystem::is_directory(pub)) throw InputError("--published " + pub + " is not a directory");
+  TsvTable checked = checked_reasons(store, pub, kRateTolerance);
+  // The header: what the report prints under the table (git revision and date as every output
+  // of the store's verdicts carries them).
+  auto header = [&](TsvTable& t, const std::vector<std::pair<std::string, std::string>>& lines) {
+    TsvTable h;
+    for (auto& [k, v] : lines) h.set(k, v);
+    for (auto& [k, v] : store_provenance(store))
+      if (k == "git_revision" || k == "written_utc") h.set(k, v);
+    h.set("note", "rules and thresholds in src/gpm/studies/checked_reasons.hpp; published values from " + pub);
+    t.meta.insert(t.meta.begin(), h.meta.begin(), h.meta.end());
+  };
+  std::vector<std::pair<std::string, TsvTable>> outputs;
+  if (!a.str("by-mechanism").empty()) {
+    TsvTable by = reasons_by_mechanism(checked);
+    header(by, {{"program", "gpm checked-reasons (by mechanism)"}, {"sources", out}});
+    outputs.emplace_back(a.str("by-mechanism"), by);
+  }
+  header(checked, {{"program", "gpm checked-reasons"}, {"store", store}, {"tolerance", fmt(kRateTolerance) + " (rates)"}});
+  outputs.emplace(outputs.begin(), out, checked);
   for (auto& [path, table] : outputs) table.save(path);
   return 0;
 }
@@ -636,6 +679,7 @@ int dispatch(int argc, char** argv) {
       "  fingerprint the code fingerprint of programs (result-store rows)\n"
       "  store-seal  seal result-store files written before seals (once)\n"
       "  store-rates the documents' rates judged against the result store: verdicts, boards\n"
+      "  checked-reasons  the reasons for differing rates, each checked against the result store\n"
       "  study       the study catalog: --list, or run one study by name\n";
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::cout << usage;
@@ -653,8 +697,9 @@ int dispatch(int argc, char** argv) {
   if (sub == "study") return cmd_study(argc, argv);
   if (sub == "store-seal") return cmd_store_seal(argc, argv);
   if (sub == "store-rates") return cmd_store_rates(argc, argv);
+  if (sub == "checked-reasons") return cmd_checked_reasons(argc, argv);
   throw InputError("unknown subcommand '" + sub + "'; valid: weights, particles, voronoi, trunc, poisson, "
-                   "heat, smoothing, fingerprint, study, store-seal, store-rates");
+                   "heat, smoothing, fingerprint, study, store-seal, store-rates, checked-reasons");
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 # (results/paper) against its published value, on both scoreboards of gpm store-rates (the
 # reading as printed and the one the documents' fingerprint identifies; each of the 80
 # published rates once per board).  The verdicts are computed from the stored rows
-# exactly as the report computes them (tables/checked_reasons.sh, gpm store-rates):
+# exactly as the report computes them (gpm checked-reasons, gpm store-rates):
 # agrees, non-convergence reproduced, inside the seed band, or differs with a checked reason.
 # A rate that differs without a checked reason must be listed, with what is open about it, in
 # tests/paper/known_unexplained.tsv — the package's open items, in one file.  The test fails
@@ -18,7 +18,7 @@ build=$(cd "$1" && pwd)
 cd "$2"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-bash tables/checked_reasons.sh results/paper "$tmp/checked.tsv" "$build"
+"$build/gpm" checked-reasons --store results/paper --out "$tmp/checked.tsv"
 "$build/gpm" store-rates --store results/paper --checked "$tmp/checked.tsv" --out "$tmp/rates.tsv" \
   --score "$tmp/score.tsv"
 # Both boards must cover every published rate once.

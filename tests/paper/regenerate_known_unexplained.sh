@@ -10,7 +10,7 @@ build=${1:-build}
 cd "$(dirname "$0")/../.."
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-bash tables/checked_reasons.sh results/paper "$tmp/c.tsv" "$build"
+"$build/gpm" checked-reasons --store results/paper --out "$tmp/c.tsv"
 "$build/gpm" store-rates --store results/paper --checked "$tmp/c.tsv" --out "$tmp/r.tsv"
 awk -F'\t' '
 function note(t, s, k) {

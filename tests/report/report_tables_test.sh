@@ -3,9 +3,8 @@
 #   tables/verdicts.sh  a figure drawn from a table's rows joins that table's row (before or after it), neighbouring
 #                       illustrations of one document share a row, a rate table's evidence names
 #                       only the verdicts that occur on each board, and a figure drawn from a
-#                       table that has no rates row stops the script;
-#   tables/reasons_by_mechanism.sh  reasons that differ only after their first ':' or ';' are
-#                       one mechanism, with the rows it covers and the ones that passed.
+#                       table that has no rates row stops the script.
+# (The reasons collapsed per mechanism are gpm checked-reasons' now: tests/unit/test_checked_reasons.cpp.)
 # usage: report_tables_test.sh SOURCE_DIR
 . "$(dirname "$0")/fixture_env.sh"  # LC_ALL=C, src, fx, tmp
 fx=$fx/tables
@@ -26,9 +25,5 @@ if bash "$src/tables/verdicts.sh" "$fx/items_orphan.tsv" "$fx/score.tsv" "$tmp" 
 else
   grep -q "no rates row" "$tmp/err" || { echo "FAIL: the orphan figure's message is missing"; fail=1; }
 fi
-bash "$src/tables/reasons_by_mechanism.sh" "$fx/reasons.tsv" "$tmp/mech.tsv" ||
-  { echo "FAIL: reasons_by_mechanism.sh rejected the fixture"; exit 1; }
-expect "$tmp/mech.tsv" "volume mismatch${tab}t1 a: 2 rows, 1 pass (w1)${tab}2${tab}1${tab}1"
-expect "$tmp/mech.tsv" "smoothing part${tab}t2 b: 1 row, all pass${tab}1${tab}1${tab}0"
-[ $fail -eq 0 ] && echo "report tables: verdicts merged as specified, reasons collapsed per mechanism"
+[ $fail -eq 0 ] && echo "report tables: verdicts merged as specified"
 exit $fail

@@ -9,7 +9,7 @@
 //                  coarser levels neither agrees nor differs with the document
 //   agrees         |reproduced − published| ≤ tolerance
 //   differs        otherwise (a reason counts only where a diagnostic computed from the data
-//                  checks it: tables/checked_reasons.sh, for the paper-scale store)
+//                  checks it: checked_reasons.hpp, for the paper-scale store)
 //   undefined      the rate is not a number (an error ≤ 0 or not finite at one of the two
 //                  levels): no agreement can be claimed
 //   not-computed   the data have fewer than two levels for this setting.

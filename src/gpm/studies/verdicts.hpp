@@ -27,7 +27,7 @@
 //   inside seed band            differs for seed 1, but the published rate lies between the
 //                               smallest and largest rate of the stored seeds (at least 5, a
 //                               band no wider than the tolerance);
-//   differs, checked reason     a reason in the checked reasons (tables/checked_reasons.sh)
+//   differs, checked reason     a reason in the checked reasons (checked_reasons.hpp)
 //                               whose diagnostic passed and includes a run that restores the
 //                               published rate;
 //   our rate explained, the published one not
@@ -113,7 +113,7 @@ struct JudgedRate {
 // "unstable at both rate levels (2^-8: blew up at step 5 of 16; 2^-9: error 3.2 after 22 steps)".
 using UnstableSeries = std::map<RateKey, std::string>;
 
-// A checked reason that passed (tables/checked_reasons.sh): its text "reason: evidence", and
+// A checked reason that passed (checked_reasons.hpp): its text "reason: evidence", and
 // whether its check includes a run that restores the published rate.
 struct CheckedReason {
   std::string text;
