@@ -27,13 +27,12 @@ $(DATA)/store_rates.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published
 $(DATA)/store_summary.tsv $(DATA)/store_score.tsv $(DATA)/setup_identification.tsv: $(DATA)/store_rates.tsv ;
 
 # The documents' open set-up questions, with the evidence the stored runs give (every number
-# read from the store by tables/decisions.sh).
+# read from the store or computed by the library: gpm decisions, src/gpm/studies/decisions.hpp).
 DATAFILES += $(DATA)/decisions.tsv
-$(DATA)/decisions.tsv: tables/decisions.sh tables/store_lib.sh $(STORE_FILES) $(BUILD)/rate_table \
-    $(BUILD)/gpm tables/published/thesis_table4_7_long.tsv tables/published/thesis_table4_4_long.tsv \
-    $(DATA)/store_score.tsv
+$(DATA)/decisions.tsv: $(STORE_FILES) $(BUILD)/gpm tables/published/thesis_table4_7_long.tsv \
+    tables/published/thesis_table4_4_long.tsv tables/published/imoto_table1.tsv $(DATA)/store_score.tsv
 	@mkdir -p $(DATA)
-	bash $< $(BUILD) $(STORE) $@ $(DATA)/store_score.tsv
+	$(BUILD)/gpm decisions --store $(STORE) --published tables/published --score $(DATA)/store_score.tsv --out $@
 
 # Figures from the store itself (paper scale, whatever the profile).
 FIGFILES += $(FIGOUT)/thesis_poisson_volumes.svg
@@ -48,13 +47,14 @@ $(DATA)/store_missing.tsv: tables/store_missing.sh $(STORE_FILES) $(DATA)/plan_p
 	bash $< $(STORE) $(DATA)/plan_paper_summary.tsv $@
 
 # Page one: a verdict per figure and table of the documents (tables/items.tsv), each with the
-# number that decides it: paper-scale rates from the store, the other checks from this run.
+# number that decides it: paper-scale rates from the store, the other checks from this run
+# (gpm verdicts, the rules of src/gpm/studies/page_verdicts.hpp).
 DATAFILES += $(DATA)/verdicts.tsv
-$(DATA)/verdicts.tsv: tables/verdicts.sh tables/items.tsv $(DATA)/store_score.tsv \
+$(DATA)/verdicts.tsv: $(BUILD)/gpm tables/items.tsv $(DATA)/store_score.tsv \
     $(DATA)/koba_sato_cor71.tsv $(DATA)/koba_sato_bounds.tsv $(DATA)/imoto_regularity_cover.tsv \
     $(DATA)/imoto_figs_particles.tsv $(DATA)/core_voronoi.tsv $(DATA)/core_weights.tsv
 	@mkdir -p $(DATA)
-	bash $< tables/items.tsv $(DATA)/store_score.tsv $(DATA) $@
+	$(BUILD)/gpm verdicts --items tables/items.tsv --score $(DATA)/store_score.tsv --data $(DATA) --out $@
 
 # The documents' figures drawn from the store where it holds their levels (the same gnuplot
 # scripts, datadir = the store): figures/out/store_<figure>.svg.

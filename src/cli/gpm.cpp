@@ -10,6 +10,8 @@
 //                   written to the files it is given, not to stdout)
 //   gpm checked-reasons  the reasons for differing rates, each checked against the store
 //                   (written to the files it is given, not to stdout)
+//   gpm verdicts    page one of the report: a verdict per document item (written to --out)
+//   gpm decisions   the documents' open set-up questions with the store's evidence (to --out)
 //
 // Every subcommand writes TSV to stdout (a `# key = value` header, then columns) and
 // has --help.  Errors are one line on stderr and a non-zero exit.
@@ -24,6 +26,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "gpm/error.hpp"
@@ -42,7 +45,9 @@
 #include "gpm/solvers/poisson_probes.hpp"
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/checked_reasons.hpp"
+#include "gpm/studies/decisions.hpp"
 #include "gpm/studies/heat_tables.hpp"
+#include "gpm/studies/page_verdicts.hpp"
 #include "gpm/studies/profile.hpp"
 #include "gpm/studies/rates.hpp"
 #include "gpm/studies/setup_identification.hpp"
@@ -596,6 +601,65 @@ int cmd_checked_reasons(int argc, char** argv) {
   return 0;
 }
 
+// gpm verdicts: page one of the report, a verdict per item of the documents with the number
+// that decides it (page_verdicts.hpp).  Every input is read before the output is written
+// (temporary file and rename).
+int cmd_verdicts(int argc, char** argv) {
+  Args a("gpm verdicts",
+         "Page one of the report: one verdict per figure and table of the documents (the items\n"
+         "file), each with the number that decides it, from the store's score and this run's data\n"
+         "files; src/gpm/studies/page_verdicts.hpp states each rule and how rows are merged.");
+  a.opt("items", "tables/items.tsv", "the documents' items and the rule of each (document, item, shows, rule, section)")
+      .opt("score", "", "the store's verdict counts (gpm store-rates --score; required)")
+      .opt("data", "", "the folder of this run's data files (koba_sato_cor71.tsv, core_voronoi.tsv, ...; required)")
+      .output("out", "", "page one's table: document, item, shows, verdict, evidence, section (required)");
+  a.parse(argc, argv, 2);
+  const std::string out = a.required("out"), score = a.required("score"), data = a.required("data"),
+                    items = a.str("items");
+  if (!std::filesystem::is_directory(data)) throw InputError("--data " + data + " is not a directory");
+  TsvTable page = page_verdicts(TsvTable::load(items), TsvTable::load(score), page_data_dir(data));
+  TsvTable h;
+  h.set("program", "gpm verdicts");
+  h.set("items", items);
+  h.set("score", score + " (paper scale, the result store)");
+  h.set("data", data);
+  // The git revision and date as every output of the store's verdicts carries them.
+  for (auto& [k, v] : store_provenance(""))
+    if (k == "git_revision" || k == "written_utc") h.set(k, v);
+  page.meta = h.meta;
+  page.save(out);
+  return 0;
+}
+
+// gpm decisions: the documents' open set-up questions, each with the evidence the committed
+// store gives (decisions.hpp).  The table is made before it is written (temporary file and
+// rename): a store file that cannot be read leaves no output.
+int cmd_decisions(int argc, char** argv) {
+  Args a("gpm decisions",
+         "The documents' open set-up questions (time step, volumes, smoothing, Omega_H, ...), each\n"
+         "with the evidence the committed result store gives; src/gpm/studies/decisions.hpp lists them.");
+  a.opt("store", "results/paper", "the result store")
+      .opt("published", "tables/published", "the published values (thesis_table4_N_long.tsv, imoto_table1.tsv)")
+      .opt("score", "", "the store's verdict counts (gpm store-rates --score): adds which reading each table ran")
+      .output("out", "", "one row per question: question, evidence, decision (required)");
+  a.parse(argc, argv, 2);
+  const std::string out = a.required("out"), store = a.str("store"), pub = a.str("published");
+  if (!std::filesystem::is_directory(store)) throw InputError("--store " + store + " is not a directory");
+  if (!std::filesystem::is_directory(pub)) throw InputError("--published " + pub + " is not a directory");
+  std::optional<TsvTable> score;
+  if (!a.str("score").empty()) score = TsvTable::load(a.str("score"));
+  TsvTable table = decisions(store, pub, score);
+  TsvTable h;
+  h.set("program", "gpm decisions");
+  h.set("store", store);
+  // The git revision and date as every output of the store's verdicts carries them.
+  for (auto& [k, v] : store_provenance(store))
+    if (k == "git_revision" || k == "written_utc") h.set(k, v);
+  table.meta = h.meta;
+  table.save(out);
+  return 0;
+}
+
 // gpm study: the catalog (catalog.hpp) on the command line.  `--list` prints every study
 // with its document item and levels; `gpm study NAME [options]` runs the study's program
 // (from the directory of this gpm) with the study's fixed arguments and the options given,
@@ -680,6 +744,8 @@ int dispatch(int argc, char** argv) {
       "  store-seal  seal result-store files written before seals (once)\n"
       "  store-rates the documents' rates judged against the result store: verdicts, boards\n"
       "  checked-reasons  the reasons for differing rates, each checked against the result store\n"
+      "  verdicts    page one of the report: a verdict per figure and table of the documents\n"
+      "  decisions   the documents' open set-up questions with the result store's evidence\n"
       "  study       the study catalog: --list, or run one study by name\n";
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::cout << usage;
@@ -698,8 +764,10 @@ int dispatch(int argc, char** argv) {
   if (sub == "store-seal") return cmd_store_seal(argc, argv);
   if (sub == "store-rates") return cmd_store_rates(argc, argv);
   if (sub == "checked-reasons") return cmd_checked_reasons(argc, argv);
+  if (sub == "verdicts") return cmd_verdicts(argc, argv);
+  if (sub == "decisions") return cmd_decisions(argc, argv);
   throw InputError("unknown subcommand '" + sub + "'; valid: weights, particles, voronoi, trunc, poisson, "
-                   "heat, smoothing, fingerprint, study, store-seal, store-rates, checked-reasons");
+                   "heat, smoothing, fingerprint, study, store-seal, store-rates, checked-reasons, verdicts, decisions");
 }
 
 }  // namespace
