@@ -53,7 +53,9 @@ coarse="--levels 5,6,7"
 check imoto_fig5_table1.tsv       "" "$coarse" imoto_fig5_table1
 check imoto_fig5_table1_seed2.tsv "" "$coarse" imoto_fig5_table1 --seed 2
 check imoto_fig5_table1_seed3.tsv "" "$coarse" imoto_fig5_table1 --seed 3
-check imoto_fig5_table1_seed4.tsv "--levels 5,6,7,11,12" "$coarse" imoto_fig5_table1 --seed 4
+for s in 4 5; do  # the rate levels 2^-11/2^-12 and the coarse ones, for the seed bands
+  check imoto_fig5_table1_seed$s.tsv "--levels 5,6,7,11,12" "$coarse" imoto_fig5_table1 --seed $s
+done
 check imoto_fig5_table1_plain.tsv "" "$coarse" imoto_fig5_table1 --jitter 0
 check imoto_fig5_table1_cellvol.tsv "" "$coarse" imoto_fig5_table1 --volumes cell
 for t in 1 2 3; do check thesis_table4_$t.tsv "" "$coarse" thesis_table4_$t; done

@@ -102,7 +102,7 @@ inline const std::string kJitterSetup = "another jitter realization";
 // A StoreRate with its seed band, verdicts and boards.
 struct JudgedRate {
   StoreRate rate;
-  std::string seed_band;  // "1.45 to 1.91 (4 seeds)", empty under two realizations
+  std::string seed_band;  // "1.45 to 1.91 (5 seeds)", empty under two realizations
   Verdict verdict = Verdict::not_counted;
   std::string reason;
   bool printed = false, identified = false;  // on the printed / identified board
