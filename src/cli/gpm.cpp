@@ -494,6 +494,18 @@ int cmd_store_seal(int argc, char** argv) {
   return 0;
 }
 
+// The folders a store subcommand reads (--store, --published, --data): each must exist.
+void require_directories(const std::vector<std::pair<std::string, std::string>>& options) {
+  for (auto& [option, path] : options)
+    if (!std::filesystem::is_directory(path)) throw InputError("--" + option + " " + path + " is not a directory");
+}
+
+// The git revision and date as every output of the store's verdicts carries them.
+void set_revision_and_date(TsvTable& header, const std::string& store) {
+  for (auto& [k, v] : store_provenance(store))
+    if (k == "git_revision" || k == "written_utc") header.set(k, v);
+}
+
 // gpm store-rates: the documents' rates judged against the committed result store (verdicts.hpp),
 // the report's paper-scale tables.  Every input is read and every output path checked before
 // anything is written; each output is written to a temporary file and renamed (TsvTable::save).
@@ -510,8 +522,7 @@ int cmd_store_rates(int argc, char** argv) {
       .output("ident", "", "setup_identification's table: the fingerprint evidence of Chapter 4's reading");
   a.parse(argc, argv, 2);
   const std::string out = a.required("out"), store = a.str("store"), pub = a.str("published");
-  if (!std::filesystem::is_directory(store)) throw InputError("--store " + store + " is not a directory");
-  if (!std::filesystem::is_directory(pub)) throw InputError("--published " + pub + " is not a directory");
+  require_directories({{"store", store}, {"published", pub}});
   const CheckedReasons checked =
       a.str("checked").empty() ? CheckedReasons{} : passed_reasons(TsvTable::load(a.str("checked")));
 
@@ -576,16 +587,14 @@ int cmd_checked_reasons(int argc, char** argv) {
       .output("by-mechanism", "", "the same reasons, one row per mechanism with the rows it covers");
   a.parse(argc, argv, 2);
   const std::string out = a.required("out"), store = a.str("store"), pub = a.str("published");
-  if (!std::filesystem::is_directory(store)) throw InputError("--store " + store + " is not a directory");
-  if (!std::filesystem::is_directory(pub)) throw InputError("--published " + pub + " is not a directory");
+  require_directories({{"store", store}, {"published", pub}});
   TsvTable checked = checked_reasons(store, pub, kRateTolerance);
   // The header: what the report prints under the table (git revision and date as every output
   // of the store's verdicts carries them).
   auto header = [&](TsvTable& t, const std::vector<std::pair<std::string, std::string>>& lines) {
     TsvTable h;
     for (auto& [k, v] : lines) h.set(k, v);
-    for (auto& [k, v] : store_provenance(store))
-      if (k == "git_revision" || k == "written_utc") h.set(k, v);
+    set_revision_and_date(h, store);
     h.set("note", "rules and thresholds in src/gpm/studies/checked_reasons.hpp; published values from " + pub);
     t.meta.insert(t.meta.begin(), h.meta.begin(), h.meta.end());
   };
@@ -616,16 +625,14 @@ int cmd_verdicts(int argc, char** argv) {
   a.parse(argc, argv, 2);
   const std::string out = a.required("out"), score = a.required("score"), data = a.required("data"),
                     items = a.str("items");
-  if (!std::filesystem::is_directory(data)) throw InputError("--data " + data + " is not a directory");
+  require_directories({{"data", data}});
   TsvTable page = page_verdicts(TsvTable::load(items), TsvTable::load(score), page_data_dir(data));
   TsvTable h;
   h.set("program", "gpm verdicts");
   h.set("items", items);
   h.set("score", score + " (paper scale, the result store)");
   h.set("data", data);
-  // The git revision and date as every output of the store's verdicts carries them.
-  for (auto& [k, v] : store_provenance(""))
-    if (k == "git_revision" || k == "written_utc") h.set(k, v);
+  set_revision_and_date(h, "");
   page.meta = h.meta;
   page.save(out);
   return 0;
@@ -644,17 +651,14 @@ int cmd_decisions(int argc, char** argv) {
       .output("out", "", "one row per question: question, evidence, decision (required)");
   a.parse(argc, argv, 2);
   const std::string out = a.required("out"), store = a.str("store"), pub = a.str("published");
-  if (!std::filesystem::is_directory(store)) throw InputError("--store " + store + " is not a directory");
-  if (!std::filesystem::is_directory(pub)) throw InputError("--published " + pub + " is not a directory");
+  require_directories({{"store", store}, {"published", pub}});
   std::optional<TsvTable> score;
   if (!a.str("score").empty()) score = TsvTable::load(a.str("score"));
   TsvTable table = decisions(store, pub, score);
   TsvTable h;
   h.set("program", "gpm decisions");
   h.set("store", store);
-  // The git revision and date as every output of the store's verdicts carries them.
-  for (auto& [k, v] : store_provenance(store))
-    if (k == "git_revision" || k == "written_utc") h.set(k, v);
+  set_revision_and_date(h, store);
   table.meta = h.meta;
   table.save(out);
   return 0;

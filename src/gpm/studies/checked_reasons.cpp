@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "gpm/error.hpp"
+#include "gpm/io/text_format.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/operators/norms.hpp"
 #include "gpm/operators/testfunctions.hpp"
@@ -25,20 +26,6 @@ namespace gpm {
 
 namespace {
 
-// printf into a string: the evidence prints its numbers as the report shows them (%.2f for a
-// rate, …), whatever their length.
-__attribute__((format(printf, 1, 2))) std::string format(const char* f, ...) {
-  va_list args, again;
-  va_start(args, f);
-  va_copy(again, args);
-  const int n = std::vsnprintf(nullptr, 0, f, args);
-  va_end(args);
-  std::string s(static_cast<std::size_t>(std::max(n, 0)) + 1, '\0');
-  std::vsnprintf(s.data(), s.size(), f, again);
-  va_end(again);
-  s.resize(static_cast<std::size_t>(std::max(n, 0)));
-  return s;
-}
 
 const char* pass_fail(bool ok) { return ok ? "pass" : "fail"; }
 const char* yes_no(bool b) { return b ? "yes" : "no"; }
@@ -137,7 +124,7 @@ void add_volume_mismatch_reasons(const TsvTable& pub, const TsvTable& diag, doub
     const auto a1 = find(l1, "seed1"), a2 = find(l2, "seed1"), c1 = find(l1, "seed1_cell"), c2 = find(l2, "seed1_cell");
     if (!a1 || !a2 || !c1 || !c2) {
       add(out, "thesis_table4_4", r, w, "volume mismatch of (A.10)",
-          format("diagnostic not yet at 2^-%d and 2^-%d", l1, l2), false, false);
+          format_text("diagnostic not yet at 2^-%d and 2^-%d", l1, l2), false, false);
       continue;
     }
     auto num = [&](std::optional<std::size_t> row, int col) { return diag.number(*row, col); };
@@ -148,11 +135,11 @@ void add_volume_mismatch_reasons(const TsvTable& pub, const TsvTable& diag, doub
     const double p = pub.number(i, c_pub);
     const bool restores = std::fabs(rc - p) <= tol;
     add(out, "thesis_table4_4", r, w,
-        format("volume mismatch of (A.10): V_i = |Omega_H|/N differs from dx^2 by %+.2f%% at 2^-%d and %+.2f%% at "
+        format_text("volume mismatch of (A.10): V_i = |Omega_H|/N differs from dx^2 by %+.2f%% at 2^-%d and %+.2f%% at "
                "2^-%d (the grid does not tile Omega_H), which scales the discrete Laplacian and adds to the "
                "smoothing error",
                100 * num(a1, c_mm), l1, 100 * num(a2, c_mm), l2),
-        format("consistency predicted from eps and the mismatch: %+.4f at 2^-%d, %+.4f at 2^-%d (eps alone %.4f, "
+        format_text("consistency predicted from eps and the mismatch: %+.4f at 2^-%d, %+.4f at 2^-%d (eps alone %.4f, "
                "%.4f); error/|predicted| %.2f, %.2f; rate predicted %.2f, reproduced %.2f; with V_i = dx^2: rate "
                "%.2f (published %s)",
                num(a1, c_tau), l1, num(a2, c_tau), l2, num(a1, c_eps), num(a2, c_eps),
@@ -182,7 +169,7 @@ void add_gradient_smoothing_reasons(const TsvTable& pub, const TsvTable& data, c
     add(out, "thesis_table4_3", reading + "_voronoi", w + " grad case2",
         "the error is the gradient operator's own smoothing error eps_grad(|k|h) of the mode sin 2pi(x+y), with "
         "no particle part left; its rate at these h is the operator's, and the published rate is out of its reach",
-        format("error/eps_grad %.4f, %.4f at the rate levels; rate of eps_grad %.2f, reproduced %.2f (published %s)",
+        format_text("error/eps_grad %.4f, %.4f at the rate levels; rate of eps_grad %.2f, reproduced %.2f (published %s)",
                q1, q2, re, rr, published.at(w).c_str()),
         own && out_of_reach, false);
   }
@@ -211,7 +198,7 @@ void add_interpolant_smoothing_reasons(const TsvTable& pub, const TsvTable& data
         "the published rate is the order of the interpolant's smoothing part (closed form for v = X^4 + Y^4); at "
         "the rate levels that part is a small share of the measured error, which is the particle part, so the "
         "two-level rate measures how fast the particle part shrinks",
-        format("smoothing part / error %.3f at 2^-%d, %.3f at 2^-%d; rate of the smoothing part %.2f, reproduced "
+        format_text("smoothing part / error %.3f at 2^-%d, %.3f at 2^-%d; rate of the smoothing part %.2f, reproduced "
                "%.2f (published %s)",
                q1, levels.first, q2, levels.second, rs, rr, published.at(w).c_str()),
         ok, false);
@@ -231,13 +218,13 @@ void add_heat_mode_reasons(const std::string& table, const std::string& slice, c
                           r.ratio_fine >= kModeRatioLow && r.ratio_fine <= kModeRatioHigh &&
                           std::fabs(r.predicted - r.reproduced) <= tol;
     const bool restores = r.cell && std::fabs(*r.cell - p) <= tol;
-    const std::string cell = r.cell ? format("%.2f", *r.cell) : "not run";
+    const std::string cell = r.cell ? format_text("%.2f", *r.cell) : "not run";
     add(out, table, slice, r.key,
-        format("the error is the exact solution's one Fourier mode after K theta-steps at the discrete decay rate "
+        format_text("the error is the exact solution's one Fourier mode after K theta-steps at the discrete decay rate "
                "mu(1+delta)(1-eps): time step, smoothing error eps and the volume mismatch delta of (A.10), %+.2f%% "
                "and %+.2f%% at the rate levels",
                100 * r.mismatch_coarse, 100 * r.mismatch_fine),
-        format("measured/predicted %.3f, %.3f; rate predicted %.2f, reproduced %.2f; without the mismatch the model "
+        format_text("measured/predicted %.3f, %.3f; rate predicted %.2f, reproduced %.2f; without the mismatch the model "
                "gives %.2f; with V_i = dx^2 measured %s (published %s)",
                r.ratio_coarse, r.ratio_fine, r.predicted, r.reproduced, r.no_mismatch,
                cell.c_str(), it->second.c_str()),

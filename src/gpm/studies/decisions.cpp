@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gpm/error.hpp"
+#include "gpm/io/text_format.hpp"
 #include "gpm/geometry/domain.hpp"
 #include "gpm/operators/norms.hpp"
 #include "gpm/operators/testfunctions.hpp"
@@ -25,20 +26,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// printf into a string: the evidence prints its numbers as the report shows them (%.2f for a
-// rate, %.3e for an error), whatever their length.
-__attribute__((format(printf, 1, 2))) std::string format(const char* f, ...) {
-  va_list ap, ap2;
-  va_start(ap, f);
-  va_copy(ap2, ap);
-  const int n = std::vsnprintf(nullptr, 0, f, ap);
-  va_end(ap);
-  std::string s(static_cast<std::size_t>(n) + 1, '\0');
-  std::vsnprintf(s.data(), s.size(), f, ap2);
-  va_end(ap2);
-  s.resize(static_cast<std::size_t>(n));
-  return s;
-}
 
 // A cell as a number where one is needed for a comparison or a sum: "NA" (rate_table's not
 // computed) counts 0, so a mean over a table's rows is over all of them.
@@ -78,7 +65,7 @@ std::string span(const TsvTable& r, const std::string& col, double theta) {
     if (n++ == 0 || v < lo) lo = v;
     if (n == 1 || v > hi) hi = v;
   }
-  return n ? format("%.2f to %.2f", lo, hi) : "none";
+  return n ? format_text("%.2f to %.2f", lo, hi) : "none";
 }
 
 // Mean |reproduced − published| over every row of a joined table.
@@ -108,7 +95,7 @@ void time_step_question(const std::string& store, const std::string& pub_dir, Ts
           span(f, "published", 1) + "); theta=1/2 " + span(f, "reproduced", 0.5) + " and " +
           span(e, "reproduced", 0.5) + " (published " + span(f, "published", 0.5) + ").";
     const double a = mean_distance(f), b = mean_distance(e);
-    verdict = format("at levels %s the closer reading is %s (mean |rate - published| %.2f against %.2f)",
+    verdict = format_text("at levels %s the closer reading is %s (mean |rate - published| %.2f against %.2f)",
                      shown.c_str(), b < a ? "dt = dt0" : "dt = T/K", b < a ? b : a, b < a ? a : b);
   }
   // The same set-up with V_i = dx^2 (the volume mismatch that sets Table 4.4's rates removed).
@@ -128,7 +115,7 @@ void time_step_question(const std::string& store, const std::string& pub_dir, Ts
   std::string k;
   for (int l = 5; l <= 9; ++l)
     if (steps.count(std::to_string(l)))
-      k += format("%s2^-%d: %s", k.empty() ? "" : ", ", l, steps[std::to_string(l)].c_str());
+      k += format_text("%s2^-%d: %s", k.empty() ? "" : ", ", l, steps[std::to_string(l)].c_str());
   out.add_row({"Table 4.7 (dt = 0.5h, T = 0.1): dt = T/K with K = ceil(T/dt0) (the thesis defines dt = T/K), or "
                "dt = dt0 as prescribed",
                ev + " Steps K under dt = T/K: " + k + ".",
@@ -178,7 +165,7 @@ void poisson_volume_question(const std::string& store, const std::string& pub_di
   };
   for (const std::string r : {"h10", "h15"}) {
     if (!rules.count(r)) continue;
-    std::string ev = format(
+    std::string ev = format_text(
         "error / |(V/dx^2)(1 - eps) - 1| over the weights and levels 2^-7..2^-9: plain grid %.2f to %.2f, "
         "jittered grids %.2f to %.2f; volume mismatch V/dx^2 - 1 of (A.10): %+.2f%% (2^-7), %+.2f%% (2^-8), "
         "%+.2f%% (2^-9).",
@@ -194,12 +181,12 @@ void poisson_volume_question(const std::string& store, const std::string& pub_di
       for (const char* v : {"seed1", "plain", "seed1_cell", "plain_cell"}) {
         auto e8 = err.find({r, w, "8", v}), e9 = err.find({r, w, "9", v});
         if (e8 == err.end() || e9 == err.end()) continue;
-        line += format(" %s %.2f", v, two_level_rate(at(h, std::pair<std::string, std::string>{r, "8"}), e8->second,
+        line += format_text(" %s %.2f", v, two_level_rate(at(h, std::pair<std::string, std::string>{r, "8"}), e8->second,
                                                      at(h, std::pair<std::string, std::string>{r, "9"}), e9->second));
       }
       if (line.empty()) continue;
       auto p = published.find({r, w});
-      ev += format(" %s, rates 2^-8/2^-9:%s (published %s).", w.c_str(), line.c_str(),
+      ev += format_text(" %s, rates 2^-8/2^-9:%s (published %s).", w.c_str(), line.c_str(),
                    p == published.end() ? "" : p->second.c_str());
     }
     out.add_row({"Table 4.4, " + r + ": the volumes (A.10) on the grid G_dx", ev,
@@ -259,17 +246,17 @@ void imoto_smoothing_question(const std::string& store, const std::string& pub_d
       pred[l] = std::fabs((1 + delta) * (1 - eps[l]) - 1);
       auto shown = [&](const char* v, const char* none) {
         auto c = cell(l, v);
-        return c ? format("%.3e", *c) : std::string(none);
+        return c ? format_text("%.3e", *c) : std::string(none);
       };
-      ev += format(" 2^-%d: plain %s, predicted %.3e (eps %.3e, delta %+.2e); seeds %s %s %s;", l,
+      ev += format_text(" 2^-%d: plain %s, predicted %.3e (eps %.3e, delta %+.2e); seeds %s %s %s;", l,
                    shown("plain", "not computed").c_str(), pred[l], eps[l], delta, shown("seed1", "-").c_str(),
                    shown("seed2", "-").c_str(), shown("seed3", "-").c_str());
     }
     std::string r = " rates 2^-11/2^-12:";
     for (const char* v : {"seed1", "seed2", "seed3", "plain"})
-      if (cell(11, v) && cell(12, v)) r += format(" %s %.2f", v, two_level_rate(h[11], *cell(11, v), h[12], *cell(12, v)));
+      if (cell(11, v) && cell(12, v)) r += format_text(" %s %.2f", v, two_level_rate(h[11], *cell(11, v), h[12], *cell(12, v)));
     if (h.count(11) && h.count(12))
-      r += format(", predicted (plain) %.2f, eps alone %.2f (published %s).",
+      r += format_text(", predicted (plain) %.2f, eps alone %.2f (published %s).",
                   two_level_rate(h[11], pred[11], h[12], pred[12]), two_level_rate(h[11], eps[11], h[12], eps[12]),
                   pubrate.c_str());
     out.add_row({"Imoto Table 1, " + w + " at m = 5: smoothing, volume mismatch and particles", ev + r,
@@ -313,7 +300,7 @@ void imoto_where_question(const std::string& store, TsvTable& out) {
     if (nj + np == 0) continue;
     std::string lv;
     for (int l = 1; l <= 20; ++l)
-      if (levels.count(l)) lv += format("%s%d", lv.empty() ? " 2^-" : ", 2^-", l);
+      if (levels.count(l)) lv += format_text("%s%d", lv.empty() ? " 2^-" : ", 2^-", l);
     int n = 0;
     double dev = 0;
     for (auto& [k, x] : e) {
@@ -324,7 +311,7 @@ void imoto_where_question(const std::string& store, TsvTable& out) {
     }
     out.add_row(
         {"Imoto Table 1, " + w + " at m = 5: where the maximum sits",
-         format("jittered runs (%d, levels%s): the largest error sits %.1f h to %.1f h inside the boundary of Omega; "
+         format_text("jittered runs (%d, levels%s): the largest error sits %.1f h to %.1f h inside the boundary of Omega; "
                 "plain grid (%d runs): its maximum lies within %.2f h of the boundary (it is attained along whole "
                 "lines where |Lap u| is largest, so its place is not informative); the runs reproduce %d stored "
                 "errors to %.1e (relative)",
@@ -352,7 +339,7 @@ void readings_question(const TsvTable& score, TsvTable& out) {
     double g = 0;  // reproduced: agrees, non-convergence, seed band or a checked reason
     for (const char* c : {"agrees", "non_convergence", "in_seed_band", "checked_reason"})
       g += score.number(i, score.require_column(c));
-    ev[t] += format(" %s: %lld of %lld reproduced (%lld not yet computed);", score.text(i, cl).c_str(),
+    ev[t] += format_text(" %s: %lld of %lld reproduced (%lld not yet computed);", score.text(i, cl).c_str(),
                     static_cast<long long>(g), static_cast<long long>(score.number(i, cr)),
                     static_cast<long long>(score.number(i, cn)));
     if (!n.count(t)) order.push_back(t);
@@ -394,7 +381,7 @@ std::string omega_h_level(int k) {
     E += 1 - (1 - px) * (1 - py);
   }
   const double nd = static_cast<double>(n);
-  return format("2^-%d: N = %lld in the square, %lld in the rounded neighbourhood; %.0f expected to leave; volume "
+  return format_text("2^-%d: N = %lld in the square, %lld in the rounded neighbourhood; %.0f expected to leave; volume "
                 "mismatch %+.3f%% mirrored, %+.3f%% dropped;",
                 k, n, rounded, E, 100 * (A / (nd * dx * dx) - 1), 100 * (A / ((nd - E) * dx * dx) - 1));
 }

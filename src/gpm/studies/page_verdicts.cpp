@@ -8,24 +8,12 @@
 #include <sstream>
 
 #include "gpm/error.hpp"
+#include "gpm/io/text_format.hpp"
 
 namespace gpm {
 
 namespace {
 
-// printf into a string: the evidence prints its numbers as the report shows them (%.3g, …).
-__attribute__((format(printf, 1, 2))) std::string format(const char* f, ...) {
-  va_list ap, ap2;
-  va_start(ap, f);
-  va_copy(ap2, ap);
-  const int n = std::vsnprintf(nullptr, 0, f, ap);
-  va_end(ap);
-  std::string s(static_cast<std::size_t>(n) + 1, '\0');
-  std::vsnprintf(s.data(), s.size(), f, ap2);
-  va_end(ap2);
-  s.resize(static_cast<std::size_t>(n));
-  return s;
-}
 
 // The words of `s` split at runs of blanks ("rates thesis_table4_1" → rule, argument).
 std::vector<std::string> words(const std::string& s) {
@@ -127,7 +115,7 @@ PageVerdict data_rule_verdict(const std::string& rule, const PageDataReader& dat
     long long h = 0;
     for (std::size_t i = 0; i < t.rows.size(); ++i) h += t.number(i, t.require_column("holds")) == 1;
     const long long n = static_cast<long long>(t.rows.size());
-    return {all_hold(h, n), format("%lld of %lld printed coefficients hold", h, n)};
+    return {all_hold(h, n), format_text("%lld of %lld printed coefficients hold", h, n)};
   }
   if (kind == "bounds") {
     const TsvTable t = load("koba_sato_bounds_summary.tsv");
@@ -139,7 +127,7 @@ PageVerdict data_rule_verdict(const std::string& rule, const PageDataReader& dat
     }
     if (n == 0) return kNotYet;
     return {v == 0 ? "reproduced" : "published value wrong",
-            format("bound below the measured error in %lld of %lld cases (smallest bound/error %.3g)",
+            format_text("bound below the measured error in %lld of %lld cases (smallest bound/error %.3g)",
                    static_cast<long long>(v), static_cast<long long>(n), m)};
   }
   if (kind == "covering") {
@@ -149,7 +137,7 @@ PageVerdict data_rule_verdict(const std::string& rule, const PageDataReader& dat
     for (std::size_t i = 0; i < t.rows.size(); ++i) h += t.number(i, t.require_column("claim_holds"));
     const long long n = static_cast<long long>(t.rows.size());
     return {h == static_cast<double>(n) ? "reproduced" : "published value wrong",
-            format("the bound holds on %lld of %lld (level, seed) distributions", static_cast<long long>(h), n)};
+            format_text("the bound holds on %lld of %lld (level, seed) distributions", static_cast<long long>(h), n)};
   }
   if (kind == "fig3") {
     const TsvTable t = load("imoto_figs_fig3_discs.tsv");
@@ -159,7 +147,7 @@ PageVerdict data_rule_verdict(const std::string& rule, const PageDataReader& dat
     if (!rn.count("uniform")) return kNotYet;
     const double u = rn["uniform"], nu = rn.count("non-uniform") ? rn["non-uniform"] : 0;
     return {u < nu ? "reproduced" : "not reproduced",
-            format("r_N = %.4g (uniform) against %.4g (non-uniform), same N", u, nu)};
+            format_text("r_N = %.4g (uniform) against %.4g (non-uniform), same N", u, nu)};
   }
   if (kind == "count") {
     const TsvTable t = load("core_voronoi.tsv");
@@ -169,7 +157,7 @@ PageVerdict data_rule_verdict(const std::string& rule, const PageDataReader& dat
     if (!row) return kNotYet;
     const int nc = t.require_column("N");
     return {t.number(*row, nc) == 1521 ? "reproduced" : "not reproduced",
-            format("N = %s at Δx = 2⁻⁵ (printed: 1521)", t.text(*row, nc).c_str())};
+            format_text("N = %s at Δx = 2⁻⁵ (printed: 1521)", t.text(*row, nc).c_str())};
   }
   if (kind == "weights") {
     // Per name, the norm of the printed formula where it fails normalization, and the norm of
@@ -186,8 +174,8 @@ PageVerdict data_rule_verdict(const std::string& rule, const PageDataReader& dat
       std::string shown = name;  // "cubic bspline": a name a table cell can wrap between words
       for (char& c : shown)
         if (c == '_') c = ' ';
-      if (printed.count(name)) wrong += format("%s%s %.4g", wrong.empty() ? "" : ", ", shown.c_str(), printed[name]);
-      if (corrected.count(name)) ok += format("%s%s %.6g", ok.empty() ? "" : ", ", shown.c_str(), corrected[name]);
+      if (printed.count(name)) wrong += format_text("%s%s %.4g", wrong.empty() ? "" : ", ", shown.c_str(), printed[name]);
+      if (corrected.count(name)) ok += format_text("%s%s %.6g", ok.empty() ? "" : ", ", shown.c_str(), corrected[name]);
     }
     if (ok.empty()) return kNotYet;
     return {wrong.empty() ? "reproduced" : "published value wrong",
