@@ -68,8 +68,12 @@ deps:
 $(BUILD)/CMakeCache.txt: | deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 
+# The build also writes the studies' make rules from the study registry (gpm study --make):
+# every list of studies below comes from there, none is typed in mk/.
+STUDIES_MK := $(BUILD)/studies.mk
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
+	$(BUILD)/gpm study --make $(STUDIES_MK)
 
 # --- tests ------------------------------------------------------------------------------
 test: build
@@ -81,15 +85,23 @@ test-paper: build
 	bash tests/paper/check_verdicts.sh $(BUILD) .
 
 # --- studies, figures, report sections -------------------------------------------------
-# Each study registers itself in mk/<study>.mk: its data rule(s), appending to STUDIES
-# (data files), FIGURES (figures/out/*.svg with their prerequisites).  What else a new study
-# touches (catalog, registry, published values, store check) is listed in the README,
-# "Adding a study".
+# The studies' data and rate-table rules, and the lists STUDIES_<group>, STUDY_FILES, … are
+# generated from the study registry (src/gpm/studies/registry.cpp) into build/studies.mk by
+# `make build`; mk/*.mk add what else each part of the report needs (figures, diagnostics),
+# appending to DATAFILES and FIGFILES.  Adding a study: the README, "How to add".
 # A data file is rebuilt only when its program changed (make's timestamps); inside a
 # program, levels already computed with the same parameters are read back, not redone.
 DATAFILES :=
 FIGFILES :=
 , := ,
+# Goals that need no study rule may run before the first build; any other needs them.
+ifeq ($(wildcard $(STUDIES_MK)),)
+ifneq ($(filter-out all report pdf test test-paper bench plan deps build clean help,$(or $(MAKECMDGOALS),all)),)
+$(error $(STUDIES_MK) is missing: run `make build` first (it writes the studies' make rules))
+endif
+else
+include $(STUDIES_MK)
+endif
 include $(sort $(wildcard mk/*.mk))
 
 # Figures: gnuplot scripts read data/<profile>, write figures/out/<name>.svg.

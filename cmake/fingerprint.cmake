@@ -5,7 +5,8 @@
 # numerics source of the core (src/gpm, without the files that only parse options, print
 # progress, plan costs, keep the store, judge the stored rates against the published ones or
 # diagnose why they differ (checked_reasons and the heat tables' one-mode model it uses read
-# the store and write none of it): no stored number depends on those), of the compiler and
+# the store and write none of it; the study registry only names studies, prices them and
+# writes make rules): no stored number depends on those), of the compiler and
 # its flags (FLAGS) and of the program's own source.
 # A data row carries the fingerprint of the program that computed it (see src/gpm/studies/store.hpp):
 # a row is reused as current only under the same fingerprint, otherwise after a recorded
@@ -15,7 +16,7 @@
 # Inputs: -DSRC=<source dir> -DOUT=<generated .cpp> -DFLAGS=<compiler, version, flags>
 cmake_minimum_required(VERSION 3.22)
 set(io_only args command_line error progress profile cost_model study_plan provenance store runner
-  rates setup_identification verdicts text_format checked_reasons heat_mode_model page_verdicts decisions)
+  rates setup_identification verdicts text_format checked_reasons heat_mode_model page_verdicts decisions registry)
 file(GLOB_RECURSE core ${SRC}/src/gpm/*.cpp ${SRC}/src/gpm/*.hpp)
 list(SORT core)
 set(core_text "")

@@ -79,7 +79,7 @@ $(FIGOUT)/store_thesis_fig4_3.svg: $(STORE)/thesis_table4_1.tsv figures/thesis_e
 $(FIGOUT)/store_thesis_fig4_5.svg: $(STORE)/thesis_table4_2.tsv figures/thesis_errors.gp tables/published/thesis_table4_2_long.tsv
 $(FIGOUT)/store_thesis_fig4_6.svg $(FIGOUT)/store_thesis_fig4_7.svg: $(STORE)/thesis_table4_3.tsv figures/thesis_errors.gp \
     tables/published/thesis_table4_3_long.tsv
-$(FIGOUT)/store_thesis_heat_readings.svg: $(foreach t,4_5 4_6 4_7,$(STORE)/thesis_table$(t).tsv $(STORE)/thesis_table$(t)_h15.tsv)
+$(FIGOUT)/store_thesis_heat_readings.svg: $(foreach f,$(STUDY_FILES_heat),$(STORE)/$(f).tsv)
 $(FIGOUT)/store_imoto_fig5.svg: $(STORE)/imoto_fig5_table1.tsv tables/published/imoto_table1.tsv
 $(FIGOUT)/store_%.svg: figures/%.gp figures/style.gp
 	@mkdir -p $(FIGOUT)

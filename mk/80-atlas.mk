@@ -2,7 +2,7 @@
 # the studies' own runs recorded (no separate timing).  One atlas + reading per study:
 #   data/<profile>/atlas_<study>.tsv          rows (task, configuration, level, error, time, pairs)
 #   data/<profile>/atlas_<study>_reading.tsv  per target error the cheapest configuration seen
-ATLAS_STUDIES := imoto thesis_table4_1 thesis_table4_2 thesis_table4_3 poisson heat
+ATLAS_STUDIES := imoto $(STUDIES_truncation) poisson heat
 DATAFILES += $(foreach s,$(ATLAS_STUDIES),$(DATA)/atlas_$(s).tsv $(DATA)/atlas_$(s)_reading.tsv)
 FIGFILES  += $(foreach s,$(ATLAS_STUDIES),$(FIGOUT)/atlas_$(s).svg)
 
@@ -17,7 +17,7 @@ $(DATA)/atlas_imoto.tsv: $(BUILD)/atlas $(DATA)/imoto_fig5_table1.tsv
 
 # Truncation tables: time = the fused pass of the (h reading, volumes, level) slice, shared by
 # every weight, operator and case of the slice, plus the Voronoi volumes where used.
-ATLAS_TRUNC := $(foreach t,4_1 4_2 4_3,$(DATA)/atlas_thesis_table$(t).tsv)
+ATLAS_TRUNC := $(foreach s,$(STUDIES_truncation),$(DATA)/atlas_$(s).tsv)
 $(ATLAS_TRUNC): $(DATA)/atlas_thesis_table4_%.tsv: $(BUILD)/atlas $(DATA)/thesis_table4_%.tsv
 	$< --study thesis_table4_$* --data $(DATA)/thesis_table4_$*.tsv --task operator,function \
 	  --config volumes,h_reading,weight --time time_s+voronoi_s --pairs pairs \
@@ -32,7 +32,7 @@ $(DATA)/atlas_poisson.tsv: $(BUILD)/atlas $(DATA)/thesis_table4_4.tsv
 	  --pairs-note "nonzeros of the assembled matrix (pairs i$(,)j within h)" \
 	  $(call atlas_out,poisson)
 
-HEAT_DATA := $(foreach t,4_5 4_6 4_7,$(DATA)/thesis_table$(t).tsv)
+HEAT_DATA := $(foreach s,$(STUDIES_heat),$(DATA)/$(s).tsv)
 $(DATA)/atlas_heat.tsv: $(BUILD)/atlas $(HEAT_DATA)
 	$< --study heat --data $(subst $(eval) ,$(,),$(strip $(HEAT_DATA))) \
 	  --config weight,theta,meta:dt_nominal --time seconds --filter blew_up=no \
@@ -43,6 +43,6 @@ $(DATA)/atlas_heat.tsv: $(BUILD)/atlas $(HEAT_DATA)
 $(foreach s,$(ATLAS_STUDIES),$(DATA)/atlas_$(s)_reading.tsv): $(DATA)/atlas_%_reading.tsv: $(DATA)/atlas_%.tsv ;
 
 $(FIGOUT)/atlas_imoto.svg: figures/atlas_imoto.gp figures/style.gp $(DATA)/atlas_imoto.tsv
-$(foreach t,4_1 4_2 4_3,$(FIGOUT)/atlas_thesis_table$(t).svg): $(FIGOUT)/atlas_thesis_table4_%.svg: figures/atlas_thesis_table4_%.gp figures/atlas_truncation.gp figures/style.gp $(DATA)/atlas_thesis_table4_%.tsv
+$(foreach s,$(STUDIES_truncation),$(FIGOUT)/atlas_$(s).svg): $(FIGOUT)/atlas_thesis_table4_%.svg: figures/atlas_thesis_table4_%.gp figures/atlas_truncation.gp figures/style.gp $(DATA)/atlas_thesis_table4_%.tsv
 $(FIGOUT)/atlas_poisson.svg: figures/atlas_poisson.gp figures/style.gp $(DATA)/atlas_poisson.tsv
 $(FIGOUT)/atlas_heat.svg: figures/atlas_heat.gp figures/style.gp $(DATA)/atlas_heat.tsv

@@ -4,8 +4,7 @@
 #
 #   make plan PROFILE=paper   calibrate (a few seconds), print and write data/paper/plan*.tsv;
 #                             if data files of the profile exist, compare with them
-PLAN_STUDY_DATA := $(DATA)/imoto_fig5_table1.tsv $(DATA)/core_voronoi.tsv \
-  $(foreach t,4_1 4_2 4_3 4_4 4_5 4_6 4_7 4_5_h15 4_6_h15 4_7_h15,$(DATA)/thesis_table$(t).tsv)
+PLAN_STUDY_DATA := $(foreach f,$(STUDY_FILES),$(DATA)/$(f).tsv)
 
 plan: build
 	@mkdir -p $(DATA)

@@ -33,6 +33,7 @@
 #include "gpm/operators/truncation.hpp"
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/cost_model.hpp"
+#include "gpm/studies/registry.hpp"
 #include "gpm/studies/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -111,12 +112,11 @@ void write_printed_pi3(const std::vector<std::pair<std::string, std::string>>& p
 }
 
 int body(int argc, char** argv) {
-  StudyRunner run("imoto_fig5_table1",
+  StudyRunner run(study_registry().study("imoto_fig5_table1"),
                   "imoto Sec. 5: relative l-inf errors of the interpolant, gradient and Laplacian\n"
                   "(weights Pi1-3, Grad1-3, Lap1-3; m = 1, 3, 5; v = sin(2pi(x+y)); V_i = |Omega_H|/N)\n"
                   "per level, all nine weights in one fused pass per (level, m).  Data of Figure 5\n"
-                  "and Table 1.  Finished (level, m) units are cached in --out.",
-                  kStudy.levels.help());
+                  "and Table 1.  Finished (level, m) units are cached in --out.");
   Args& args = run.args();
   args.opt("jitter", "0.25", "jitter amplitude in units of dx, in [0, 0.5); 0 = the plain grid,\n"
                              "  whose error is the smoothing part without particle noise")
@@ -126,7 +126,7 @@ int body(int argc, char** argv) {
                                  "  delta-free error (with uniform V every operator scales by |Omega_H|/(N dx^2))");
   run.parse(argc, argv);
   const Profile profile = run.profile();
-  const std::vector<int> levels = run.levels(kStudy.levels.quick, kStudy.levels.paper);
+  const std::vector<int> levels = run.levels();
   const uint64_t seed = run.seed();
   const double jitter = args.num("jitter");
   if (!(jitter >= 0 && jitter < 0.5))
@@ -157,7 +157,7 @@ int body(int argc, char** argv) {
       {"Pi3_constant", "6/pi (printed 5/pi does not normalize)"},
       {"time_s_note", "wall time of the whole (level, m) unit: particles, kernel, errors"},
       {"smoothing_part", "interpolant only: (M2/4)*8pi^2*h^2, M2 = int |x|^2 w dx (no particles)"}};
-  LevelCache& cache = run.open(params, kStudy.columns, 2);
+  LevelCache& cache = run.open(params, 2);
   cache.table().set("profile", profile_name(profile));
 
   // Work still to do, for the overall ETA: the plan's pair estimate (cost_model.hpp).

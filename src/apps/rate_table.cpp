@@ -27,6 +27,8 @@ int body(int argc, char** argv) {
   a.opt("data", "", "the study's data file (rows: key columns, level, h, error)");
   a.opt("published", "", "published values, long format, with the key columns");
   a.opt("key", "", "comma-separated key columns shared by data and published files");
+  a.opt("where", "", "keep only the data rows with these cells, e.g. h_reading=printed,volumes=voronoi\n"
+                     "  (one reading of a study file); default: every row");
   a.opt("level", "level", "level column of the data file (Δx = 2^-level)");
   a.opt("x", "h", "abscissa of the rate (log e against log x)");
   a.opt("y", "rel_error", "error column");
@@ -41,7 +43,16 @@ int body(int argc, char** argv) {
   const double tol = a.tolerance("tolerance");
   const auto keys = a.list("key");
 
-  const TsvTable data = TsvTable::load(a.str("data"));
+  std::vector<std::pair<std::string, std::string>> where;
+  for (const std::string& w : a.list("where")) {
+    const auto eq = w.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("--where '" + w + "' is not COLUMN=VALUE");
+    where.emplace_back(w.substr(0, eq), w.substr(eq + 1));
+  }
+  const TsvTable data = rows_where(TsvTable::load(a.str("data")), where);
+  if (!where.empty() && data.rows.empty())
+    throw InputError("--where " + a.str("where") + ": no row of " + a.str("data") + " matches");
   const TsvTable pub = TsvTable::load(a.str("published"));
   RateJoin join;
   join.keys = keys;

@@ -29,6 +29,7 @@
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/cost_model.hpp"
 #include "gpm/studies/profile.hpp"
+#include "gpm/studies/registry.hpp"
 #include "gpm/studies/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -36,13 +37,13 @@ using namespace gpm;
 
 namespace {
 
-// The levels per profile and the weights: poisson_table() and pde_weights() (catalog.hpp).
+// The study's levels per profile and columns are its registry entry's (registry.hpp, from
+// poisson_table()); the weights are pde_weights() (catalog.hpp).
 
 int body(int argc, char** argv) {
-  StudyRunner run("thesis_table4_4",
+  StudyRunner run(study_registry().study("thesis_table4_4"),
                   "Discrete Poisson problem (thesis §4.2): relative l-infinity errors per weight,\n"
-                  "level and reading of h (Figure 4.8, Table 4.4).",
-                  poisson_table().levels.help());
+                  "level and reading of h (Figure 4.8, Table 4.4).");
   run.args()
       .opt("tol", "1e-10", "CG relative residual on the symmetric form")
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
@@ -55,7 +56,7 @@ int body(int argc, char** argv) {
   const double tol = run.args().tolerance("tol");
   const auto storage = parse_laplacian_storage(run.args().str("storage"));
   const double max_bytes = run.args().positive("max-gb") * 1e9;
-  const std::vector<int> levels = run.levels(poisson_table().levels.quick, poisson_table().levels.paper);
+  const std::vector<int> levels = run.levels();
   require_pde_levels_fit_memory(levels, pde_h_rules(), storage, max_bytes);
 
   // --- The data file: one row per (reading of h, weight, level). ---------------------------
@@ -65,7 +66,7 @@ int body(int argc, char** argv) {
        {"function", "sin2pi"}, {"volumes", volumes_text},
        {"error", "max_Omega|u-U| / max_Omega|u|"},
        {"h10", pde_h_formula("h10")}, {"h15", pde_h_formula("h15")}},
-      poisson_table().columns, 3);
+      3);
   const TestFunction& u = test_function("sin2pi");
   const Domain dom;
   for (int k : levels) {
@@ -87,7 +88,7 @@ int body(int argc, char** argv) {
           if (p.in_omega[i]) err = std::max(err, std::fabs(d.g[i] - r.U[i]));
         const double secs =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        TsvRow row = run.row();  // poisson_table().columns, by name
+        TsvRow row = run.row();  // the entry's columns (poisson_table().columns), by name
         row["h_rule"] = rule, row["weight"] = wname, row["level"] = fmt(k), row["dx"] = fmt(dx);
         row["h"] = fmt(h), row["N"] = fmt(p.size()), row["N_omega"] = fmt(L.n_unknowns());
         row["nnz"] = fmt(static_cast<long long>(L.nnz()));

@@ -49,6 +49,7 @@
 #include "gpm/studies/heat_tables.hpp"
 #include "gpm/studies/page_verdicts.hpp"
 #include "gpm/studies/profile.hpp"
+#include "gpm/studies/registry.hpp"
 #include "gpm/studies/rates.hpp"
 #include "gpm/studies/setup_identification.hpp"
 #include "gpm/studies/store.hpp"
@@ -664,15 +665,17 @@ int cmd_decisions(int argc, char** argv) {
   return 0;
 }
 
-// gpm study: the catalog (catalog.hpp) on the command line.  `--list` prints every study
-// with its document item and levels; `gpm study NAME [options]` runs the study's program
+// gpm study: the study registry (registry.hpp) on the command line.  `--list` prints every
+// study with its document item and levels; `--make FILE` writes the studies' make rules
+// (make build does, to build/studies.mk); `gpm study NAME [options]` runs the study's program
 // (from the directory of this gpm) with the study's fixed arguments and the options given,
 // so it takes the program's --profile, --levels, --out, --help as they are.
 int cmd_study(int argc, char** argv) {
   const std::string first = argc >= 3 ? argv[2] : "";
   if (first == "--help" || first == "-h") {
-    std::cout << "usage: gpm study --list | gpm study --readings | gpm study NAME [options of its program]\n"
-                 "  --list      every catalog study: document item, program, levels per profile\n"
+    std::cout << "usage: gpm study --list | --readings | --make FILE | NAME [options of its program]\n"
+                 "  --list      every registered study: document item, program, levels per profile\n"
+                 "  --make FILE the studies' make rules and lists (make build writes build/studies.mk)\n"
                  "  --readings  the heat tables' set-up readings: name, h rule, volumes, time step,\n"
                  "              store file suffix (thesis_heat's {reading})\n"
                  "  NAME        runs the study's program with its fixed arguments, then the\n"
@@ -690,7 +693,7 @@ int cmd_study(int argc, char** argv) {
       for (int v : k) s.push_back(fmt(v));
       return join(s, ",");
     };
-    for (auto& e : study_catalog()) {
+    for (auto& e : study_registry()) {
       std::vector<std::string> command = {e.program};
       command.insert(command.end(), e.fixed_args.begin(), e.fixed_args.end());
       t.add_row({e.name, e.item, join(command, " "), levels(e.levels.quick),
@@ -709,7 +712,12 @@ int cmd_study(int argc, char** argv) {
     print(t);
     return 0;
   }
-  const CatalogEntry& e = catalog_entry(first);
+  if (first == "--make") {
+    if (argc != 4) throw InputError("gpm study --make: give one output file (e.g. build/studies.mk)");
+    save_text(argv[3], make_rules(study_registry()));
+    return 0;
+  }
+  const RegisteredStudy& e = study_registry().study(first);
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe");
   const std::string program = (self.parent_path() / e.program).string();
   if (access(program.c_str(), X_OK) != 0)

@@ -1,5 +1,5 @@
-// The study catalog (catalog.hpp): one entry per study, levels a program can run, and the
-// definitions the programs and the plan read are the ones listed.
+// The studies as the registry lists them (registry.hpp, the catalog of `gpm study`): one
+// entry per study, levels a program can run, and the definitions the programs read.
 #include <algorithm>
 #include <set>
 
@@ -8,6 +8,7 @@
 #include "gpm/error.hpp"
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/heat_tables.hpp"
+#include "gpm/studies/registry.hpp"
 #include "gpm/studies/thesis_truncation.hpp"
 
 using namespace gpm;
@@ -15,7 +16,7 @@ using namespace gpm;
 TEST_CASE("Catalog: unique names, ascending levels, the quick profile inside the paper's",
           "[catalog]") {
   std::set<std::string> names;
-  const auto c = study_catalog();
+  const auto& c = study_registry().studies();
   REQUIRE(c.size() == 9);  // core_voronoi, imoto, Tables 4.1–4.7
   for (const auto& e : c) {
     INFO(e.name);
@@ -32,16 +33,16 @@ TEST_CASE("Catalog: unique names, ascending levels, the quick profile inside the
 }
 
 TEST_CASE("Catalog: the entries are the studies' own definitions", "[catalog]") {
-  CHECK(catalog_entry("imoto_fig5_table1").levels.paper == imoto_study().levels.paper);
-  CHECK(catalog_entry("thesis_table4_4").levels.quick == poisson_table().levels.quick);
-  CHECK(catalog_entry("thesis_table4_6").fixed_args ==
+  CHECK(study_registry().study("imoto_fig5_table1").levels.paper == imoto_study().levels.paper);
+  CHECK(study_registry().study("thesis_table4_4").levels.quick == poisson_table().levels.quick);
+  CHECK(study_registry().study("thesis_table4_6").fixed_args ==
         std::vector<std::string>{"--table", "4.6"});
-  CHECK(catalog_entry("thesis_table4_6").levels.paper == heat_table("4.6").paper);
-  CHECK(catalog_entry("thesis_table4_2").levels.paper ==
+  CHECK(study_registry().study("thesis_table4_6").levels.paper == heat_table("4.6").paper);
+  CHECK(study_registry().study("thesis_table4_2").levels.paper ==
         thesis_table_spec("thesis_table4_2").paper_levels);
   CHECK(imoto_study().requests().size() == 9);
   CHECK(voronoi_study().seeds_option() == "1,2,3");
   CHECK(poisson_table().levels.help() == "quick (levels 5-7) or paper (levels 5-9)");
-  CHECK_THROWS_WITH(catalog_entry("table4_8"),
-                    Catch::Contains("unknown study 'table4_8'; valid: core_voronoi"));
+  CHECK_THROWS_WITH(study_registry().study("table4_8"),
+                    Catch::Contains("unknown study 'table4_8'; valid: imoto_fig5_table1, thesis_table4_1"));
 }

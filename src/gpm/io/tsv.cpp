@@ -12,6 +12,7 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -180,7 +181,9 @@ void check_output_path(const std::string& option, const std::string& path) {
                      std::strerror(errno) + ")");
 }
 
-void TsvTable::save(const std::string& path) const {
+namespace {
+// The atomic write behind every output: `body` into NAME.tmp.PID, then rename over NAME.
+void save_atomically(const std::string& path, const std::function<void(std::ostream&)>& body) {
   check_output_path("output", path);
   const fs::path p(path);
   if (p.has_parent_path()) fs::create_directories(p.parent_path());
@@ -192,7 +195,7 @@ void TsvTable::save(const std::string& path) const {
     fs::remove(tmp, gone);
     std::ofstream out(tmp, std::ios::trunc);
     if (!out) throw std::runtime_error("cannot create " + tmp + ": " + std::strerror(errno));
-    write(out);
+    body(out);
     out.close();  // flushes: a full disk shows here
     if (!out) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
     std::error_code ec;
@@ -203,6 +206,15 @@ void TsvTable::save(const std::string& path) const {
     fs::remove(tmp, ec);
     throw;
   }
+}
+}  // namespace
+
+void TsvTable::save(const std::string& path) const {
+  save_atomically(path, [this](std::ostream& out) { write(out); });
+}
+
+void save_text(const std::string& path, const std::string& text) {
+  save_atomically(path, [&text](std::ostream& out) { out << text; });
 }
 
 TsvTable TsvTable::load(const std::string& path, bool whole_rows) {

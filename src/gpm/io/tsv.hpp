@@ -88,6 +88,10 @@ struct TsvTable {
 // replaced.  An empty path passes (the caller decides whether the output is required).
 void check_output_path(const std::string& option, const std::string& path);
 
+// `text` written to `path` as TsvTable::save writes a table: atomically, parents created,
+// the same paths refused.
+void save_text(const std::string& path, const std::string& text);
+
 // Throws InputError unless every named path is distinct from the others (after resolving
 // "." and ".."), e.g. {{"--out", out}, {"--cost", cost}}; empty paths are ignored.
 void require_distinct_paths(const std::vector<std::pair<std::string, std::string>>& paths);

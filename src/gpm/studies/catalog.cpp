@@ -2,11 +2,7 @@
 
 #include <algorithm>
 
-#include "gpm/error.hpp"
 #include "gpm/io/tsv.hpp"
-#include "gpm/studies/heat_tables.hpp"
-#include "gpm/studies/store.hpp"
-#include "gpm/studies/thesis_truncation.hpp"
 
 namespace gpm {
 
@@ -83,46 +79,6 @@ std::string VoronoiStudy::seeds_option() const {
   std::vector<std::string> s;
   for (int k : seeds) s.push_back(fmt(k));
   return join(s, ",");
-}
-
-std::vector<std::string> CatalogEntry::header() const {
-  std::vector<std::string> h = columns;
-  if (level_cache)
-    for (auto& c : row_provenance_columns()) h.push_back(c);
-  return h;
-}
-
-std::vector<CatalogEntry> study_catalog() {
-  std::vector<CatalogEntry> c;
-  c.push_back({"core_voronoi", "core_voronoi", {}, "covering radius (imoto §5, thesis Ch. 4)",
-               voronoi_study().levels, voronoi_study().columns, /*level_cache=*/false});
-  c.push_back({"imoto_fig5_table1", "imoto_fig5_table1", {}, "imoto Figure 5, Table 1",
-               imoto_study().levels, imoto_study().columns});
-  for (auto& t : thesis_table_specs()) {
-    std::vector<int> quick = t.quick_printed;
-    for (int k : t.quick_scaled)
-      if (std::find(quick.begin(), quick.end(), k) == quick.end()) quick.push_back(k);
-    std::sort(quick.begin(), quick.end());
-    c.push_back({t.program, t.program, {}, "thesis " + t.table, {quick, t.paper_levels},
-                 thesis_table_columns()});
-  }
-  c.push_back({"thesis_table4_4", "thesis_table4_4", {}, "thesis Figure 4.8, Table 4.4",
-               poisson_table().levels, poisson_table().columns});
-  for (auto& t : heat_tables())
-    c.push_back({"thesis_table4_" + t.table.substr(2), "thesis_heat",
-                 {"--table", t.table}, "thesis Table " + t.table, {t.quick, t.paper},
-                 heat_columns()});
-  return c;
-}
-
-const CatalogEntry& catalog_entry(const std::string& name) {
-  static const std::vector<CatalogEntry> c = study_catalog();
-  std::string valid;
-  for (auto& e : c) {
-    if (e.name == name) return e;
-    valid += (valid.empty() ? "" : ", ") + e.name;
-  }
-  throw InputError("unknown study '" + name + "'; valid: " + valid);
 }
 
 }  // namespace gpm

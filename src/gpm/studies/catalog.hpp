@@ -1,9 +1,8 @@
-// The study catalog: what each study of the package runs, defined once.  The programs, the
-// plan (`make plan`), `gpm study` and the tests read the definitions here; the thesis'
-// truncation tables and heat tables keep their richer entries in thesis_truncation.hpp and
-// heat_tables.hpp, and study_catalog() lists them beside the rest.
-//
-// Adding a level to a study is one edit here: its program, the plan and the tests follow.
+// The studies' parameters, defined once: levels per profile, weights, orders, columns.  The
+// programs run them, and the study registry (registry.hpp) names every study with these
+// (the thesis' truncation and heat tables keep theirs in thesis_truncation.hpp and
+// heat_tables.hpp).  Adding a level to a study is one edit here: its program, the plan, make
+// and the tests follow.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -60,21 +59,5 @@ struct VoronoiStudy {
   std::string seeds_option() const;  // "1,2,3": the default of --seeds
 };
 const VoronoiStudy& voronoi_study();
-
-// One line of the catalog: a study, the program (and fixed arguments) that runs it, the
-// document item it reproduces and its levels per profile.
-struct CatalogEntry {
-  std::string name, program;
-  std::vector<std::string> fixed_args;
-  std::string item;
-  ProfileLevels levels;
-  std::vector<std::string> columns;  // the study's own columns
-  bool level_cache = true;            // written through LevelCache (store.hpp)
-  // The header of the data file its program writes: the columns, and for a cached study the
-  // provenance of each row (code, made_on, checked).
-  std::vector<std::string> header() const;
-};
-std::vector<CatalogEntry> study_catalog();
-const CatalogEntry& catalog_entry(const std::string& name);  // InputError naming the valid ones
 
 }  // namespace gpm

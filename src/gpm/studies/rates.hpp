@@ -16,6 +16,7 @@
 #pragma once
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gpm/io/tsv.hpp"
@@ -44,6 +45,11 @@ struct RateJoin {
 // Returns the rows per status.  InputError (naming the file, by TsvTable::source) for a
 // missing column, a cell that is no number, two data rows with the same key and level, or
 // levels that are not two increasing ones.
+// The rows of `data` whose cells equal every (column, value) of `where`: one slice of a study
+// file (a reading of h and volume choice) before it is joined; InputError for an unknown
+// column.
+TsvTable rows_where(const TsvTable& data, const std::vector<std::pair<std::string, std::string>>& where);
+
 std::map<std::string, int> join_rates(const TsvTable& data, const TsvTable& published,
                                       const RateJoin& join, TsvTable& out);
 

@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <sstream>
 
 #include "gpm/error.hpp"
 #include "gpm/geometry/influence_radius.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/heat_tables.hpp"
+#include "gpm/studies/rates.hpp"
+#include "gpm/studies/store.hpp"
 #include "gpm/studies/thesis_truncation.hpp"
 
 namespace gpm {
@@ -43,9 +47,33 @@ struct Rows {
 
 // --- The studies ----------------------------------------------------------------------------
 
+// An entry's identity: its catalog name (also its program's), item, make group, levels,
+// columns and the coarse levels the paper profile re-checks.
+RegisteredStudy identity(const std::string& name, const std::string& item, const std::string& group,
+                         ProfileLevels levels, std::vector<std::string> columns, std::vector<int> recheck) {
+  RegisteredStudy s;
+  s.name = s.program = name;
+  s.item = item, s.group = group, s.levels = std::move(levels), s.columns = std::move(columns);
+  s.recheck_levels = std::move(recheck);
+  return s;
+}
+
 // imoto §5: one fused pass per (level, m), nine weights.
 RegisteredStudy imoto() {
-  RegisteredStudy s{"imoto_fig5_table1", {"imoto_fig5_table1"}, {}, {}};
+  RegisteredStudy s = identity("imoto_fig5_table1", "imoto Figure 5, Table 1", "imoto", imoto_study().levels,
+                               imoto_study().columns, {5, 6, 7});
+  s.files = {{"imoto_fig5_table1", {}, {{"--printed-out", "imoto_pi3_printed"}},
+              {{"imoto_table1", "imoto_fig5_table1", {}, /*scored=*/true}}}};
+  // Seed 1 is the reproduction; seeds 2-6 and the plain grid (no jitter) show how much of a
+  // rate is one realization's particle noise; cellvol is the delta-free error (V_i = dx^2).
+  s.published = PublishedRates{"imoto_table1", "imoto_table1.tsv", {"operator", "weight", "m"}, "all", {}, false,
+                               [](const StoreReader& read) {
+                                 std::vector<StoreSlice> out;
+                                 for (const std::string v : {"all", "seed2", "seed3", "seed4", "seed5", "seed6", "plain", "cellvol"})
+                                   if (auto d = read(v == "all" ? "imoto_fig5_table1.tsv" : "imoto_fig5_table1_" + v + ".tsv"))
+                                     out.push_back({v, std::move(*d)});
+                                 return out;
+                               }};
   s.plan = [](UnitPricer& p) {
     for (int k : p.paper() ? imoto_study().levels.paper : imoto_study().levels.quick)
       for (double m : imoto_study().orders)
@@ -60,7 +88,41 @@ RegisteredStudy imoto() {
 
 // Thesis Tables 4.1–4.3: one fused pass per (h reading, volumes, level); Voronoi once per level.
 RegisteredStudy thesis_truncation(const ThesisTableSpec& t) {
-  RegisteredStudy s{t.program, {t.program}, {}, {}};
+  std::vector<int> quick = t.quick_printed;
+  for (int k : t.quick_scaled)
+    if (std::find(quick.begin(), quick.end(), k) == quick.end()) quick.push_back(k);
+  std::sort(quick.begin(), quick.end());
+  RegisteredStudy s = identity(t.program, "thesis " + t.table, "truncation", {quick, t.paper_levels},
+                               thesis_table_columns(), {5, 6, 7});
+  // One rate table per (h reading, volumes) the program runs; the printed h with Voronoi
+  // volumes is the thesis' own set-up (the scoreboard's).
+  StudyFile file{t.program, {}, {}, {}};
+  for (const char* volumes : {"voronoi", "uniform"})
+    for (HReading r : t.readings)
+      file.rates.push_back({t.program + "_rates_" + h_reading_name(r) + "_" + volumes, t.program,
+                            {{"h_reading", h_reading_name(r)}, {"volumes", volumes}},
+                            r == HReading::printed && std::string(volumes) == "voronoi"});
+  s.files = {file};
+  // Table 4.3 has two operators, so its rates are keyed by the operator too.
+  std::vector<std::string> key = {"weight", "function"};
+  for (auto& q : t.requests)
+    if (q.op != t.requests.front().op) key = {"weight", "operator", "function"};
+  // Seed 1 is the reproduction; …_seed2, …_seed3 (where stored) are other jitter
+  // realizations at the rate levels, for the seed band.  One slice per (h reading, volumes).
+  s.published = PublishedRates{
+      t.program, t.program + "_long.tsv", key, "printed_voronoi", {}, false, [program = t.program](const StoreReader& read) {
+        std::vector<StoreSlice> out;
+        for (const std::string v : {"", "_seed2", "_seed3"}) {
+          const auto data = read(program + v + ".tsv");
+          if (!data) continue;
+          for (const std::string reading : {"printed", "scaled"})
+            for (const std::string volumes : {"voronoi", "uniform"}) {
+              TsvTable slice = rows_where(*data, {{"h_reading", reading}, {"volumes", volumes}});
+              if (!slice.rows.empty()) out.push_back({reading + "_" + volumes + v, std::move(slice)});
+            }
+        }
+        return out;
+      }};
   s.plan = [&t](UnitPricer& p) {
     std::vector<int> all;
     for (HReading r : t.readings) {
@@ -98,7 +160,20 @@ RegisteredStudy thesis_truncation(const ThesisTableSpec& t) {
 // Table 4.4: per (h rule, weight, level) the Laplacian's set-up and a CG solve, its
 // iterations carried from 2^-5 as 1/h.
 RegisteredStudy poisson() {
-  RegisteredStudy s{"thesis_table4_4", {"thesis_table4_4"}, {}, {}};
+  RegisteredStudy s = identity("thesis_table4_4", "thesis Figure 4.8, Table 4.4", "poisson", poisson_table().levels,
+                               poisson_table().columns, {5, 6});
+  s.files = {{"thesis_table4_4", {}, {}, {{"thesis_table4_4_rates", "thesis_table4_4", {}, /*scored=*/true}}}};
+  // Both readings of h in one file (the verdicts give each its slice); cellvol is the reading
+  // V_i = dx^2.
+  s.published = PublishedRates{"thesis_table4_4", "thesis_table4_4_long.tsv", {"h_rule", "weight"}, "h10",
+                               [](const HeatReading& r) { return r.h_rule + (r.volumes == "cell" ? "_cell" : ""); },
+                               false, [](const StoreReader& read) {
+                                 std::vector<StoreSlice> out;
+                                 for (const std::string v : {"all", "seed2", "seed3", "cellvol"})
+                                   if (auto d = read(v == "all" ? "thesis_table4_4.tsv" : "thesis_table4_4_" + v + ".tsv"))
+                                     out.push_back({v, std::move(*d)});
+                                 return out;
+                               }};
   s.plan = [](UnitPricer& p) {
     const Calibration& c = p.cal();
     for (int k : p.paper() ? poisson_table().levels.paper : poisson_table().levels.quick)
@@ -137,7 +212,26 @@ std::string heat_file(const HeatTable& hp, const char* rule) {
 // also serves the CG's initial and true residuals) plus (θ > 0) the CG iterations; the
 // Laplacian's set-up once per (level, weight), not in the per-row seconds.
 RegisteredStudy heat(const HeatTable& hp) {
-  RegisteredStudy s{heat_file(hp, "h10"), {heat_file(hp, "h10"), heat_file(hp, "h15")}, {}, {}};
+  const std::string name = heat_file(hp, "h10");
+  RegisteredStudy s = identity(name, "thesis Table " + hp.table, "heat", {hp.quick, hp.paper}, heat_columns(), {5});
+  s.program = "thesis_heat", s.fixed_args = {"--table", hp.table};
+  // Each run also writes the rows of the series that never blew up (…_finite), which is what
+  // its rate table reads; the h10 reading is the one the thesis prints.
+  for (const char* rule : {"h10", "h15"}) {
+    const std::string f = heat_file(hp, rule);
+    s.files.push_back({f, rule == std::string("h15") ? std::vector<std::string>{"--h-rule", "h15"} : std::vector<std::string>{},
+                       {{"--rates-input", f + "_finite"}},
+                       {{f + "_rates", f + "_finite", {}, /*scored=*/rule == std::string("h10")}}});
+  }
+  // One slice per set-up reading stored (h rule x volumes x time step).
+  s.published = PublishedRates{name, name + "_long.tsv", {"weight", "theta"}, "h10",
+                               [](const HeatReading& r) { return r.name(); }, /*finite_series=*/true,
+                               [name](const StoreReader& read) {
+                                 std::vector<StoreSlice> out;
+                                 for (const HeatReading& r : heat_reading_matrix({"h10", "h15"}, {"lattice", "cell"}, {"fit", "exact"}))
+                                   if (auto d = read(name + r.file_suffix() + ".tsv")) out.push_back({r.name(), std::move(*d)});
+                                 return out;
+                               }};
   s.plan = [&hp](UnitPricer& p) {
     for (const char* rule : {"h10", "h15"}) {
       const std::string study = heat_file(hp, rule);
@@ -194,7 +288,10 @@ RegisteredStudy heat(const HeatTable& hp) {
 
 // core_voronoi: the plain grid once per level, the jittered grid per seed.
 RegisteredStudy voronoi() {
-  RegisteredStudy s{"core_voronoi", {"core_voronoi"}, {}, {}};
+  RegisteredStudy s = identity("core_voronoi", "covering radius (imoto §5, thesis Ch. 4)", "core", voronoi_study().levels,
+                               voronoi_study().columns, {});
+  s.level_cache = false;  // one table rewritten after each level (StudyRunner::Kind::whole_table)
+  s.files = {{"core_voronoi", {}, {}, {}}};
   s.plan = [](UnitPricer& p) {
     for (int k : p.paper() ? voronoi_study().levels.paper : voronoi_study().levels.quick) {
       p.add_voronoi("core_voronoi", "grid", k);
@@ -214,22 +311,129 @@ RegisteredStudy voronoi() {
 
 }  // namespace
 
-const std::vector<RegisteredStudy>& study_registry() {
-  static const std::vector<RegisteredStudy> r = [] {
-    std::vector<RegisteredStudy> v = {imoto()};
-    for (auto& t : thesis_table_specs()) v.push_back(thesis_truncation(t));
-    v.push_back(poisson());
-    for (auto& hp : heat_tables()) v.push_back(heat(hp));
-    v.push_back(voronoi());
+std::vector<std::string> RegisteredStudy::header() const {
+  std::vector<std::string> h = columns;
+  if (level_cache)
+    for (auto& c : row_provenance_columns()) h.push_back(c);
+  return h;
+}
+
+void StudyRegistry::add(RegisteredStudy s) {
+  for (auto& o : studies_) {
+    if (o.name == s.name) throw InputError("study '" + s.name + "' is registered twice");
+    for (auto& f : s.files)
+      for (auto& g : o.files)
+        if (f.name == g.name) throw InputError("data file '" + f.name + "' of study '" + s.name +
+                                               "' is already written by '" + o.name + "'");
+  }
+  studies_.push_back(std::move(s));
+}
+
+const RegisteredStudy& StudyRegistry::study(const std::string& name) const {
+  std::string valid;
+  for (auto& s : studies_) {
+    if (s.name == name) return s;
+    valid += (valid.empty() ? "" : ", ") + s.name;
+  }
+  throw InputError("unknown study '" + name + "'; valid: " + valid);
+}
+
+const RegisteredStudy& StudyRegistry::study_of_file(const std::string& file) const {
+  for (auto& s : studies_)
+    for (auto& f : s.files)
+      if (f.name == file) return s;
+  throw InputError("no registered study writes the data file '" + file + "'");
+}
+
+const StudyRegistry& study_registry() {
+  static const StudyRegistry r = [] {
+    StudyRegistry v;
+    v.add(imoto());
+    for (auto& t : thesis_table_specs()) v.add(thesis_truncation(t));
+    v.add(poisson());
+    for (auto& hp : heat_tables()) v.add(heat(hp));
+    v.add(voronoi());
     return v;
   }();
   return r;
 }
 
 const RegisteredStudy& registered_study_of_file(const std::string& file) {
-  for (auto& s : study_registry())
-    if (std::find(s.files.begin(), s.files.end(), file) != s.files.end()) return s;
-  throw InputError("no registered study writes the data file '" + file + "'");
+  return study_registry().study_of_file(file);
+}
+
+// --- make -------------------------------------------------------------------------------------
+
+namespace {
+// "a b c" for a make list; `prefix`, `suffix` around each.
+std::string words(const std::vector<std::string>& v) { return join(v, " "); }
+// 5$(,)6$(,)7: a comma inside $(call …) must be make's $(,).
+std::string call_levels(const std::vector<int>& k) {
+  std::vector<std::string> s;
+  for (int v : k) s.push_back(fmt(v));
+  return join(s, "$(,)");
+}
+}  // namespace
+
+std::string make_rules(const StudyRegistry& registry) {
+  std::ostringstream m;
+  m << "# Generated by `gpm study --make` from the study registry (src/gpm/studies/registry.cpp)\n"
+       "# at each `make build`: do not edit.  Every list of studies make uses is defined here.\n\n";
+  std::vector<std::string> names, files, rates, scored, groups;
+  std::map<std::string, std::vector<std::string>> group_names, group_files;
+  for (auto& s : registry) {
+    names.push_back(s.name);
+    if (std::find(groups.begin(), groups.end(), s.group) == groups.end()) groups.push_back(s.group);
+    group_names[s.group].push_back(s.name);
+    for (auto& f : s.files) {
+      files.push_back(f.name);
+      group_files[s.group].push_back(f.name);
+      for (auto& r : f.rates) {
+        rates.push_back(r.name);
+        if (r.scored) scored.push_back(r.name);
+      }
+    }
+  }
+  m << "STUDIES := " << words(names) << "\n";
+  for (auto& g : groups) m << "STUDIES_" << g << " := " << words(group_names[g]) << "\n";
+  m << "STUDY_FILES := " << words(files) << "\n";
+  for (auto& g : groups) m << "STUDY_FILES_" << g << " := " << words(group_files[g]) << "\n";
+  m << "STUDY_RATES := " << words(rates) << "\n";
+  m << "STUDY_SCORED_RATES := " << words(scored) << "\n";
+  m << "DATAFILES += $(foreach f,$(STUDY_FILES) $(STUDY_RATES),$(DATA)/$(f).tsv)\n";
+  for (auto& s : registry) {
+    m << "\n# " << s.name << ": " << s.item << "\n";
+    for (auto& f : s.files) {
+      std::vector<std::string> args = s.fixed_args;
+      args.insert(args.end(), f.args.begin(), f.args.end());
+      const std::string fixed = args.empty() ? "" : " " + words(args);
+      std::string sides, side_files;
+      for (auto& [option, stem] : f.side_outputs) {
+        sides += " " + option + " $(DATA)/" + stem + ".tsv";
+        side_files += " $(DATA)/" + stem + ".tsv";
+      }
+      m << "$(DATA)/" << f.name << ".tsv: $(BUILD)/" << s.program << "\n";
+      if (s.level_cache && !s.recheck_levels.empty())
+        m << "\t$(call store_recheck,$<" << fixed << "," << call_levels(s.recheck_levels) << ")\n";
+      m << "\t$<" << fixed << " --profile $(PROFILE) --out $@" << sides << "\n";
+      if (s.level_cache) m << "\t@touch -c $@" << side_files << "  # a fully cached rerun leaves the files as they were\n";
+      if (!side_files.empty()) m << side_files.substr(1) << ": $(DATA)/" << f.name << ".tsv ;\n";
+      for (auto& r : f.rates) {
+        if (!s.published) throw InputError("study '" + s.name + "': rate table '" + r.name + "' without published rates");
+        const std::string pub = "tables/published/" + s.published->file;
+        m << "$(DATA)/" << r.name << ".tsv: $(BUILD)/rate_table $(DATA)/" << r.input << ".tsv " << pub << "\n";
+        m << "\t$(BUILD)/rate_table --data $(DATA)/" << r.input << ".tsv --published " << pub
+          << " --key " << join(s.published->key, ",");
+        if (!r.where.empty()) {
+          std::vector<std::string> w;
+          for (auto& [c, v] : r.where) w.push_back(c + "=" + v);
+          m << " --where " << join(w, ",");
+        }
+        m << " --out $@\n";
+      }
+    }
+  }
+  return m.str();
 }
 
 }  // namespace gpm

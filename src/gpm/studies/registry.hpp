@@ -1,33 +1,116 @@
-// The study registry: each study of the plan as one object — the data files it writes, how
-// its units are priced before a run, and how a data file records what each unit cost.  The
-// plan (plan_units, planned_studies), the plan-vs-actual comparison (recorded_units) and the
-// tests read it; a study added here is priced and compared with no other list to edit.
-// (The study programs, the catalog of `gpm study` and make still keep their own lists: the
-// registry is to absorb them, one at a time.)
+// The study registry: every study of the package as one object.  An entry names
+//   * what it is: its program and fixed arguments, the document item, its levels per profile
+//     and its data file's columns (the catalog of `gpm study --list`);
+//   * what make builds from it: its data files with their arguments and side outputs, and
+//     the rate tables cut from them (`gpm study --make` writes build/studies.mk from these:
+//     no study list is typed in mk/ or the Makefile);
+//   * how the plan prices its units before a run and reads back what a run recorded;
+//   * how the committed store's files of the study are cut into slices and judged against
+//     its published rates (`gpm store-rates`, verdicts.hpp).
+// A study is added by one entry here (its program holds the unit body); the example test
+// (tests/unit/test_registry_example.cpp) registers one and checks that the catalog, the
+// plan, the make rules and the verdicts all pick it up.
 #pragma once
 #include <functional>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gpm/io/tsv.hpp"
+#include "gpm/studies/catalog.hpp"
+#include "gpm/studies/heat_tables.hpp"
 #include "gpm/studies/study_plan.hpp"
 
 namespace gpm {
 
+// A rate table made from one data file: rate_table's input, the rows it keeps, its key.
+struct RateTableRule {
+  std::string name;   // written as data/<profile>/<name>.tsv
+  std::string input;  // the data file (stem) it reads: the study file or a side output
+  std::vector<std::pair<std::string, std::string>> where;  // rows kept: column = value
+  bool scored = false;  // one of the profile's front-page scoreboard tables
+};
+
+// A data file a study's program writes in a make run (data/<profile>/<name>.tsv).
+struct StudyFile {
+  std::string name;
+  std::vector<std::string> args;  // the program's arguments beyond the study's fixed ones
+  // Further files the same run writes: (option, file stem), e.g. ("--rates-input",
+  // "thesis_table4_5_finite"); make passes them and rate tables may read them.
+  std::vector<std::pair<std::string, std::string>> side_outputs;
+  std::vector<RateTableRule> rates;
+};
+
+// A slice of a stored file: rows of one set-up (reading of h, volumes, seed, …).
+struct StoreSlice {
+  std::string slice;  // its name in the verdicts: printed_voronoi, h15_cell, seed2, …
+  TsvTable data;
+};
+using StoreReader = std::function<std::optional<TsvTable>(const std::string& file)>;
+
+// The published rates a study is judged against in the store (verdicts.hpp).
+struct PublishedRates {
+  std::string table;              // the verdicts' table name: thesis_table4_2, imoto_table1
+  std::string file;               // under tables/published/
+  std::vector<std::string> key;   // columns shared by the data and the published file
+  std::string printed_slice;      // the slice of the reading the document prints
+  // The slice the set-up rule's identified reading selects (setup_identification.hpp);
+  // unset: the printed one.
+  std::function<std::string(const HeatReading&)> identified_slice;
+  bool finite_series = false;     // rates from the series that never blew up (heat)
+  // The study's store files, each cut into slices; `read` returns a stored file or nothing.
+  std::function<std::vector<StoreSlice>(const StoreReader& read)> store_slices;
+};
+
 struct RegisteredStudy {
-  std::string name;                // the study (its catalog name)
-  std::vector<std::string> files;  // the data files it writes, as the plan names its units
+  std::string name;     // the catalog's name (gpm study NAME)
+  std::string program;  // the executable that runs it
+  std::vector<std::string> fixed_args;  // e.g. --table 4.6
+  std::string item;     // the document item it reproduces
+  std::string group;    // make's STUDIES_<group> list (truncation, heat, …)
+  ProfileLevels levels;
+  std::vector<std::string> columns;  // the data file's own columns
+  bool level_cache = true;           // rows cached per unit in the result store (store.hpp)
+  std::vector<int> recheck_levels;   // the coarse units the paper profile re-checks first
+  std::vector<StudyFile> files;      // what a make run writes
+  std::optional<PublishedRates> published;
   // Appends the units of the profile (pricer.paper()) to pricer.units().
   std::function<void(UnitPricer& pricer)> plan;
-  // What the data file `files[i]` recorded per (variant, level): seconds and work.
+  // What the data file `file` recorded per (variant, level): seconds and work.
   std::function<void(const std::string& file, const TsvTable& data, const PlannedPairs& planned,
                      RecordedUnits& out)>
       recorded;
+
+  // The header of the data file its program writes: its columns, and for a cached study
+  // the provenance of each row (code, made_on, checked).
+  std::vector<std::string> header() const;
 };
 
-// Every modelled study, in plan order.
-const std::vector<RegisteredStudy>& study_registry();
+class StudyRegistry {
+ public:
+  // A study added last; InputError if its name or one of its data files is taken.
+  void add(RegisteredStudy s);
+  const std::vector<RegisteredStudy>& studies() const { return studies_; }
+  auto begin() const { return studies_.begin(); }
+  auto end() const { return studies_.end(); }
+  // By name; InputError naming the valid ones.
+  const RegisteredStudy& study(const std::string& name) const;
+  // The entry that writes data file `file` in a make run; InputError if none.
+  const RegisteredStudy& study_of_file(const std::string& file) const;
+
+ private:
+  std::vector<RegisteredStudy> studies_;
+};
+
+// The package's studies, in plan order.
+const StudyRegistry& study_registry();
 // The entry that writes data file `file`; InputError if none.
 const RegisteredStudy& registered_study_of_file(const std::string& file);
+
+// The make rules of every study (build/studies.mk): the lists STUDIES, STUDIES_<group>,
+// STUDY_FILES(_<group>), STUDY_RATES, STUDY_SCORED_RATES, each data file's rule (re-check in
+// the paper profile, then the run) and each rate table's rule.
+std::string make_rules(const StudyRegistry& registry);
 
 }  // namespace gpm

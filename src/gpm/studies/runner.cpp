@@ -17,6 +17,7 @@
 #include "gpm/io/provenance.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/kernel/device_pass.hpp"
+#include "gpm/studies/registry.hpp"
 
 namespace gpm {
 
@@ -95,6 +96,22 @@ void StudyRunner::parse(int argc, char** argv) {
     throw InputError("--verify, --recheck and --census run on one process, not on " +
                      std::to_string(size_) + " ranks");
   start_ = std::chrono::steady_clock::now();
+}
+
+StudyRunner::StudyRunner(const RegisteredStudy& study, std::string summary)
+    : StudyRunner(study.program, std::move(summary), study.levels.help(),
+                  study.level_cache ? Kind::units : Kind::whole_table) {
+  study_ = &study;
+}
+
+std::vector<int> StudyRunner::levels() const {
+  if (!study_) throw std::logic_error("StudyRunner::levels(): not made from a registered study");
+  return levels(study_->levels.quick, study_->levels.paper);
+}
+
+LevelCache& StudyRunner::open(std::vector<std::pair<std::string, std::string>> params, int key_columns) {
+  if (!study_) throw std::logic_error("StudyRunner::open(params, key): not made from a registered study");
+  return open(std::move(params), study_->columns, key_columns);
 }
 
 std::vector<int> StudyRunner::levels(const std::vector<int>& quick,

@@ -49,6 +49,8 @@
 
 namespace gpm {
 
+struct RegisteredStudy;  // registry.hpp
+
 class StudyRunner {
  public:
   // How a study keeps its data file.  `units`: one jitter realization (--seed) per run, its
@@ -59,6 +61,10 @@ class StudyRunner {
   // `profile_help` is the --profile help (the catalog's ProfileLevels::help()).
   StudyRunner(std::string program, std::string summary, std::string profile_help,
               Kind kind = Kind::units);
+  // A study of the registry (registry.hpp): its program, --profile help, kind (level_cache),
+  // levels per profile and columns are the entry's, so levels() and open(params, key) need
+  // no more.  The entry must outlive the runner.
+  StudyRunner(const RegisteredStudy& study, std::string summary);
   // MPI: a rank leaving by an exception skips MPI_Finalize at exit (its non-zero exit makes
   // mpirun stop the others, which would otherwise wait for its rows).
   ~StudyRunner();
@@ -79,12 +85,16 @@ class StudyRunner {
   bool levels_given() const { return !args_.str("levels").empty(); }
   std::vector<int> levels(const std::vector<int>& quick, const std::vector<int>& paper,
                           int lo = 3, int hi = 13) const;
+  // The registered study's levels (--levels, else its profile's).
+  std::vector<int> levels() const;
 
   // The data file: rows are reused only where `params` agree with its header; `columns` are
   // the study's own (the store's provenance columns follow); a unit is keyed by the first
   // `key_columns` of a row.  Says how many rows it reuses.
   LevelCache& open(std::vector<std::pair<std::string, std::string>> params,
                    std::vector<std::string> columns, int key_columns);
+  // The registered study's data file, with its columns.
+  LevelCache& open(std::vector<std::pair<std::string, std::string>> params, int key_columns);
   LevelCache& cache() { return *caches_.at(0); }
   // Several data files from one run: variants of a set-up that share its costly part (the
   // heat readings of one Laplacian: volumes and time-step rules), each its own file with its
@@ -149,6 +159,7 @@ class StudyRunner {
 
  private:
   std::string program_;
+  const RegisteredStudy* study_ = nullptr;  // the registry's entry, where made from one
   Args args_;
   std::string out_;
   Profile profile_ = Profile::quick;

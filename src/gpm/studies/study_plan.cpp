@@ -117,7 +117,8 @@ double load_average() {
 
 std::vector<std::string> planned_studies() {
   std::vector<std::string> s;
-  for (auto& r : study_registry()) s.insert(s.end(), r.files.begin(), r.files.end());
+  for (auto& r : study_registry())
+    for (auto& f : r.files) s.push_back(f.name);
   return s;
 }
 
@@ -403,8 +404,12 @@ double UnitPricer::heat_cg_its(const std::string& table, const std::string& rule
 }
 
 std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
+  return plan_units(profile, c, study_registry());
+}
+
+std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c, const StudyRegistry& registry) {
   UnitPricer pricer(profile, c);
-  for (auto& study : study_registry()) study.plan(pricer);
+  for (auto& study : registry) study.plan(pricer);
   return pricer.units();
 }
 

@@ -89,7 +89,10 @@ struct PlanUnit {
   std::string trimmed;   // why the profile skips this unit (a trim of the catalog); empty: it runs
 };
 
+class StudyRegistry;
+// Every unit of the profile of every study of `registry` (default: the package's), priced.
 std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c);
+std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c, const StudyRegistry& registry);
 
 // The cost formulas every study's plan prices its units with (one place; registry.cpp's
 // entries call them): a unit's particles, targets and pairs at a level and h; a fused pass

@@ -13,6 +13,7 @@
 #include "gpm/geometry/volumes.hpp"
 #include "gpm/geometry/voronoi.hpp"
 #include "gpm/io/tsv.hpp"
+#include "gpm/studies/cost_model.hpp"  // predicted_pairs: the progress line's work
 #include "gpm/studies/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -100,13 +101,6 @@ namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// Pairs (r < h) of a pass, estimated: targets ≈ (1/Δx)² particles in Ω, each with about
-// π h²/Δx² neighbours (an over-estimate where h > H cuts the disc at the edge of Ω_H).
-double predicted_pairs(double dx, double h) {
-  const double pi = std::acos(-1.0);
-  return (1.0 / (dx * dx)) * (pi * h * h / (dx * dx) + 1.0);
 }
 
 // Particles of a level and, computed only when a pass needs them, their Voronoi volumes.

@@ -47,29 +47,24 @@ const VerdictSpelling& spelling(Verdict v) {
 }
 
 // The tables of the documents with a published rate, each with the slice of the reading its
-// text prints (the printed board), in the order the score totals them.
-const std::vector<std::pair<std::string, std::string>>& printed_slices() {
-  static const std::vector<std::pair<std::string, std::string>> p = {
-      {"imoto_table1", "all"},
-      {"thesis_table4_1", "printed_voronoi"},
-      {"thesis_table4_2", "printed_voronoi"},
-      {"thesis_table4_3", "printed_voronoi"},
-      {"thesis_table4_4", "h10"},
-      {"thesis_table4_5", "h10"},
-      {"thesis_table4_6", "h10"},
-      {"thesis_table4_7", "h10"},
-  };
+// text prints (the printed board), in registry order (the order the score totals them).
+std::vector<std::pair<std::string, std::string>> printed_slices(const StudyRegistry& registry) {
+  std::vector<std::pair<std::string, std::string>> p;
+  for (auto& s : registry)
+    if (s.published) p.emplace_back(s.published->table, s.published->printed_slice);
   return p;
 }
 
-// The slice of each table on the identified board: Chapter 4's PDE tables take the identified
-// reading (Table 4.4, which has no time step, its h rule and volumes); the rest as printed.
-std::map<std::string, std::string> identified_slices(const std::optional<HeatReading>& identified) {
-  std::map<std::string, std::string> s(printed_slices().begin(), printed_slices().end());
-  if (identified) {
-    s["thesis_table4_4"] = identified->h_rule + (identified->volumes == "cell" ? "_cell" : "");
-    for (const char* t : {"thesis_table4_5", "thesis_table4_6", "thesis_table4_7"}) s[t] = identified->name();
-  }
+// The slice of each table on the identified board: a table whose slice follows the set-up
+// reading (Chapter 4's PDE tables) takes the identified one; the rest as printed.
+std::map<std::string, std::string> identified_slices(const std::optional<HeatReading>& identified,
+                                                     const StudyRegistry& registry) {
+  const auto printed = printed_slices(registry);
+  std::map<std::string, std::string> s(printed.begin(), printed.end());
+  if (identified)
+    for (auto& st : registry)
+      if (st.published && st.published->identified_slice)
+        s[st.published->table] = st.published->identified_slice(*identified);
   return s;
 }
 
@@ -290,10 +285,11 @@ CheckedReasons passed_reasons(const TsvTable& checked) {
 
 std::vector<JudgedRate> judge_rates(const std::vector<StoreRate>& rates, const UnstableSeries& unstable,
                                     const CheckedReasons& checked, double tolerance,
-                                    const std::optional<HeatReading>& identified) {
+                                    const std::optional<HeatReading>& identified, const StudyRegistry& registry) {
   const std::map<RateKey, SeedBand> bands = seed_bands(rates);
-  const std::map<std::string, std::string> printed(printed_slices().begin(), printed_slices().end());
-  const std::map<std::string, std::string> ident = identified_slices(identified);
+  const auto printed_list = printed_slices(registry);
+  const std::map<std::string, std::string> printed(printed_list.begin(), printed_list.end());
+  const std::map<std::string, std::string> ident = identified_slices(identified, registry);
   auto on_board = [](const std::map<std::string, std::string>& board, const StoreRate& r) {
     const auto it = board.find(r.table);
     return r.setup == kDocumentSetup && it != board.end() && it->second == r.slice;
@@ -336,8 +332,11 @@ TsvTable rates_table(const std::vector<JudgedRate>& rates) {
   return t;
 }
 
-std::string published_file(const std::string& published_dir, const std::string& table) {
-  return published_dir + "/" + table + (table == "imoto_table1" ? ".tsv" : "_long.tsv");
+std::string published_file(const std::string& published_dir, const std::string& table,
+                           const StudyRegistry& registry) {
+  for (auto& s : registry)
+    if (s.published && s.published->table == table) return published_dir + "/" + s.published->file;
+  throw InputError("no registered study has the published table '" + table + "'");
 }
 
 namespace {
@@ -382,7 +381,8 @@ std::vector<Tally> slice_tallies(const std::vector<JudgedRate>& rates) {
 // board has no stored rows of counts its published rates not computed: as many as the printed
 // board counts (Table 4.4's file lists each weight once per reading of h), else the rows of
 // its published file.
-Tally board_tally(const std::vector<JudgedRate>& rates, bool identified, const std::string& published_dir) {
+Tally board_tally(const std::vector<JudgedRate>& rates, bool identified, const std::string& published_dir,
+                  const StudyRegistry& registry) {
   Tally total;
   total.table = "total", total.slice = identified ? "as identified" : "as printed", total.setup = kDocumentSetup;
   total.printed = !identified, total.identified = identified;
@@ -394,11 +394,11 @@ Tally board_tally(const std::vector<JudgedRate>& rates, bool identified, const s
     tables.insert(j.rate.table);
     ++total.counts[identified ? j.verdict_identified : j.verdict];
   }
-  for (auto& [table, slice] : printed_slices())
+  for (auto& [table, slice] : printed_slices(registry))
     if (!tables.count(table))
       total.counts[Verdict::not_computed] +=
           printed_rows.count(table) ? printed_rows[table]
-                                    : static_cast<int>(TsvTable::load(published_file(published_dir, table)).rows.size());
+                                    : static_cast<int>(TsvTable::load(published_file(published_dir, table, registry)).rows.size());
   for (Verdict v : scored_verdicts()) total.rows += total.counts[v];
   return total;
 }
@@ -416,98 +416,65 @@ void add_score_row(TsvTable& t, Tally& tally) {
 
 }  // namespace
 
-TsvTable score_table(const std::vector<JudgedRate>& rates, const std::string& published_dir) {
+TsvTable score_table(const std::vector<JudgedRate>& rates, const std::string& published_dir,
+                     const StudyRegistry& registry) {
   TsvTable t;
   t.columns = {"table", "slice", "setup", "printed", "identified", "counted", "rates"};
   for (Verdict v : scored_verdicts()) t.columns.push_back(verdict_column(v));
   t.columns.push_back("mean_abs_diff");
   for (Tally& s : slice_tallies(rates)) add_score_row(t, s);
   for (bool identified : {false, true}) {
-    Tally total = board_tally(rates, identified, published_dir);
+    Tally total = board_tally(rates, identified, published_dir, registry);
     add_score_row(t, total);
   }
   return t;
 }
 
+namespace {
+// A stored file by name, or nothing where the store does not hold it.
+StoreReader store_reader(const std::string& store) {
+  return [store](const std::string& name) -> std::optional<TsvTable> {
+    if (!std::filesystem::exists(store + "/" + name)) return std::nullopt;
+    return TsvTable::load(store + "/" + name);
+  };
+}
+}  // namespace
+
 std::vector<StoreRate> store_rates(const std::string& store, const std::string& published_dir,
-                                   double tolerance) {
+                                   double tolerance, const StudyRegistry& registry) {
   // Per slice, named "table.slice": its rows (the slices in the order of their names).
   std::map<std::string, std::vector<StoreRate>> slices;
-  std::map<std::string, TsvTable> published;
-  auto published_of = [&](const std::string& table) -> const TsvTable& {
-    auto it = published.find(table);
-    if (it == published.end()) it = published.emplace(table, TsvTable::load(published_file(published_dir, table))).first;
-    return it->second;
-  };
-  auto add = [&](const std::string& table, const std::string& slice, const TsvTable& data,
-                 const std::vector<std::string>& keys) {
-    const TsvTable& pub = published_of(table);
-    RateJoin join;
-    join.keys = keys, join.levels = "published", join.tolerance = tolerance;
-    TsvTable joined;
-    join_rates(data, pub, join, joined);
-    // A slice's name stays unique: a second one would replace the first, as a file would.
-    slices[table + "." + slice + ".tsv"] = store_rates_of(table, slice, joined, keys, pub.column("theoretical") >= 0);
-  };
-  auto stored = [&](const std::string& name) { return std::filesystem::exists(store + "/" + name); };
-  auto load = [&](const std::string& name) { return TsvTable::load(store + "/" + name); };
-
-  // Tables 4.1-4.3: seed 1 is the reproduction; …_seed2, …_seed3 (where stored) are other
-  // jitter realizations at the rate levels, slices <slice>_seedN, for the seed band.  One slice
-  // per (h reading, volumes).
-  for (const std::string t : {"4_1", "4_2", "4_3"}) {
-    const std::vector<std::string> keys =
-        t == "4_3" ? std::vector<std::string>{"weight", "operator", "function"} : std::vector<std::string>{"weight", "function"};
-    for (const std::string v : {"", "_seed2", "_seed3"}) {
-      const std::string file = "thesis_table" + t + v + ".tsv";
-      if (!stored(file)) continue;
-      const TsvTable data = load(file);
-      for (const std::string reading : {"printed", "scaled"})
-        for (const std::string volumes : {"voronoi", "uniform"}) {
-          TsvTable slice = data;
-          slice.rows.clear(), slice.row_lines.clear();
-          for (std::size_t i = 0; i < data.rows.size(); ++i)
-            if (data.text(i, "h_reading") == reading && data.text(i, "volumes") == volumes) {
-              slice.rows.push_back(data.rows[i]);
-              slice.row_lines.push_back(data.row_lines[i]);
-            }
-          if (!slice.rows.empty()) add("thesis_table" + t, reading + "_" + volumes + v, slice, keys);
-        }
+  const StoreReader read = store_reader(store);
+  for (auto& s : registry) {
+    if (!s.published) continue;
+    const PublishedRates& p = *s.published;
+    const TsvTable pub = TsvTable::load(published_dir + "/" + p.file);
+    for (StoreSlice& slice : p.store_slices(read)) {
+      RateJoin join;
+      join.keys = p.key, join.levels = "published", join.tolerance = tolerance;
+      TsvTable joined;
+      join_rates(p.finite_series ? finite_series(slice.data) : slice.data, pub, join, joined);
+      // A slice's name stays unique: a second one would replace the first, as a file would.
+      slices[p.table + "." + slice.slice + ".tsv"] =
+          store_rates_of(p.table, slice.slice, joined, p.key, pub.column("theoretical") >= 0);
     }
-  }
-  // Table 4.4: both readings of h in one file; cellvol is the reading V_i = dx^2.
-  for (const std::string v : {"all", "seed2", "seed3", "cellvol"}) {
-    const std::string file = v == "all" ? "thesis_table4_4.tsv" : "thesis_table4_4_" + v + ".tsv";
-    if (stored(file)) add("thesis_table4_4", v, load(file), {"h_rule", "weight"});
-  }
-  // Tables 4.5-4.7: one slice per heat reading, its rates from the series that never blew up.
-  for (const std::string t : {"4_5", "4_6", "4_7"})
-    for (const HeatReading& r : heat_reading_matrix({"h10", "h15"}, {"lattice", "cell"}, {"fit", "exact"})) {
-      const std::string file = "thesis_table" + t + r.file_suffix() + ".tsv";
-      if (stored(file)) add("thesis_table" + t, r.name(), finite_series(load(file)), {"weight", "theta"});
-    }
-  // imoto: seed 1 is the reproduction; seeds 2-6 (where stored) and the plain grid (no jitter)
-  // show how much of a rate is one realization's particle noise; cellvol (where stored) is the
-  // delta-free error, V_i = dx^2 instead of |Omega_H|/N.
-  for (const std::string v : {"all", "seed2", "seed3", "seed4", "seed5", "seed6", "plain", "cellvol"}) {
-    const std::string file = v == "all" ? "imoto_fig5_table1.tsv" : "imoto_fig5_table1_" + v + ".tsv";
-    if (stored(file)) add("imoto_table1", v, load(file), {"operator", "weight", "m"});
   }
   std::vector<StoreRate> out;
   for (auto& [name, rows] : slices) out.insert(out.end(), rows.begin(), rows.end());
   return out;
 }
 
-UnstableSeries store_unstable_series(const std::string& store, const std::string& published_dir) {
+UnstableSeries store_unstable_series(const std::string& store, const std::string& published_dir,
+                                     const StudyRegistry& registry) {
   UnstableSeries out;
-  for (const std::string t : {"4_5", "4_6", "4_7"}) {
-    const std::string table = "thesis_table" + t;
+  const StoreReader read = store_reader(store);
+  // The studies whose rates come from the series that never blew up (the heat tables).
+  for (auto& s : registry) {
+    if (!s.published || !s.published->finite_series) continue;
     std::optional<std::string> levels;
-    for (const HeatReading& r : heat_reading_matrix({"h10", "h15"}, {"lattice", "cell"}, {"fit", "exact"})) {
-      const std::string file = store + "/" + table + r.file_suffix() + ".tsv";
-      if (!std::filesystem::exists(file)) continue;
-      if (!levels) levels = TsvTable::load(published_file(published_dir, table)).get("rate_levels").value_or("");
-      add_unstable_series(table, r.name(), TsvTable::load(file), *levels, out);
+    for (StoreSlice& slice : s.published->store_slices(read)) {
+      if (!levels) levels = TsvTable::load(published_dir + "/" + s.published->file).get("rate_levels").value_or("");
+      add_unstable_series(s.published->table, slice.slice, slice.data, *levels, out);
     }
   }
   return out;

@@ -56,6 +56,7 @@
 
 #include "gpm/io/tsv.hpp"
 #include "gpm/studies/heat_tables.hpp"
+#include "gpm/studies/registry.hpp"
 
 namespace gpm {
 
@@ -146,7 +147,8 @@ CheckedReasons passed_reasons(const TsvTable& checked);
 // the printed one).
 std::vector<JudgedRate> judge_rates(const std::vector<StoreRate>& rates, const UnstableSeries& unstable,
                                     const CheckedReasons& checked, double tolerance,
-                                    const std::optional<HeatReading>& identified);
+                                    const std::optional<HeatReading>& identified,
+                                    const StudyRegistry& registry = study_registry());
 
 // The rates file: columns table, slice, setup, key, published, reproduced, levels, status,
 // seed_band, verdict, reason, printed, identified, verdict_identified, counted.
@@ -155,18 +157,21 @@ TsvTable rates_table(const std::vector<JudgedRate>& rates);
 // |reproduced - published|; then one total row per board.  A board without rows of a table
 // counts its published rates (the printed board's rows of it, else the rows of its published
 // file in `published_dir`) not computed.
-TsvTable score_table(const std::vector<JudgedRate>& rates, const std::string& published_dir);
+TsvTable score_table(const std::vector<JudgedRate>& rates, const std::string& published_dir,
+                     const StudyRegistry& registry = study_registry());
 
 // --- From the store ----------------------------------------------------------------------------
 
-// The published file of a table: imoto_table1.tsv, thesis_table4_N_long.tsv.
-std::string published_file(const std::string& published_dir, const std::string& table);
-// Every slice of every stored study file (store_rates_of), in the order of their names
-// "table.slice".
+// The published file of a table (the registry's): imoto_table1.tsv, thesis_table4_N_long.tsv.
+std::string published_file(const std::string& published_dir, const std::string& table,
+                           const StudyRegistry& registry = study_registry());
+// Every slice of every stored study file of the registry's studies with published rates
+// (their store_slices, then store_rates_of), in the order of their names "table.slice".
 std::vector<StoreRate> store_rates(const std::string& store, const std::string& published_dir,
-                                   double tolerance);
-// The unstable heat series of every stored heat reading.
-UnstableSeries store_unstable_series(const std::string& store, const std::string& published_dir);
+                                   double tolerance, const StudyRegistry& registry = study_registry());
+// The unstable series of every stored reading of the studies judged on finite series (heat).
+UnstableSeries store_unstable_series(const std::string& store, const std::string& published_dir,
+                                     const StudyRegistry& registry = study_registry());
 // Where the stored rows come from, file by file: rows, levels, and how many the current code
 // made (the code column is this build's fingerprint of the file's program), how many a
 // recorded re-check carried over, how many other code made; the machines they were made on.
