@@ -673,9 +673,11 @@ int cmd_decisions(int argc, char** argv) {
 int cmd_study(int argc, char** argv) {
   const std::string first = argc >= 3 ? argv[2] : "";
   if (first == "--help" || first == "-h") {
-    std::cout << "usage: gpm study --list | --readings | --make FILE | NAME [options of its program]\n"
+    std::cout << "usage: gpm study --list | --readings | --store-files | --make FILE | NAME [options]\n"
                  "  --list      every registered study: document item, program, levels per profile\n"
                  "  --make FILE the studies' make rules and lists (make build writes build/studies.mk)\n"
+                 "  --store-files  every study's files in the result store: program and arguments, the\n"
+                 "              units each must hold (census) and the ones the store check recomputes\n"
                  "  --readings  the heat tables' set-up readings: name, h rule, volumes, time step,\n"
                  "              store file suffix (thesis_heat's {reading})\n"
                  "  NAME        runs the study's program with its fixed arguments, then the\n"
@@ -709,6 +711,13 @@ int cmd_study(int argc, char** argv) {
     t.columns = {"reading", "h_rule", "volumes", "dt_rule", "file_suffix"};
     for (auto& r : heat_reading_matrix({"h10", "h15"}, {"lattice", "cell"}, {"fit", "exact"}))
       t.add_row({r.name(), r.h_rule, r.volumes, r.dt_rule, r.file_suffix()});
+    print(t);
+    return 0;
+  }
+  if (first == "--store-files") {
+    TsvTable t = store_file_table(study_registry());
+    t.set("program", "gpm study --store-files");
+    add_provenance(t);
     print(t);
     return 0;
   }

@@ -48,54 +48,18 @@ check() {
   if [ "$rc" -eq 0 ]; then checked=$((checked + 1)); else failed=$((failed + 1)); echo "   FAILED ($step, exit $rc)"; fi
 }
 
-# The store's files: census levels (paper profile unless named), coarse units to recompute.
-coarse="--levels 5,6,7"
-check imoto_fig5_table1.tsv       "" "$coarse" imoto_fig5_table1
-check imoto_fig5_table1_seed2.tsv "" "$coarse" imoto_fig5_table1 --seed 2
-check imoto_fig5_table1_seed3.tsv "" "$coarse" imoto_fig5_table1 --seed 3
-for s in 4 5; do  # the rate levels 2^-11/2^-12 and the coarse ones, for the seed bands
-  check imoto_fig5_table1_seed$s.tsv "--levels 5,6,7,11,12" "$coarse" imoto_fig5_table1 --seed $s
-done
-check imoto_fig5_table1_plain.tsv "" "$coarse" imoto_fig5_table1 --jitter 0
-check imoto_fig5_table1_cellvol.tsv "" "$coarse" imoto_fig5_table1 --volumes cell
-for t in 1 2 3; do check thesis_table4_$t.tsv "" "$coarse" thesis_table4_$t; done
-check thesis_table4_4.tsv "" "--levels 5,6" thesis_table4_4
-check thesis_table4_4_cellvol.tsv "" "--levels 5,6" thesis_table4_4 --volumes cell
-for s in 2 3; do  # other jitter realizations: the coarse levels and the rate levels (seed bands)
-  check thesis_table4_1_seed$s.tsv "--levels 5,6,7,10,11" "$coarse" thesis_table4_1 --seed $s
-  check thesis_table4_3_seed$s.tsv "--levels 5,6,7,10,11" "$coarse" thesis_table4_3 --seed $s
-  check thesis_table4_4_seed$s.tsv "--levels 5,6,8,9" "--levels 5,6" thesis_table4_4 --seed $s
-done
-# The heat tables, one file per reading of the set-up (tables/store_lib.sh's heat_file).
-heat() {  # heat TABLE FILE-SUFFIX "CENSUS OPTIONS" THESIS_HEAT-ARGS...
-  local t=$1 suffix=$2 census=$3
-  shift 3
-  check thesis_table4_$t$suffix.tsv "$census" "--levels 5" thesis_heat --table 4.$t "$@"
-}
-# The catalog's paper levels for h10 and h15; the other readings at 2^-5 and the rate levels.
-for t in 5 6 7; do
-  heat $t "" ""
-  heat $t _h15 "" --h-rule h15
-done
-heat 5 _cellvol "--levels 5,7,8" --volumes cell
-heat 6 _cellvol "--levels 5,8,9" --volumes cell
-heat 7 _cellvol "--levels 5,8,9" --volumes cell
-heat 7 _dtexact "--levels 5,8,9" --dt-rule exact
-heat 7 _dtexact_cellvol "--levels 5,6,7,8,9" --dt-rule exact --volumes cell
-# Table 4.6's theta = 0 fingerprint under every reading (setup_identification), 2^-5 ... 2^-9.
-heat 6 _dtexact "--levels 5,6,7,8,9" --thetas 0 --dt-rule exact
-heat 6 _dtexact_cellvol "--levels 5,6,7,8,9" --thetas 0 --dt-rule exact --volumes cell
-# Tables 4.6 and 4.7 under h15, every theta at the documents' levels 2^-5 ... 2^-9, with the
-# other volumes and time step (the reading matrix, issue 25); 2^-5 for the cheap re-check.
-heat 6 _h15 "--levels 5,8,9" --h-rule h15
-heat 6 _h15_cellvol "--levels 5,6,7,8,9" --h-rule h15 --volumes cell
-heat 6 _h15_dtexact "--levels 5,6,7,8,9" --h-rule h15 --dt-rule exact
-heat 7 _h15_cellvol "--levels 5,6,7,8,9" --h-rule h15 --volumes cell
-heat 7 _h15_dtexact "--levels 5,6,7,8,9" --h-rule h15 --dt-rule exact
-# The identified reading (h15, V_i = dx^2, dt = dt0): every theta at the documents' levels.
-heat 6 _h15_dtexact_cellvol "--levels 5,6,7,8,9" --h-rule h15 --dt-rule exact --volumes cell
-heat 5 _h15_dtexact_cellvol "--levels 4,5,6,7,8" --h-rule h15 --dt-rule exact --volumes cell
-heat 7 _h15_dtexact_cellvol "--levels 5,8,9" --h-rule h15 --dt-rule exact --volumes cell
+# The store's files, from the study registry (src/gpm/studies/registry.cpp, each study's
+# store_files): program and arguments, the units each must hold (census; empty: the profile's
+# paper levels) and the cheap units recomputed.
+listing=$("$build/gpm" study --store-files) || { echo "verify_store.sh: gpm study --store-files failed" >&2; exit 2; }
+# (An empty cell is read as "-": read would merge two tabs.)
+while IFS=$'\t' read -r _study file program args census coarse _slice; do
+  [ "$args" = - ] && args=""
+  [ "$census" = - ] && census=""
+  # shellcheck disable=SC2086  # the arguments are words
+  check "$file.tsv" "$census" "$coarse" "$program" $args
+done < <(grep -v '^#' <<<"$listing" | tail -n +2 | awk -F'\t' -v OFS='\t' '{ for (i = 1; i <= NF; i++) if ($i == "") $i = "-"; print }')
+# A diagnostic of the Poisson problem (not a study of the registry: its own program).
 check thesis_poisson_diagnostic.tsv "--levels 7,8,9 --variants seed1,plain,seed1_cell,plain_cell" \
   "--levels 7 --weights quartic_polynomial --variants seed1,plain,seed1_cell" thesis_poisson_diagnostic
 

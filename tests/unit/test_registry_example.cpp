@@ -39,12 +39,8 @@ RegisteredStudy example_study() {
   s.columns = {"weight", "level", "h", "rel_error", "pairs", "time_s"};
   s.recheck_levels = {4};
   s.files = {{"example_interpolant", {}, {}, {{"example_interpolant_rates", "example_interpolant", {}, true}}}};
-  s.published = PublishedRates{"example_table", "example_table.tsv", {"weight"}, "all", {}, false,
-                               [](const StoreReader& read) {
-                                 std::vector<StoreSlice> out;
-                                 if (auto d = read("example_interpolant.tsv")) out.push_back({"all", std::move(*d)});
-                                 return out;
-                               }};
+  s.store_files = {{"example_interpolant", "all", {}, {}, {"--levels", "4"}}};
+  s.published = PublishedRates{"example_table", "example_table.tsv", {"weight"}, "all", {}, false, {}};
   s.plan = [](UnitPricer& p) {
     for (int k : p.paper() ? std::vector<int>{4, 5, 6} : std::vector<int>{4, 5})
       p.add_fused("example_interpolant", "quartic", k, example_h(k), "imoto9");

@@ -64,16 +64,18 @@ RegisteredStudy imoto() {
                                imoto_study().columns, {5, 6, 7});
   s.files = {{"imoto_fig5_table1", {}, {{"--printed-out", "imoto_pi3_printed"}},
               {{"imoto_table1", "imoto_fig5_table1", {}, /*scored=*/true}}}};
-  // Seed 1 is the reproduction; seeds 2-6 and the plain grid (no jitter) show how much of a
-  // rate is one realization's particle noise; cellvol is the delta-free error (V_i = dx^2).
-  s.published = PublishedRates{"imoto_table1", "imoto_table1.tsv", {"operator", "weight", "m"}, "all", {}, false,
-                               [](const StoreReader& read) {
-                                 std::vector<StoreSlice> out;
-                                 for (const std::string v : {"all", "seed2", "seed3", "seed4", "seed5", "seed6", "plain", "cellvol"})
-                                   if (auto d = read(v == "all" ? "imoto_fig5_table1.tsv" : "imoto_fig5_table1_" + v + ".tsv"))
-                                     out.push_back({v, std::move(*d)});
-                                 return out;
-                               }};
+  // Seed 1 is the reproduction; seeds 2-5 and the plain grid (no jitter) show how much of a
+  // rate is one realization's particle noise (seeds 4, 5 at the coarse and the rate levels
+  // only); cellvol is the delta-free error (V_i = dx^2).
+  const std::vector<std::string> coarse = {"--levels", "5,6,7"};
+  s.store_files = {{"imoto_fig5_table1", "all", {}, {}, coarse},
+                   {"imoto_fig5_table1_seed2", "seed2", {"--seed", "2"}, {}, coarse},
+                   {"imoto_fig5_table1_seed3", "seed3", {"--seed", "3"}, {}, coarse},
+                   {"imoto_fig5_table1_seed4", "seed4", {"--seed", "4"}, {"--levels", "5,6,7,11,12"}, coarse},
+                   {"imoto_fig5_table1_seed5", "seed5", {"--seed", "5"}, {"--levels", "5,6,7,11,12"}, coarse},
+                   {"imoto_fig5_table1_plain", "plain", {"--jitter", "0"}, {}, coarse},
+                   {"imoto_fig5_table1_cellvol", "cellvol", {"--volumes", "cell"}, {}, coarse}};
+  s.published = PublishedRates{"imoto_table1", "imoto_table1.tsv", {"operator", "weight", "m"}, "all", {}, false, {}};
   s.plan = [](UnitPricer& p) {
     for (int k : p.paper() ? imoto_study().levels.paper : imoto_study().levels.quick)
       for (double m : imoto_study().orders)
@@ -107,20 +109,23 @@ RegisteredStudy thesis_truncation(const ThesisTableSpec& t) {
   std::vector<std::string> key = {"weight", "function"};
   for (auto& q : t.requests)
     if (q.op != t.requests.front().op) key = {"weight", "operator", "function"};
-  // Seed 1 is the reproduction; …_seed2, …_seed3 (where stored) are other jitter
-  // realizations at the rate levels, for the seed band.  One slice per (h reading, volumes).
+  // Seed 1 is the reproduction; …_seed2, …_seed3 (Tables 4.1 and 4.3) are other jitter
+  // realizations at the coarse and the rate levels, for the seed band.
+  const std::vector<std::string> coarse = {"--levels", "5,6,7"};
+  s.store_files = {{t.program, "", {}, {}, coarse}};
+  if (t.program != "thesis_table4_2")
+    for (const char* seed : {"2", "3"})
+      s.store_files.push_back({t.program + "_seed" + seed, std::string("_seed") + seed, {"--seed", seed},
+                               {"--levels", "5,6,7,10,11"}, coarse});
+  // A stored file holds every (h reading, volumes): one slice each, the file's suffix after.
   s.published = PublishedRates{
-      t.program, t.program + "_long.tsv", key, "printed_voronoi", {}, false, [program = t.program](const StoreReader& read) {
+      t.program, t.program + "_long.tsv", key, "printed_voronoi", {}, false, [](const StoreFile& f, const TsvTable& data) {
         std::vector<StoreSlice> out;
-        for (const std::string v : {"", "_seed2", "_seed3"}) {
-          const auto data = read(program + v + ".tsv");
-          if (!data) continue;
-          for (const std::string reading : {"printed", "scaled"})
-            for (const std::string volumes : {"voronoi", "uniform"}) {
-              TsvTable slice = rows_where(*data, {{"h_reading", reading}, {"volumes", volumes}});
-              if (!slice.rows.empty()) out.push_back({reading + "_" + volumes + v, std::move(slice)});
-            }
-        }
+        for (const std::string reading : {"printed", "scaled"})
+          for (const std::string volumes : {"voronoi", "uniform"}) {
+            TsvTable slice = rows_where(data, {{"h_reading", reading}, {"volumes", volumes}});
+            if (!slice.rows.empty()) out.push_back({reading + "_" + volumes + f.slice, std::move(slice)});
+          }
         return out;
       }};
   s.plan = [&t](UnitPricer& p) {
@@ -164,16 +169,15 @@ RegisteredStudy poisson() {
                                poisson_table().columns, {5, 6});
   s.files = {{"thesis_table4_4", {}, {}, {{"thesis_table4_4_rates", "thesis_table4_4", {}, /*scored=*/true}}}};
   // Both readings of h in one file (the verdicts give each its slice); cellvol is the reading
-  // V_i = dx^2.
+  // V_i = dx^2; seeds 2, 3 at the coarse and the rate levels.
+  const std::vector<std::string> coarse = {"--levels", "5,6"};
+  s.store_files = {{"thesis_table4_4", "all", {}, {}, coarse},
+                   {"thesis_table4_4_cellvol", "cellvol", {"--volumes", "cell"}, {}, coarse},
+                   {"thesis_table4_4_seed2", "seed2", {"--seed", "2"}, {"--levels", "5,6,8,9"}, coarse},
+                   {"thesis_table4_4_seed3", "seed3", {"--seed", "3"}, {"--levels", "5,6,8,9"}, coarse}};
   s.published = PublishedRates{"thesis_table4_4", "thesis_table4_4_long.tsv", {"h_rule", "weight"}, "h10",
                                [](const HeatReading& r) { return r.h_rule + (r.volumes == "cell" ? "_cell" : ""); },
-                               false, [](const StoreReader& read) {
-                                 std::vector<StoreSlice> out;
-                                 for (const std::string v : {"all", "seed2", "seed3", "cellvol"})
-                                   if (auto d = read(v == "all" ? "thesis_table4_4.tsv" : "thesis_table4_4_" + v + ".tsv"))
-                                     out.push_back({v, std::move(*d)});
-                                 return out;
-                               }};
+                               false, {}};
   s.plan = [](UnitPricer& p) {
     const Calibration& c = p.cal();
     for (int k : p.paper() ? poisson_table().levels.paper : poisson_table().levels.quick)
@@ -208,6 +212,40 @@ std::string heat_file(const HeatTable& hp, const char* rule) {
   return name;
 }
 
+// The readings of a heat table the store holds (a reading's name, heat_tables.hpp), with the
+// levels each must hold (empty: the table's paper levels) and any further arguments: the
+// printed reading and h15 at the paper levels, the others at 2^-5 and the rate levels, Table
+// 4.6's theta = 0 fingerprint (setup_identification) at every level under each time step, and
+// the identified reading (h15, V_i = dx^2, dt = dt0) at every level.
+struct HeatStoreReading {
+  std::string reading, census;
+  std::vector<std::string> args;
+};
+std::vector<HeatStoreReading> heat_store_readings(const std::string& table) {
+  if (table == "4.5") return {{"h10", "", {}}, {"h15", "", {}}, {"h10_cell", "5,7,8", {}}, {"h15_cell_exact", "4,5,6,7,8", {}}};
+  if (table == "4.6")
+    return {{"h10", "", {}},
+            {"h15", "5,6,7,8,9", {}},
+            {"h10_cell", "5,8,9", {}},
+            {"h10_exact", "5,6,7,8,9", {"--thetas", "0"}},
+            {"h10_cell_exact", "5,6,7,8,9", {"--thetas", "0"}},
+            {"h15_cell", "5,6,7,8,9", {}},
+            {"h15_exact", "5,6,7,8,9", {}},
+            {"h15_cell_exact", "5,6,7,8,9", {}}};
+  if (table == "4.7")
+    return {{"h10", "", {}},           {"h15", "", {}},
+            {"h10_cell", "5,8,9", {}}, {"h10_exact", "5,8,9", {}},
+            {"h10_cell_exact", "5,6,7,8,9", {}}, {"h15_cell", "5,6,7,8,9", {}},
+            {"h15_exact", "5,6,7,8,9", {}},      {"h15_cell_exact", "5,8,9", {}}};
+  throw InputError("heat_store_readings: unknown table '" + table + "'");
+}
+
+HeatReading heat_reading_named(const std::string& name) {
+  for (const HeatReading& r : heat_reading_matrix({"h10", "h15"}, {"lattice", "cell"}, {"fit", "exact"}))
+    if (r.name() == name) return r;
+  throw InputError("unknown heat reading '" + name + "'");
+}
+
 // Tables 4.5–4.7 under both h rules: K = ⌈T/Δt₀⌉ steps, one product per step (M·U^k, which
 // also serves the CG's initial and true residuals) plus (θ > 0) the CG iterations; the
 // Laplacian's set-up once per (level, weight), not in the per-row seconds.
@@ -223,15 +261,20 @@ RegisteredStudy heat(const HeatTable& hp) {
                        {{"--rates-input", f + "_finite"}},
                        {{f + "_rates", f + "_finite", {}, /*scored=*/rule == std::string("h10")}}});
   }
-  // One slice per set-up reading stored (h rule x volumes x time step).
+  // One store file per set-up reading stored (h rule x volumes x time step), a slice each.
+  for (const HeatStoreReading& r : heat_store_readings(hp.table)) {
+    const HeatReading reading = heat_reading_named(r.reading);
+    std::vector<std::string> args;
+    if (reading.h_rule != "h10") args.insert(args.end(), {"--h-rule", reading.h_rule});
+    if (reading.dt_rule != "fit") args.insert(args.end(), {"--dt-rule", reading.dt_rule});
+    if (reading.volumes != "lattice") args.insert(args.end(), {"--volumes", reading.volumes});
+    args.insert(args.end(), r.args.begin(), r.args.end());
+    s.store_files.push_back({name + reading.file_suffix(), reading.name(), args,
+                             r.census.empty() ? std::vector<std::string>{} : std::vector<std::string>{"--levels", r.census},
+                             {"--levels", "5"}});
+  }
   s.published = PublishedRates{name, name + "_long.tsv", {"weight", "theta"}, "h10",
-                               [](const HeatReading& r) { return r.name(); }, /*finite_series=*/true,
-                               [name](const StoreReader& read) {
-                                 std::vector<StoreSlice> out;
-                                 for (const HeatReading& r : heat_reading_matrix({"h10", "h15"}, {"lattice", "cell"}, {"fit", "exact"}))
-                                   if (auto d = read(name + r.file_suffix() + ".tsv")) out.push_back({r.name(), std::move(*d)});
-                                 return out;
-                               }};
+                               [](const HeatReading& r) { return r.name(); }, /*finite_series=*/true, {}};
   s.plan = [&hp](UnitPricer& p) {
     for (const char* rule : {"h10", "h15"}) {
       const std::string study = heat_file(hp, rule);
@@ -343,6 +386,18 @@ const RegisteredStudy& StudyRegistry::study_of_file(const std::string& file) con
     for (auto& f : s.files)
       if (f.name == file) return s;
   throw InputError("no registered study writes the data file '" + file + "'");
+}
+
+TsvTable store_file_table(const StudyRegistry& registry) {
+  TsvTable t;
+  t.columns = {"study", "file", "program", "args", "census", "coarse", "slice"};
+  for (auto& s : registry)
+    for (auto& f : s.store_files) {
+      std::vector<std::string> args = s.fixed_args;
+      args.insert(args.end(), f.args.begin(), f.args.end());
+      t.add_row({s.name, f.name, s.program, join(args, " "), join(f.census, " "), join(f.coarse, " "), f.slice});
+    }
+  return t;
 }
 
 const StudyRegistry& study_registry() {

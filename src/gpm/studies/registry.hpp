@@ -42,12 +42,22 @@ struct StudyFile {
   std::vector<RateTableRule> rates;
 };
 
+// A file of the study in the committed result store (results/paper/<name>.tsv): how it was
+// made, what it must hold and which of its units the store check recomputes
+// (tests/store/verify_store.sh reads these from `gpm study --store-files`).
+struct StoreFile {
+  std::string name;
+  std::string slice;  // its set-up's name in the verdicts: all, seed2, h15_cell, …
+  std::vector<std::string> args;    // the program's arguments beyond the study's fixed ones
+  std::vector<std::string> census;  // options naming the units it must hold (none: the paper levels)
+  std::vector<std::string> coarse;  // options naming the cheap units recomputed by the check
+};
+
 // A slice of a stored file: rows of one set-up (reading of h, volumes, seed, …).
 struct StoreSlice {
   std::string slice;  // its name in the verdicts: printed_voronoi, h15_cell, seed2, …
   TsvTable data;
 };
-using StoreReader = std::function<std::optional<TsvTable>(const std::string& file)>;
 
 // The published rates a study is judged against in the store (verdicts.hpp).
 struct PublishedRates {
@@ -59,8 +69,9 @@ struct PublishedRates {
   // unset: the printed one.
   std::function<std::string(const HeatReading&)> identified_slice;
   bool finite_series = false;     // rates from the series that never blew up (heat)
-  // The study's store files, each cut into slices; `read` returns a stored file or nothing.
-  std::function<std::vector<StoreSlice>(const StoreReader& read)> store_slices;
+  // How a stored file is cut into slices (one file holding several set-ups); unset: the
+  // file is one slice, its StoreFile::slice.
+  std::function<std::vector<StoreSlice>(const StoreFile& file, const TsvTable& data)> cut;
 };
 
 struct RegisteredStudy {
@@ -74,6 +85,7 @@ struct RegisteredStudy {
   bool level_cache = true;           // rows cached per unit in the result store (store.hpp)
   std::vector<int> recheck_levels;   // the coarse units the paper profile re-checks first
   std::vector<StudyFile> files;      // what a make run writes
+  std::vector<StoreFile> store_files;  // what the committed store holds of it
   std::optional<PublishedRates> published;
   // Appends the units of the profile (pricer.paper()) to pricer.units().
   std::function<void(UnitPricer& pricer)> plan;
@@ -102,6 +114,10 @@ class StudyRegistry {
  private:
   std::vector<RegisteredStudy> studies_;
 };
+
+// The store files of every study: study, file, program, args (the fixed ones first), census,
+// coarse, slice (`gpm study --store-files`).
+TsvTable store_file_table(const StudyRegistry& registry);
 
 // The package's studies, in plan order.
 const StudyRegistry& study_registry();

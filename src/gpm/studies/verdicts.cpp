@@ -430,26 +430,30 @@ TsvTable score_table(const std::vector<JudgedRate>& rates, const std::string& pu
   return t;
 }
 
-namespace {
-// A stored file by name, or nothing where the store does not hold it.
-StoreReader store_reader(const std::string& store) {
-  return [store](const std::string& name) -> std::optional<TsvTable> {
-    if (!std::filesystem::exists(store + "/" + name)) return std::nullopt;
-    return TsvTable::load(store + "/" + name);
-  };
+std::vector<StoreSlice> stored_slices(const RegisteredStudy& s, const std::string& store) {
+  std::vector<StoreSlice> out;
+  for (const StoreFile& f : s.store_files) {
+    const std::string path = store + "/" + f.name + ".tsv";
+    if (!std::filesystem::exists(path)) continue;
+    const TsvTable data = TsvTable::load(path);
+    if (s.published && s.published->cut) {
+      for (StoreSlice& slice : s.published->cut(f, data)) out.push_back(std::move(slice));
+    } else {
+      out.push_back({f.slice, data});
+    }
+  }
+  return out;
 }
-}  // namespace
 
 std::vector<StoreRate> store_rates(const std::string& store, const std::string& published_dir,
                                    double tolerance, const StudyRegistry& registry) {
   // Per slice, named "table.slice": its rows (the slices in the order of their names).
   std::map<std::string, std::vector<StoreRate>> slices;
-  const StoreReader read = store_reader(store);
   for (auto& s : registry) {
     if (!s.published) continue;
     const PublishedRates& p = *s.published;
     const TsvTable pub = TsvTable::load(published_dir + "/" + p.file);
-    for (StoreSlice& slice : p.store_slices(read)) {
+    for (StoreSlice& slice : stored_slices(s, store)) {
       RateJoin join;
       join.keys = p.key, join.levels = "published", join.tolerance = tolerance;
       TsvTable joined;
@@ -467,12 +471,11 @@ std::vector<StoreRate> store_rates(const std::string& store, const std::string& 
 UnstableSeries store_unstable_series(const std::string& store, const std::string& published_dir,
                                      const StudyRegistry& registry) {
   UnstableSeries out;
-  const StoreReader read = store_reader(store);
   // The studies whose rates come from the series that never blew up (the heat tables).
   for (auto& s : registry) {
     if (!s.published || !s.published->finite_series) continue;
     std::optional<std::string> levels;
-    for (StoreSlice& slice : s.published->store_slices(read)) {
+    for (StoreSlice& slice : stored_slices(s, store)) {
       if (!levels) levels = TsvTable::load(published_dir + "/" + s.published->file).get("rate_levels").value_or("");
       add_unstable_series(s.published->table, slice.slice, slice.data, *levels, out);
     }

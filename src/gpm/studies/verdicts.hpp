@@ -165,8 +165,11 @@ TsvTable score_table(const std::vector<JudgedRate>& rates, const std::string& pu
 // The published file of a table (the registry's): imoto_table1.tsv, thesis_table4_N_long.tsv.
 std::string published_file(const std::string& published_dir, const std::string& table,
                            const StudyRegistry& registry = study_registry());
+// The slices of a study's files in the store (its store_files that are there, each cut by
+// its published rates' cut, else one slice).
+std::vector<StoreSlice> stored_slices(const RegisteredStudy& study, const std::string& store);
 // Every slice of every stored study file of the registry's studies with published rates
-// (their store_slices, then store_rates_of), in the order of their names "table.slice".
+// (stored_slices, then store_rates_of), in the order of their names "table.slice".
 std::vector<StoreRate> store_rates(const std::string& store, const std::string& published_dir,
                                    double tolerance, const StudyRegistry& registry = study_registry());
 // The unstable series of every stored reading of the studies judged on finite series (heat).
