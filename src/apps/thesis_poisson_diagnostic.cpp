@@ -34,7 +34,7 @@
 #include "gpm/solvers/poisson_probes.hpp"
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/profile.hpp"
-#include "gpm/studies/store.hpp"
+#include "gpm/studies/runner.hpp"
 #include "gpm/theory/smoothing.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -42,8 +42,7 @@ using namespace gpm;
 
 namespace {
 
-const std::vector<int> kQuickLevels = {5, 6, 7};
-const std::vector<int> kPaperLevels = {7, 8, 9};  // the thesis' rate levels are 8, 9
+const ProfileLevels kLevels = {{5, 6, 7}, {7, 8, 9}};  // the thesis' rate levels are 8, 9
 // The particle sets: three realizations of the jitter and the plain grid, with the volumes
 // of (A.10); then seed 1 and the plain grid with V_i = Δx² (pde_volumes, volumes.hpp).
 struct Variant {
@@ -77,21 +76,18 @@ Consistency measured_consistency(const DiscreteLaplacian& L, const PoissonData& 
 }
 
 int body(int argc, char** argv) {
-  Args a("thesis_poisson_diagnostic",
-         "Table 4.4 diagnostics: the Poisson error per reading of h, weight, level and particle\n"
-         "set (seeds 1-3, plain grid), where its maximum sits, and the error away from the boundary.");
-  a.opt("profile", "quick", "quick (levels 5-7) or paper (levels 7-9)")
-      .output("out", "", "data file (required)")
-      .opt("weights", join(pde_weights(), ","),
-           "comma-separated registry weights")
-      .opt("levels", "", "override the profile's levels (comma-separated k, dx = 2^-k)")
+  // No --seed: the particle sets are the study's own variants (seeds 1-3, the plain grid).
+  StudyRunner run("thesis_poisson_diagnostic",
+                  "Table 4.4 diagnostics: the Poisson error per reading of h, weight, level and particle\n"
+                  "set (seeds 1-3, plain grid), where its maximum sits, and the error away from the boundary.",
+                  kLevels.help(), StudyRunner::Kind::units_without_seed);
+  Args& a = run.args();
+  a.opt("weights", join(pde_weights(), ","), "comma-separated registry weights")
       .opt("variants", "seed1,seed2,seed3,plain,seed1_cell,plain_cell",
            "comma-separated particle sets (seedN: jitter 1/4 dx; plain: none; _cell: V_i = dx^2)")
       .opt("tol", "1e-10", "CG relative residual on the symmetric form");
-  add_cache_options(a);
-  a.parse(argc, argv);
-  const Profile prof = parse_profile(a.str("profile"));
-  const std::vector<int> levels = levels_option(a, prof, kQuickLevels, kPaperLevels, 3, 13);
+  run.parse(argc, argv);
+  const std::vector<int> levels = run.levels(kLevels.quick, kLevels.paper);
   const double tol = a.tolerance("tol");
   const auto weights = a.list("weights");
   for (auto& w : weights) weight(w);  // InputError naming an unknown weight, before any work
@@ -106,26 +102,25 @@ int body(int argc, char** argv) {
   }
 
   // --- The data file: one row per (reading of h, weight, level, particle set). -------------
-  LevelCache cache(a.str("out"),
-                   {{"program", "thesis_poisson_diagnostic"}, {"profile", profile_name(prof)},
-                    {"tol", fmt(tol)}, {"function", "sin2pi"}, {"volumes", "uniform |Omega_H|/N"},
-                    {"h10", pde_h_formula("h10")}, {"h15", pde_h_formula("h15")},
-                    {"variants", "seed1, seed2, seed3: jitter 1/4 dx; plain: jitter 0; "
-                                 "_cell: V_i = dx^2 instead of |Omega_H|/N"},
-                    {"rel_error_inner", "max over particles at least h from the boundary of Omega"},
-                    {"volume_mismatch", "V_i/dx^2 - 1"},
-                    {"eps_smoothing", "smoothing error eps(kh), k = 2 pi sqrt 2 (gpm smoothing)"},
-                    {"tau_predicted", "(V_i/dx^2)(1 - eps) - 1"},
-                    {"tau_fit", "sum tau_i lap_i / sum lap_i^2 over Omega, tau = lap_h u - lap u"},
-                    {"tau_max", "max |tau_i| / max |lap u| over Omega"}},
-                   {"h_rule", "weight", "level", "variant", "dx", "h", "h_over_H", "N_omega",
-                    "rel_error", "max_x", "max_y", "max_distance_over_h", "rel_error_inner",
-                    "volume_mismatch", "eps_smoothing", "tau_predicted", "tau_fit", "tau_max",
-                    "cg_iterations", "seconds"},
-                   4, cache_mode(a));
+  LevelCache& cache = run.open(
+      {{"program", "thesis_poisson_diagnostic"}, {"profile", profile_name(run.profile())},
+       {"tol", fmt(tol)}, {"function", "sin2pi"}, {"volumes", "uniform |Omega_H|/N"},
+       {"h10", pde_h_formula("h10")}, {"h15", pde_h_formula("h15")},
+       {"variants", "seed1, seed2, seed3: jitter 1/4 dx; plain: jitter 0; "
+                    "_cell: V_i = dx^2 instead of |Omega_H|/N"},
+       {"rel_error_inner", "max over particles at least h from the boundary of Omega"},
+       {"volume_mismatch", "V_i/dx^2 - 1"},
+       {"eps_smoothing", "smoothing error eps(kh), k = 2 pi sqrt 2 (gpm smoothing)"},
+       {"tau_predicted", "(V_i/dx^2)(1 - eps) - 1"},
+       {"tau_fit", "sum tau_i lap_i / sum lap_i^2 over Omega, tau = lap_h u - lap u"},
+       {"tau_max", "max |tau_i| / max |lap u| over Omega"}},
+      {"h_rule", "weight", "level", "variant", "dx", "h", "h_over_H", "N_omega",
+       "rel_error", "max_x", "max_y", "max_distance_over_h", "rel_error_inner",
+       "volume_mismatch", "eps_smoothing", "tau_predicted", "tau_fit", "tau_max",
+       "cg_iterations", "seconds"},
+      4);
   const TestFunction& u = test_function("sin2pi");
   const Domain dom;
-  double total = 0;
   for (int k : levels) {
     const double dx = std::ldexp(1.0, -k);
     for (const auto& var : variants) {
@@ -137,7 +132,7 @@ int body(int argc, char** argv) {
       for (const auto& rule : pde_h_rules()) {
         const double h = pde_h(rule, dx);
         for (const auto& w : weights) {
-          if (cache.has({rule, w, fmt(k), var.name})) continue;
+          if (cache.has({rule, w, fmt(k), var.name}) || !run.claim()) continue;
           const auto t0 = std::chrono::steady_clock::now();
           const DiscreteLaplacian L(p, V, weight(w), h, LaplacianStorage::automatic);
           const Consistency tau = measured_consistency(L, d);
@@ -146,25 +141,27 @@ int body(int argc, char** argv) {
           const ErrorLocation e = locate_error(p, d.g, r.U, h);
           const double secs =
               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-          total += secs;
-          cache.add({rule, w, fmt(k), var.name, fmt(dx), fmt(h), fmt(h / dom.H),
-                     fmt(L.n_unknowns()), fmt(e.rel_error), fmt(e.x), fmt(e.y),
-                     fmt(e.distance_to_boundary / h), fmt(e.rel_error_inner), fmt(mismatch),
-                     fmt(eps), fmt((1 + mismatch) * (1 - eps) - 1), fmt(tau.fit), fmt(tau.max),
-                     fmt(r.cg.iterations), fmt(secs)});
-          cache.table().set("wall_time_s", total);
-          cache.save();
-          std::fprintf(stderr,
-                       "thesis_poisson_diagnostic: %s %-28s 2^-%d %-5s err=%.4e at (%.3f, %.3f) "
-                       "%.2f h from the boundary; inner %.4e; tau fit %+.4e predicted %+.4e  %.1f s\n",
-                       rule.c_str(), w.c_str(), k, var.name.c_str(), e.rel_error, e.x, e.y,
-                       e.distance_to_boundary / h, e.rel_error_inner, tau.fit,
-                       (1 + mismatch) * (1 - eps) - 1, secs);
+          TsvRow row = run.row();
+          row["h_rule"] = rule, row["weight"] = w, row["level"] = fmt(k), row["variant"] = var.name;
+          row["dx"] = fmt(dx), row["h"] = fmt(h), row["h_over_H"] = fmt(h / dom.H);
+          row["N_omega"] = fmt(L.n_unknowns()), row["rel_error"] = fmt(e.rel_error);
+          row["max_x"] = fmt(e.x), row["max_y"] = fmt(e.y);
+          row["max_distance_over_h"] = fmt(e.distance_to_boundary / h);
+          row["rel_error_inner"] = fmt(e.rel_error_inner), row["volume_mismatch"] = fmt(mismatch);
+          row["eps_smoothing"] = fmt(eps), row["tau_predicted"] = fmt((1 + mismatch) * (1 - eps) - 1);
+          row["tau_fit"] = fmt(tau.fit), row["tau_max"] = fmt(tau.max);
+          row["cg_iterations"] = fmt(r.cg.iterations), row["seconds"] = fmt(secs);
+          run.add(row);
+          run.unit_done(0, line_printf("%s %-28s 2^-%d %-5s err=%.4e at (%.3f, %.3f) %.2f h from the "
+                                       "boundary; inner %.4e; tau fit %+.4e predicted %+.4e  %.1f s",
+                                       rule.c_str(), w.c_str(), k, var.name.c_str(), e.rel_error, e.x, e.y,
+                                       e.distance_to_boundary / h, e.rel_error_inner, tau.fit,
+                                       (1 + mismatch) * (1 - eps) - 1, secs));
         }
       }
     }
   }
-  cache.finish();
+  run.finish();
   return 0;
 }
 

@@ -71,7 +71,7 @@ StudyRunner::~StudyRunner() {
 }
 
 void StudyRunner::parse(int argc, char** argv) {
-  if (kind_ == Kind::units) add_cache_options(args_);
+  if (kind_ != Kind::whole_table) add_cache_options(args_);
   args_.parse(argc, argv);
   out_ = args_.required("out");
   profile_ = parse_profile(args_.str("profile"));
@@ -79,8 +79,8 @@ void StudyRunner::parse(int argc, char** argv) {
   if (device != "cpu" && device != "cuda")
     throw InputError("unknown --device '" + device + "'; valid: cpu, cuda");
   use_device(device == "cuda");
+  if (kind_ != Kind::whole_table) mode_ = cache_mode(args_);
   if (kind_ == Kind::units) {
-    mode_ = cache_mode(args_);
     seed_ = args_.seed();
     const std::string parts = args_.str("parts");
     char* end = nullptr;

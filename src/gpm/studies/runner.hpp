@@ -57,7 +57,9 @@ class StudyRunner {
   // finished units cached in the result store (--verify, --recheck).  `whole_table`: the file
   // is rewritten after each level (core_voronoi, whose seeds are a list of its own and which
   // takes seconds); no --seed, no cache options.
-  enum class Kind { units, whole_table };
+  // `units_without_seed`: cached units, but the study names its particle sets itself (no
+  // --seed, no --parts).
+  enum class Kind { units, units_without_seed, whole_table };
   // `profile_help` is the --profile help (the catalog's ProfileLevels::help()).
   StudyRunner(std::string program, std::string summary, std::string profile_help,
               Kind kind = Kind::units);
