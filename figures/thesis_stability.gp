@@ -1,7 +1,7 @@
 # Where the θ-method stops being stable: the measured limit Δt*/h² (from λ_max, confirmed by
 # runs at 0.9 and 1.1 Δt*) against the thesis' bound (3.3)/h² (δ = 1), over Δx; one column
 # per weight, top row explicit (θ = 0, with Table 4.6's nominal step 0.5h²), bottom row θ = ¼.
-# Line style = role (solid: limit, printed h; dashed: limit, scaled h; dotted: bound), colour =
+# Line style = role (solid: limit, h10 = the printed h; dashed: limit, h15; dotted: bound), colour =
 # weight; all panels share both axes.
 load 'figures/style.gp'
 # Print size: 760 px wide (A4 text width 703 px), 14 px text, nothing below 8 pt; panels placed
@@ -37,22 +37,22 @@ do for [t=1:2] {
     set xlabel (t == 2 ? 'particle spacing Δx' : '')
     eval panel_at(i, t)
     if (t == 1) {
-      plot sel(i, 'printed') using (column("dx")):(column("limit_over_h2_0")) with linespoints lt i dt 1 notitle, \
-           sel(i, 'scaled') using (column("dx")):(column("limit_over_h2_0")) with linespoints lt i dt 2 pt openpt(i) notitle, \
-           sel(i, 'printed') using (column("dx")):(column("bound_over_h2_0")) with linespoints lt i dt 3 lw 1 pt 1 notitle, \
+      plot sel(i, 'h10') using (column("dx")):(column("limit_over_h2_0")) with linespoints lt i dt 1 notitle, \
+           sel(i, 'h15') using (column("dx")):(column("limit_over_h2_0")) with linespoints lt i dt 2 pt openpt(i) notitle, \
+           sel(i, 'h10') using (column("dx")):(column("bound_over_h2_0")) with linespoints lt i dt 3 lw 1 pt 1 notitle, \
            0.5 with lines lc rgb '#000000' dt 4 lw 1 notitle
     } else {
-      plot sel(i, 'printed') using (column("dx")):(column("limit_over_h2_q")) with linespoints lt i dt 1 notitle, \
-           sel(i, 'scaled') using (column("dx")):(column("limit_over_h2_q")) with linespoints lt i dt 2 pt openpt(i) notitle, \
-           sel(i, 'printed') using (column("dx")):(column("bound_over_h2_q")) with linespoints lt i dt 3 lw 1 pt 1 notitle
+      plot sel(i, 'h10') using (column("dx")):(column("limit_over_h2_q")) with linespoints lt i dt 1 notitle, \
+           sel(i, 'h15') using (column("dx")):(column("limit_over_h2_q")) with linespoints lt i dt 2 pt openpt(i) notitle, \
+           sel(i, 'h10') using (column("dx")):(column("bound_over_h2_q")) with linespoints lt i dt 3 lw 1 pt 1 notitle
     }
   }
 }
 # The key: the roles, drawn in black, in one strip under the panels.
 KEY_TOP = 50.0 / Hc; eval key_strip
 set key center center horizontal maxrows 2 samplen 2.5 width -2 box noopaque
-plot NaN with linespoints lt 1 dt 1 title 'limit, printed h', \
-     NaN with linespoints lt 1 dt 2 pt 6 title 'limit, scaled h', \
+plot NaN with linespoints lt 1 dt 1 title 'limit, h10 (printed h)', \
+     NaN with linespoints lt 1 dt 2 pt 6 title 'limit, h15', \
      NaN with linespoints lt 1 dt 3 lw 1 pt 1 title 'bound (3.3), δ = 1', \
      NaN with lines lc rgb '#000000' dt 4 lw 1 title 'Table 4.6: 0.5 h^2'
 unset multiplot

@@ -2,7 +2,7 @@
 // measured, against the time-step bound (3.3) of Theorem 3.1.
 //
 // For every weight of the heat study (quartic, piecewise cubic, piecewise quintic
-// polynomial), each reading of h (printed (2.6⁴·2^-10·Δx)^{1/4} and scaled
+// polynomial), each reading of h (h10, the printed (2.6⁴·2^-10·Δx)^{1/4}, and h15,
 // (2.6⁴·2^-15·Δx)^{1/4}) and each level Δx = 2^-k, on the heat study's particles (jittered
 // grid, seed 1) with V_i = |Ω_H|/N:
 //   1. λ_max of −M_ΩΩ by Lanczos (stability.hpp), and the limits Δt* = 2/((1−2θ)κλ_max) for
@@ -44,13 +44,9 @@ namespace {
 
 // --- Parameters --------------------------------------------------------------------------
 const std::vector<std::string>& kWeights = pde_weights();  // catalog.hpp
-// The data's names for the two readings of h (influence_radius.hpp): printed = h10, scaled = h15.
-struct HRule {
-  std::string name, rule;
-};
-const std::vector<HRule> kHRules = {{"printed", "h10"}, {"scaled", "h15"}};
+// The two readings of h are the PDE tables' (influence_radius.hpp): h10 as printed, h15.
 // Quick: 2^-7 alone costs ~100 s per row on two shared cores (Lanczos needs hundreds of
-// products there); the paper profile goes to 2^-9 (matrix-free at 2^-8, 2^-9 for printed h).
+// products there); the paper profile goes to 2^-9 (matrix-free at 2^-8, 2^-9 for h10).
 // The quick profile adds the coarse 2^-4 so that its limits against Δx are a trend of
 // three points, not a line through two (2^-7 would cost minutes).
 const ProfileLevels kLevels = {{4, 5, 6}, {5, 6, 7, 8, 9}};  // quick, paper
@@ -91,7 +87,7 @@ int body(int argc, char** argv) {
                     fmt(kBelow) + " and " + fmt(kAbove) + " x limit_dt"},
        {"steps", fmt(static_cast<long long>(steps))}, {"stop_growth", fmt(stop_growth)},
        {"cg_tol", "1e-10"}, {"delta", "1 (bound (3.3) at its most permissive)"},
-       {"h", "printed (2.6^4 2^-10 dx)^(1/4), scaled (2.6^4 2^-15 dx)^(1/4)"},
+       {"h10", pde_h_formula("h10")}, {"h15", pde_h_formula("h15")},
        {"volumes", "uniform |Omega_H|/N"},
        {"limit", "2/((1-2 theta) kappa lambda_max)"},
        {"table46_dt", "T/ceil(T/(0.5 h^2)), T = 0.1"}},
@@ -109,10 +105,10 @@ int body(int argc, char** argv) {
     bool built = false;
     Particles p;
     std::vector<double> V;
-    for (const auto& rule : kHRules) {
-      const double h = pde_h(rule.rule, dx);
+    for (const std::string& rule : pde_h_rules()) {
+      const double h = pde_h(rule, dx);
       for (const auto& wname : kWeights) {
-        if (cache.has({wname, rule.name, fmt(k)}) || !run.claim(predicted_pairs(dx, h))) continue;
+        if (cache.has({wname, rule, fmt(k)}) || !run.claim(predicted_pairs(dx, h))) continue;
         if (!built) p = jittered_grid(dx, seed), V = uniform_volumes(p, dom), built = true;
         const auto t0 = std::chrono::steady_clock::now();
         const WeightFunction& w = weight(wname);
@@ -144,7 +140,7 @@ int body(int argc, char** argv) {
         const double h2 = h * h;
         // The row, by column name: each number beside the name it is read by.
         TsvRow row = run.row();
-        row["weight"] = wname, row["h_rule"] = rule.name, row["level"] = fmt(k);
+        row["weight"] = wname, row["h_rule"] = rule, row["level"] = fmt(k);
         row["dx"] = fmt(dx), row["h"] = fmt(h), row["N_omega"] = fmt(L.n_unknowns());
         row["storage"] = L.assembled() ? "assembled" : "matrix_free";
         row["lambda_max"] = fmt(lz.lambda_max), row["lanczos_iterations"] = fmt(lz.iterations);
@@ -167,7 +163,7 @@ int body(int argc, char** argv) {
             "%-28s %-7s dx=2^-%d h=%.4f lambda_max=%.5g (%d it) limit/h^2 = %.4f (theta 0), "
             "%.4f (1/4); bound/h^2 = %.4f, %.4f; growth %.3g / %.3g (theta 0), %.3g / %.3g (1/4) "
             "%s  %.1f s",
-            wname.c_str(), rule.name.c_str(), k, h, lz.lambda_max, lz.iterations, lim0 / h2,
+            wname.c_str(), rule.c_str(), k, h, lz.lambda_max, lz.iterations, lim0 / h2,
             limq / h2, b0 / h2, bq / h2, s0.growth_max, u0.growth_final, sq.growth_max,
             uq.growth_final, confirmed ? "confirmed" : "NOT CONFIRMED", secs));
       }
