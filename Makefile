@@ -104,10 +104,12 @@ include $(STUDIES_MK)
 endif
 include $(sort $(wildcard mk/*.mk))
 
-# Figures: gnuplot scripts read data/<profile>, write figures/out/<name>.svg.
+# Figures: gnuplot scripts read data/<profile>, write figures/out/<name>.svg.  A figure that
+# draws a group of studies takes its list from the registry (build/studies.mk), not typed.
+GNUPLOT_STUDIES = heat_studies='$(STUDIES_heat)'
 $(FIGOUT)/%.svg:
 	@mkdir -p $(FIGOUT)
-	gnuplot -e "datadir='$(DATA)'; out='$@.tmp'" $< && mv $@.tmp $@
+	gnuplot -e "datadir='$(DATA)'; $(GNUPLOT_STUDIES); out='$@.tmp'" $< && mv $@.tmp $@
 
 data: $(DATAFILES)
 figures: $(FIGFILES)

@@ -18,16 +18,20 @@ w = 'piecewise_cubic_polynomial'
 sel(f, t) = rows_named(f, sprintf('$c["weight"]=="%s" && $c["theta"]=="%s" && $c["blew_up"]=="no"', w, t))
 PL = 78.0 / W; PR = 1 - 14.0 / W; GX = 56.0 / W; PW = (PR - PL - 2 * GX) / 3
 PT = 1 - 68.0 / Hc; PB = 130.0 / Hc; GY = 0; PH = PT - PB
+# The heat tables are the registry's (make passes heat_studies, STUDIES_heat of
+# build/studies.mk); each panel's title is read from its data file's header.
+if (!exists("heat_studies")) { print "thesis_heat_readings.gp: give heat_studies (make passes it)"; exit status 1 }
+meta(f, key) = system(sprintf("sed -n 's/^# %s = //p' '%s' | head -1", key, f))
 set multiplot
 i = 0
-do for [tab in '4_5 4_6 4_7'] {
+do for [s in heat_studies] {
   i = i + 1
-  f10 = datadir.'/thesis_table'.tab.'.tsv'
-  f15 = datadir.'/thesis_table'.tab.'_h15.tsv'
+  f10 = datadir.'/'.s.'.tsv'
+  f15 = datadir.'/'.s.'_h15.tsv'
   # A margin of a quarter level on either side (points on the frame would be cut in half).
   stats f10 using (column("dx")) name 'DX' nooutput
   set xrange [DX_min / 1.2 : DX_max * 1.2]
-  set title (tab eq '4_5' ? "Table 4.5\nΔt = 0.0025h^2" : tab eq '4_6' ? "Table 4.6\nΔt = 0.5h^2" : "Table 4.7\nΔt = 0.5h")
+  set title sprintf("Table %s\nΔt = %s", meta(f10, 'table'), meta(f10, 'dt_nominal'))
   set ylabel (i == 1 ? 'relative error (4.2), ℓ^∞(0,T; ℓ^2(Ω_H))' : '')
   set xlabel 'Δx' offset 0,0.3
   eval panel_at(i, 1)

@@ -83,4 +83,4 @@ $(FIGOUT)/store_thesis_heat_readings.svg: $(foreach f,$(STUDY_FILES_heat),$(STOR
 $(FIGOUT)/store_imoto_fig5.svg: $(STORE)/imoto_fig5_table1.tsv tables/published/imoto_table1.tsv
 $(FIGOUT)/store_%.svg: figures/%.gp figures/style.gp
 	@mkdir -p $(FIGOUT)
-	gnuplot -e "datadir='$(STORE)'; out='$@.tmp'" $< && mv $@.tmp $@
+	gnuplot -e "datadir='$(STORE)'; $(GNUPLOT_STUDIES); out='$@.tmp'" $< && mv $@.tmp $@
