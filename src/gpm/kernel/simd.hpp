@@ -1,7 +1,8 @@
 // Vectors of doubles for the neighbour-sum loops: GCC vector extensions as wide as the
 // target's widest double vector (8 lanes with AVX-512), with the few helpers every loop
-// needs.  Shared by the fused kernel (kernel.cpp) and the measured-limit benchmark
-// (bench/bench_limit.cpp), which must time exactly the kernel's instruction mix.
+// needs.  Shared by the fused kernel (kernel.cpp and its private headers) and the
+// measured-limit benchmark (bench/bench_limit.cpp), which must time exactly the kernel's
+// instruction mix.
 // The arithmetic is written once; the compiler emits one instruction per operation, so
 // nothing depends on the auto-vectorizer.
 #pragma once
