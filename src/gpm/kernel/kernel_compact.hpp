@@ -30,10 +30,7 @@ __attribute__((always_inline)) inline void KernelPass::shared(Thread& th, vd dx,
 #if defined(__AVX512F__)
   if (opt.fast_rsqrt) {
     const vd r2s = nz ? r2c : vbc(h2);
-    vd y = (vd)_mm512_maskz_rsqrt14_pd(static_cast<__mmask8>(0xFF), (__m512d)r2s);
-    const vd half = vbc(0.5), three_half = vbc(1.5);
-    y = y * (three_half - half * r2s * y * y);
-    y = y * (three_half - half * r2s * y * y);
+    const vd y = rsqrt_newton(r2s);
     r = nz ? r2s * y : Z;
     iq = H * y;  // h/r = 1/q; 1 where r = 0
   } else

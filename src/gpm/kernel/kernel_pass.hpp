@@ -15,10 +15,6 @@
 #include <type_traits>
 #include <vector>
 
-#if defined(__AVX512F__) || defined(__AVX__) || defined(__SSE2__)
-#include <immintrin.h>
-#endif
-
 #include "gpm/geometry/cells.hpp"
 #include "gpm/kernel/kernel.hpp"
 #include "gpm/kernel/kernel_blocks.hpp"  // the per-weight loops and plans (and kernel_poly.hpp)
@@ -147,10 +143,7 @@ struct KernelPass {
 #if defined(__AVX512F__)
       if constexpr (RSQRT) {
         const vd r2s = nz ? r2 : H2;
-        vd y = (vd)_mm512_maskz_rsqrt14_pd(static_cast<__mmask8>(0xFF), (__m512d)r2s);
-        const vd half = vbc(0.5), three_half = vbc(1.5);
-        y = y * (three_half - half * r2s * y * y);
-        y = y * (three_half - half * r2s * y * y);
+        const vd y = rsqrt_newton(r2s);
         r = nz ? r2s * y : Z;
         i1 = H * y;  // h/r = 1/q; 1 where r = 0
         i2 = i1 * i1;

@@ -49,6 +49,18 @@ inline vd vsqrt(vd x) {
 #endif
 }
 
+#if defined(__AVX512F__)
+// 1/√x by rsqrt14 (14 bits) and two Newton steps (≤ 2 ulp): KernelOptions::fast_rsqrt, the
+// same recipe in the masked and the compact loops.  Every lane is computed (a full mask).
+inline vd rsqrt_newton(vd x) {
+  vd y = (vd)_mm512_maskz_rsqrt14_pd(static_cast<__mmask8>(0xFF), (__m512d)x);
+  const vd half = vbc(0.5), three_half = vbc(1.5);
+  y = y * (three_half - half * x * y * y);
+  y = y * (three_half - half * x * y * y);
+  return y;
+}
+#endif
+
 template <int NC>
 inline vd horner(const double* c, vd q) {
   vd s = vbc(c[NC - 1]);

@@ -46,23 +46,21 @@ bool same_pieces(const std::vector<PolyPiece>& a, const std::vector<PolyPiece>& 
   return true;
 }
 
+// Each erratum: the weight's name and source, its printed and corrected forms, the computed
+// evidence, and the two normalizations (WeightErratum's fields, in order).
+
 WeightErratum erratum_pi3() {
   const WeightFunction& fixed = weight("Pi3");
   WeightFunction printed = fixed;
   printed.constant = 5 / kPi;
   const double shape_norm = compute_properties(make("", "", "", "", 1, fixed.shape)).norm_2d;
   const auto pp = compute_properties(printed), fp = compute_properties(fixed);
-  WeightErratum e;
-  e.name = "Pi3";
-  e.source = "imoto §5 (Π3)";
-  e.printed = "5/π (1−r)(2−3r)";
-  e.corrected = "6/π (1−r)(2−3r)";
-  e.printed_norm_2d = pp.norm_2d;
-  e.corrected_norm_2d = fp.norm_2d;
-  e.evidence = "printed form integrates to " + fmt6(pp.norm_2d) + " (5/6); 1/(2π∫r(1−r)(2−3r)dr) = " + fmt6(kPi / shape_norm) +
-               "/π, so the constant is 6/π; the shape is right (order k = " +
-               std::to_string(fp.order_k) + " as stated)";
-  return e;
+  std::string evidence = "printed form integrates to " + fmt6(pp.norm_2d) +
+                         " (5/6); 1/(2π∫r(1−r)(2−3r)dr) = " + fmt6(kPi / shape_norm) +
+                         "/π, so the constant is 6/π; the shape is right (order k = " +
+                         std::to_string(fp.order_k) + " as stated)";
+  return {"Pi3", "imoto §5 (Π3)", "5/π (1−r)(2−3r)", "6/π (1−r)(2−3r)", std::move(evidence),
+          pp.norm_2d, fp.norm_2d};
 }
 
 WeightErratum erratum_cubic_bspline() {
@@ -71,20 +69,17 @@ WeightErratum erratum_cubic_bspline() {
   printed.shape = cubic_bspline_shape(true);
   const auto pp = compute_properties(printed), fp = compute_properties(fixed);
   const auto [x, jump] = largest_knot_jump(printed.shape);
-  WeightErratum e;
-  e.name = "cubic_bspline";
-  e.source = "thesis §4.1.1 w^CB";
-  e.printed = "40/(7π){1−6r²+6r³ on [0,½); 2(1−r)² on [½,1)}";
-  e.corrected = "40/(7π){1−6r²+6r³ on [0,½); 2(1−r)³ on [½,1)}";
-  e.printed_norm_2d = pp.norm_2d;
-  e.corrected_norm_2d = fp.norm_2d;
-  e.evidence = "printed form integrates to " + fmt6(pp.norm_2d) + " and is discontinuous at r=" +
-               fmt6(x) + " (bracket jumps by " + fmt6(jump) + ", w by " +
-               fmt6(fixed.constant * jump) + "); with 2(1−r)³ it integrates to " +
-               fmt6(fp.norm_2d) + (fp.c1 ? ", is C¹" : ", is not C¹") +
-               (same_pieces(fixed.shape, weight("Pi2").shape) ? " and equals imoto (Π2)"
-                                                              : " but differs from imoto (Π2)");
-  return e;
+  std::string evidence =
+      "printed form integrates to " + fmt6(pp.norm_2d) + " and is discontinuous at r=" +
+      fmt6(x) + " (bracket jumps by " + fmt6(jump) + ", w by " + fmt6(fixed.constant * jump) +
+      "); with 2(1−r)³ it integrates to " + fmt6(fp.norm_2d) +
+      (fp.c1 ? ", is C¹" : ", is not C¹") +
+      (same_pieces(fixed.shape, weight("Pi2").shape) ? " and equals imoto (Π2)"
+                                                     : " but differs from imoto (Π2)");
+  return {"cubic_bspline", "thesis §4.1.1 w^CB",
+          "40/(7π){1−6r²+6r³ on [0,½); 2(1−r)² on [½,1)}",
+          "40/(7π){1−6r²+6r³ on [0,½); 2(1−r)³ on [½,1)}", std::move(evidence), pp.norm_2d,
+          fp.norm_2d};
 }
 
 WeightErratum erratum_quintic_bspline() {
@@ -97,19 +92,17 @@ WeightErratum erratum_quintic_bspline() {
   printed.constant = printed_const;
   printed.shape = quintic_bspline_shape(+1);
   const auto fp = compute_properties(fixed);
-  WeightErratum e;
-  e.name = "quintic_bspline";
-  e.source = "thesis §4.1.1 w^QB";
-  e.printed = "63/(578π){(3−3r)⁵+6(2−3r)⁵+15(1−3r)⁵; (3−3r)⁵+6(2−3r)⁵; (3−3r)⁵}";
-  e.corrected = "63/(478π){(3−3r)⁵−6(2−3r)⁵+15(1−3r)⁵; (3−3r)⁵−6(2−3r)⁵; (3−3r)⁵}";
-  e.printed_norm_2d = compute_properties(printed).norm_2d;
-  e.corrected_norm_2d = fp.norm_2d;
-  e.evidence = "printed form integrates to " + fmt6(e.printed_norm_2d) +
-               "; fixing only 578→478 gives " + fmt6(norm_of(63 / (478 * kPi), +1)) +
-               ", only +6→−6 gives " + fmt6(norm_of(printed_const, -1)) + ", both give " +
-               fmt6(fp.norm_2d) + " (the standard quintic B-spline, 7/(478πh²) with q = 3r); " +
-               "w(0) printed " + fmt6(printed.value(0)) + " vs corrected " + fmt6(fixed.value(0));
-  return e;
+  const double printed_norm = compute_properties(printed).norm_2d;
+  std::string evidence =
+      "printed form integrates to " + fmt6(printed_norm) + "; fixing only 578→478 gives " +
+      fmt6(norm_of(63 / (478 * kPi), +1)) + ", only +6→−6 gives " +
+      fmt6(norm_of(printed_const, -1)) + ", both give " + fmt6(fp.norm_2d) +
+      " (the standard quintic B-spline, 7/(478πh²) with q = 3r); " + "w(0) printed " +
+      fmt6(printed.value(0)) + " vs corrected " + fmt6(fixed.value(0));
+  return {"quintic_bspline", "thesis §4.1.1 w^QB",
+          "63/(578π){(3−3r)⁵+6(2−3r)⁵+15(1−3r)⁵; (3−3r)⁵+6(2−3r)⁵; (3−3r)⁵}",
+          "63/(478π){(3−3r)⁵−6(2−3r)⁵+15(1−3r)⁵; (3−3r)⁵−6(2−3r)⁵; (3−3r)⁵}",
+          std::move(evidence), printed_norm, fp.norm_2d};
 }
 
 }  // namespace
