@@ -11,10 +11,7 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <cmath>
-#include <cstring>
 #include <sstream>
-#include <type_traits>
 #include <utility>
 
 #include "gpm/error.hpp"
