@@ -51,6 +51,7 @@
 #include "gpm/geometry/domain.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/kernel/kernel.hpp"
+#include "gpm/kernel/plain_baseline.hpp"
 #include "gpm/operators/testfunctions.hpp"
 #include "gpm/weights/weights.hpp"
 

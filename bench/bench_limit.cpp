@@ -5,7 +5,7 @@
 //  (a) arithmetic.  The neighbour-sum kernel spends, per candidate pair (one vector lane),
 //      one square root, at most one divide, a few Horner FMAs and some accumulations.  The
 //      "mix" tests run exactly the operations of the kernel's fused one-weight loop
-//      (kernel.cpp, fused1_range: same masks, same Horner per piece, same accumulators)
+//      (kernel_fused1.hpp, fused1_range: same masks, same Horner per piece, same accumulators)
 //      over 512 candidates kept in L1 and reused, so nothing waits on memory and nothing
 //      else (cell ranges, tails, per-target reductions) is done: the rate the kernel would
 //      reach if a candidate cost only its arithmetic.  The pure tests (sqrt, divide,
@@ -107,7 +107,7 @@ MixPlan plan_for(const gpm::WeightFunction& w) {
   return mp;
 }
 
-// The kernel's fused one-weight step (kernel.cpp fused1_range) over the candidates,
+// The kernel's fused one-weight step (kernel_fused1.hpp, fused1_range) over the candidates,
 // `sweeps` times.  PI: Π wanted; GM = 5: G = W·h²/r² (one divide), GM = 1: own Horner
 // of w/q² (no divide).  Returns the sum of the accumulators.
 template <int NP, int NC, bool PI, int GM>

@@ -11,6 +11,7 @@
 #include "gpm/geometry/cells.hpp"
 #include "gpm/geometry/domain.hpp"
 #include "gpm/kernel/kernel.hpp"
+#include "gpm/kernel/plain_baseline.hpp"
 #include "gpm/operators/operators.hpp"
 #include "gpm/operators/testfunctions.hpp"
 #include "gpm/weights/weights.hpp"

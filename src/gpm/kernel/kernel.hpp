@@ -139,15 +139,4 @@ class FusedKernel {
 // Indices of the particles in Ω (the targets of every truncation-error study).
 std::vector<int32_t> omega_targets(const Particles& p);
 
-// The plain baseline, for the benchmark only: per target a loop over the 3×3 cells of
-// size h, particles as array of structs {x, y, V, v}, `if (r < h)`, one weight, one field,
-// Π + ∇ + Δ.  Same definitions and output as the kernel.
-struct BaselineResult {
-  std::vector<double> interp, grad_x, grad_y, lap;  // indexed like the targets
-};
-BaselineResult plain_baseline(const std::vector<double>& x, const std::vector<double>& y,
-                              const std::vector<double>& V, const std::vector<double>& v,
-                              const WeightFunction& w, double h,
-                              const std::vector<int32_t>& targets, int threads = 0);
-
 }  // namespace gpm

@@ -1,6 +1,7 @@
-// The fused kernel's per-weight loops over blocks of pairs and the dispatchers that pick
-// one instantiation per weight.  Private to the kernel: included by kernel.cpp only (its
-// anonymous namespace is that translation unit's).
+// The fused kernel's per-weight loops over blocks of pairs, and the plan of one weight
+// (which loop serves it); the pick of one instantiation per weight is in
+// kernel_dispatch.hpp.  Private to the kernel: included by kernel.cpp only (through
+// kernel_pass.hpp; its anonymous namespace is that translation unit's).
 #pragma once
 #include <type_traits>
 #include <utility>
@@ -16,7 +17,8 @@ namespace {
 // V_i·v_i and V_i·(v_i − v_j) (0 outside the disc and, for the latter, at r = 0).  Each
 // weight streams over the block once with its accumulators in registers; the loops are
 // instantiated for the pieces, the (padded) number of coefficients, the operators and
-// groups of one or two fields, and picked once per weight when the kernel is built.
+// groups of one or two fields, and picked once per weight when the kernel is built
+// (pick, pick_pg in kernel_dispatch.hpp).
 
 constexpr int kBlockVec = 64;  // vectors per block (512 pairs with AVX-512; ~24 KB)
 
@@ -28,9 +30,6 @@ struct BlockView {
 };
 
 using BlockFn = void (*)(const PolyEval&, const BlockView&, int nvec, int f0, vd* acc);
-
-// Coefficient counts instantiated (a polynomial is padded with zero coefficients).
-constexpr int padded_nc(int nc) { return nc <= 2 ? 2 : nc <= 3 ? 3 : nc <= 4 ? 4 : nc <= 6 ? 6 : 8; }
 
 template <int NP, int NC>
 __attribute__((always_inline)) inline vd eval_t(const PolyEval& e, vd q) {
@@ -131,38 +130,6 @@ void pg_block(const PolyEval& e, const BlockView& B, int nvec, int f0, vd* acc) 
   }
 }
 
-template <int NP, int NC, bool GRAD, bool LAP>
-BlockFn pick_pg_nf(int nf) {
-  return nf == 1 ? &pg_block<NP, NC, GRAD, LAP, 1> : &pg_block<NP, NC, GRAD, LAP, 2>;
-}
-template <int NP, int NC>
-BlockFn pick_pg_ops(unsigned ops, int nf) {
-  const bool grad = ops & kGrad, lap = ops & kLap;
-  if (grad && lap) return pick_pg_nf<NP, NC, true, true>(nf);
-  if (grad) return pick_pg_nf<NP, NC, true, false>(nf);
-  return pick_pg_nf<NP, NC, false, true>(nf);
-}
-template <int NP>
-BlockFn pick_pg_nc(int nc, unsigned ops, int nf) {
-  switch (padded_nc(nc)) {
-    case 2: return pick_pg_ops<NP, 2>(ops, nf);
-    case 3: return pick_pg_ops<NP, 3>(ops, nf);
-    case 4: return pick_pg_ops<NP, 4>(ops, nf);
-    case 6: return pick_pg_ops<NP, 6>(ops, nf);
-    default: return pick_pg_ops<NP, 8>(ops, nf);
-  }
-}
-// nullptr where not instantiated (then Π and G go separately).
-BlockFn pick_pg(const PolyEval& pi, unsigned ops, int nf) {
-  if (pi.nc > 8) return nullptr;
-  switch (pi.np) {
-    case 1: return pick_pg_nc<1>(pi.nc, ops, nf);
-    case 2: return pick_pg_nc<2>(pi.nc, ops, nf);
-    case 3: return pick_pg_nc<3>(pi.nc, ops, nf);
-    default: return nullptr;
-  }
-}
-
 // Fallbacks for more pieces or coefficients than instantiated: runtime loops, one field.
 void pi_generic(const PolyEval& e, const BlockView& B, int nvec, int f0, vd* acc) {
   vd a = vbc(0.0);
@@ -184,51 +151,8 @@ void g_generic(const PolyEval& e, const BlockView& B, int nvec, int f0, vd* acc)
   if (LAP) acc[4 * f0 + 3] += al;
 }
 
-template <int NP, int NC>
-BlockFn pick_pi_nf(int nf) {
-  return nf == 1 ? &pi_block<NP, NC, 1> : &pi_block<NP, NC, 2>;
-}
-template <int NP, int NC, bool M, bool GRAD, bool LAP>
-BlockFn pick_g_nf(int nf) {
-  return nf == 1 ? &g_block<NP, NC, M, GRAD, LAP, 1> : &g_block<NP, NC, M, GRAD, LAP, 2>;
-}
-template <int NP, int NC, bool M>
-BlockFn pick_g_ops(unsigned ops, int nf) {
-  const bool grad = ops & kGrad, lap = ops & kLap;
-  if (grad && lap) return pick_g_nf<NP, NC, M, true, true>(nf);
-  if (grad) return pick_g_nf<NP, NC, M, true, false>(nf);
-  return pick_g_nf<NP, NC, M, false, true>(nf);
-}
-template <int NP, int NC>
-BlockFn pick_g_m(int m, unsigned ops, int nf) {
-  return m > 0 ? pick_g_ops<NP, NC, true>(ops, nf) : pick_g_ops<NP, NC, false>(ops, nf);
-}
-template <int NP>
-BlockFn pick_nc(bool pi, int nc, int m, unsigned ops, int nf) {
-  switch (padded_nc(nc)) {
-    case 2: return pi ? pick_pi_nf<NP, 2>(nf) : pick_g_m<NP, 2>(m, ops, nf);
-    case 3: return pi ? pick_pi_nf<NP, 3>(nf) : pick_g_m<NP, 3>(m, ops, nf);
-    case 4: return pi ? pick_pi_nf<NP, 4>(nf) : pick_g_m<NP, 4>(m, ops, nf);
-    case 6: return pi ? pick_pi_nf<NP, 6>(nf) : pick_g_m<NP, 6>(m, ops, nf);
-    default: return pi ? pick_pi_nf<NP, 8>(nf) : pick_g_m<NP, 8>(m, ops, nf);
-  }
-}
-// nf: group size (1 or 2).  Returns nullptr where only the one-field fallback exists.
-BlockFn pick(bool pi, const PolyEval& e, unsigned ops, int nf) {
-  if (e.np <= 3 && e.nc <= 8) {
-    switch (e.np) {
-      case 1: return pick_nc<1>(pi, e.nc, e.m, ops, nf);
-      case 2: return pick_nc<2>(pi, e.nc, e.m, ops, nf);
-      default: return pick_nc<3>(pi, e.nc, e.m, ops, nf);
-    }
-  }
-  if (nf != 1) return nullptr;
-  if (pi) return &pi_generic;
-  const bool grad = ops & kGrad, lap = ops & kLap;
-  return grad && lap ? &g_generic<true, true> : grad ? &g_generic<true, false>
-                                                     : &g_generic<false, true>;
-}
-
+// The plan of one weight, made when the kernel is built: its polynomials and the block
+// loops picked for them.
 struct WPlan {
   unsigned ops = 0;
   PolyEval pi, g;                      // w(q) and w(q)/q² (g.m: power of 1/q)
@@ -236,7 +160,6 @@ struct WPlan {
   BlockFn g1 = nullptr, g2 = nullptr;
   BlockFn pg1 = nullptr, pg2 = nullptr;  // Π and G together (G = W·(h/r)²), if set
 };
-
 
 }  // namespace
 }  // namespace gpm

@@ -1,13 +1,14 @@
 // The plain baseline of the fused kernel: one weight, one field, the textbook loop over the
-// cell list's neighbours (no blocks, no fusion).  The tests' brute-force reference and the
-// benchmark's "before".
+// cell list's neighbours (no blocks, no fusion).  The benchmark's "before"; a unit test
+// checks it against the tests' brute-force reference.
+#include "gpm/kernel/plain_baseline.hpp"
+
 #include <omp.h>
 
 #include <cmath>
 
 #include "gpm/error.hpp"
 #include "gpm/geometry/cells.hpp"
-#include "gpm/kernel/kernel.hpp"
 #include "gpm/kernel/kernel_poly.hpp"  // PolyEval, build_eval, kD
 
 namespace gpm {

@@ -1,7 +1,8 @@
 // Vectors of doubles for the neighbour-sum loops: GCC vector extensions as wide as the
 // target's widest double vector (8 lanes with AVX-512), with the few helpers every loop
-// needs.  Shared by the fused kernel (kernel.cpp) and the measured-limit benchmark
-// (bench/bench_limit.cpp), which must time exactly the kernel's instruction mix.
+// needs.  Shared by the fused kernel (kernel.cpp and its private headers) and the
+// measured-limit benchmark (bench/bench_limit.cpp), which must time exactly the kernel's
+// instruction mix.
 // The arithmetic is written once; the compiler emits one instruction per operation, so
 // nothing depends on the auto-vectorizer.
 #pragma once
@@ -47,6 +48,18 @@ inline vd vsqrt(vd x) {
   return r;
 #endif
 }
+
+#if defined(__AVX512F__)
+// 1/√x by rsqrt14 (14 bits) and two Newton steps (≤ 2 ulp): KernelOptions::fast_rsqrt, the
+// same recipe in the masked and the compact loops.  Every lane is computed (a full mask).
+inline vd rsqrt_newton(vd x) {
+  vd y = (vd)_mm512_maskz_rsqrt14_pd(static_cast<__mmask8>(0xFF), (__m512d)x);
+  const vd half = vbc(0.5), three_half = vbc(1.5);
+  y = y * (three_half - half * x * y * y);
+  y = y * (three_half - half * x * y * y);
+  return y;
+}
+#endif
 
 template <int NC>
 inline vd horner(const double* c, vd q) {

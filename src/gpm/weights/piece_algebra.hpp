@@ -1,6 +1,7 @@
-// The polynomial algebra behind the weight registry (weights.cpp): a weight is entered as
-// the document prints it and expanded here, and every property is computed here from its
-// pieces.  A polynomial is a coefficient vector, p[k] multiplying r^k.
+// The polynomial algebra behind the weight registry (weight_forms.cpp,
+// weight_registry.cpp): a weight is entered as the document prints it and expanded here,
+// and every property (weights.cpp) is computed here from its pieces.  A polynomial is a
+// coefficient vector, p[k] multiplying r^k.
 #pragma once
 #include <vector>
 

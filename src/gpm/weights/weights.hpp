@@ -7,6 +7,10 @@
 // the prefactor the document prints (`constant`) separately from the bracketed
 // polynomial (`shape`), so the normalization can be *computed* and a printed constant
 // that does not normalize to 1 is caught (see weight_errata()).
+//
+// Where: the registry in weight_registry.cpp, the errata in weight_errata.cpp (both built
+// from the printed formulas of weight_forms.hpp), evaluation and properties in weights.cpp,
+// the polynomial algebra under them in piece_algebra.hpp.
 #pragma once
 #include <string>
 #include <vector>
