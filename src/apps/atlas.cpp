@@ -212,6 +212,9 @@ int body(int argc, char** argv) {
   atlas.columns = {"task", "config", "level", "rel_error", "time_s", "pairs"};
   for (auto& f : task_f) atlas.columns.push_back(f.name);
   for (auto& f : conf_f) atlas.columns.push_back(f.name);
+  // By position, not by name (TsvRow): the field columns are named by --task/--config and may
+  // repeat a fixed name (--config level), which a named row could not tell apart; the row
+  // follows the same order as the column list just above.
   for (auto& p : pts) {
     std::vector<std::string> r = {p.task, p.config, p.level, fmt(p.err), fmt(p.time),
                                   std::isnan(p.pairs) ? "NA" : fmt(p.pairs)};
@@ -243,11 +246,14 @@ int body(int argc, char** argv) {
         const Point* low = nullptr;
         for (auto& p : pts)
           if (p.task == task && (!low || p.err < low->err)) low = &p;
-        reading.add_row({task, g3(target), "no", low->config, low->level, fmt(low->err),
-                         fmt(low->time), std::isnan(low->pairs) ? "NA" : fmt(low->pairs), "NA",
-                         "NA", "NA",
-                         "not reached; smallest error observed " + g3(low->err) + " (" +
-                             low->config + ", level " + low->level + ")"});
+        TsvRow row = reading.named_row();
+        row["task"] = task, row["target"] = g3(target), row["reached"] = "no";
+        row["config"] = low->config, row["level"] = low->level, row["rel_error"] = fmt(low->err);
+        row["time_s"] = fmt(low->time), row["pairs"] = std::isnan(low->pairs) ? "NA" : fmt(low->pairs);
+        row["next_config"] = "NA", row["next_time_s"] = "NA", row["time_ratio"] = "NA";
+        row["reading"] = "not reached; smallest error observed " + g3(low->err) + " (" + low->config +
+                         ", level " + low->level + ")";
+        reading.add_row(row);
         continue;
       }
       const Point* next = nullptr;
@@ -261,10 +267,13 @@ int body(int argc, char** argv) {
       else if (next->time == best->time)  // one timed unit covered both
         text += "; " + next->config + " reaches it in the same timed unit";
       else text += "; next other choice " + next->config + " takes " + g3(ratio) + "x as long";
-      reading.add_row({task, g3(target), "yes", best->config, best->level, fmt(best->err),
-                       fmt(best->time), std::isnan(best->pairs) ? "NA" : fmt(best->pairs),
-                       next ? next->config : "NA", next ? fmt(next->time) : "NA", g3(ratio),
-                       text});
+      TsvRow row = reading.named_row();
+      row["task"] = task, row["target"] = g3(target), row["reached"] = "yes";
+      row["config"] = best->config, row["level"] = best->level, row["rel_error"] = fmt(best->err);
+      row["time_s"] = fmt(best->time), row["pairs"] = std::isnan(best->pairs) ? "NA" : fmt(best->pairs);
+      row["next_config"] = next ? next->config : "NA", row["next_time_s"] = next ? fmt(next->time) : "NA";
+      row["time_ratio"] = g3(ratio), row["reading"] = text;
+      reading.add_row(row);
     }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   atlas.set("wall_time_s", fmt(wall));

@@ -94,9 +94,13 @@ int body(int argc, char** argv) {
       return grad_err(j, sph_gradient_imoto58(cl, V, v, wS, h, at(j), v[j])); }, grad_len);
     const double ec = rel_error(targets, [&](int32_t j) {
       return grad_err(j, sph_gradient(cl, V, v, wS, h, at(j), v[j])); }, grad_len);
-    t.add_row({"imoto (58)", "SPH gradient, cubic B-spline", "{v(p) - v_i} grad w_h(|p - x_i|)",
-               "{v_i - v(p)} grad w_h(|p - x_i|) (thesis (A.7))", fmt(ep), fmt(ec),
-               "the printed sign approximates -grad v: error near 2"});
+    TsvRow row = t.named_row();
+    row["erratum"] = "imoto (58)", row["operator"] = "SPH gradient, cubic B-spline";
+    row["printed_form"] = "{v(p) - v_i} grad w_h(|p - x_i|)";
+    row["corrected_form"] = "{v_i - v(p)} grad w_h(|p - x_i|) (thesis (A.7))";
+    row["error_printed"] = fmt(ep), row["error_corrected"] = fmt(ec);
+    row["evidence"] = "the printed sign approximates -grad v: error near 2";
+    t.add_row(row);
   }
   // The MPS λ0 of (A.19)/(62) without h², w^MPS = 1/r − 1.
   {
@@ -106,9 +110,13 @@ int body(int argc, char** argv) {
       return std::fabs(f.lap(p.x[j], p.y[j]) - mps_laplacian(cl, v, wM, h, at(j), v[j], lp)); }, lap_abs);
     const double ec = rel_error(targets, [&](int32_t j) {
       return std::fabs(f.lap(p.x[j], p.y[j]) - mps_laplacian(cl, v, wM, h, at(j), v[j], lc)); }, lap_abs);
-    t.add_row({"thesis (A.19), imoto (62)", "MPS Laplacian, w = 1/r - 1",
-               "lambda0 = (N/|Omega_H|) int |x|^2 w", "lambda0 = (N/|Omega_H|) h^2 int |x|^2 w",
-               fmt(ep), fmt(ec), "the printed lambda0 scales the Laplacian by h^2 = " + fmt(h * h)});
+    TsvRow row = t.named_row();
+    row["erratum"] = "thesis (A.19), imoto (62)", row["operator"] = "MPS Laplacian, w = 1/r - 1";
+    row["printed_form"] = "lambda0 = (N/|Omega_H|) int |x|^2 w";
+    row["corrected_form"] = "lambda0 = (N/|Omega_H|) h^2 int |x|^2 w";
+    row["error_printed"] = fmt(ep), row["error_corrected"] = fmt(ec);
+    row["evidence"] = "the printed lambda0 scales the Laplacian by h^2 = " + fmt(h * h);
+    t.add_row(row);
   }
   // imoto (61)–(62): w^MPS_h(|x − x_j|) in the sum over i ≠ j, read with x = x_j.
   {
@@ -117,10 +125,14 @@ int body(int argc, char** argv) {
     const double n0 = mps_n0(wM, p.size(), area);
     const double ec = rel_error(targets, [&](int32_t j) {
       return grad_err(j, mps_gradient(cl, v, wM, h, at(j), v[j], n0)); }, grad_len);
-    t.add_row({"imoto (61)-(62)", "MPS gradient, w = 1/r - 1", "w_h(|x - x_j|) for every i",
-               "w_h(|x - x_i|)", std::isfinite(w0) ? fmt(w0) : "inf", fmt(ec),
-               "read literally every term takes w(0) = " + std::string(std::isfinite(w0) ? fmt(w0) : "inf") +
-                   " (error_printed holds that weight, not an error)"});
+    TsvRow row = t.named_row();
+    row["erratum"] = "imoto (61)-(62)", row["operator"] = "MPS gradient, w = 1/r - 1";
+    row["printed_form"] = "w_h(|x - x_j|) for every i", row["corrected_form"] = "w_h(|x - x_i|)";
+    row["error_printed"] = std::isfinite(w0) ? fmt(w0) : "inf", row["error_corrected"] = fmt(ec);
+    row["evidence"] = "read literally every term takes w(0) = " +
+                      std::string(std::isfinite(w0) ? fmt(w0) : "inf") +
+                      " (error_printed holds that weight, not an error)";
+    t.add_row(row);
   }
   // imoto Corollary 1: V_N = {ρ_i/m_i} while Σ m_i/ρ_i = |Ω_H|; take m_i/ρ_i = |Ω_H|/N.
   {
@@ -132,10 +144,14 @@ int body(int argc, char** argv) {
     const double ec = rel_error(targets, [&](int32_t j) {
       return std::fabs(v[j] - sph_interpolant(cl, V, v, wS, h, at(j))); },
       [&](int32_t j) { return std::fabs(v[j]); });
-    t.add_row({"imoto Corollary 1", "SPH interpolant, cubic B-spline", "V_i = rho_i/m_i",
-               "V_i = m_i/rho_i (as in its own assumption sum m_i/rho_i = |Omega_H|)", fmt(ep),
-               fmt(ec), "the printed volumes scale the interpolant by (N/|Omega_H|)^2 = " +
-                            fmt((N / area) * (N / area))});
+    TsvRow row = t.named_row();
+    row["erratum"] = "imoto Corollary 1", row["operator"] = "SPH interpolant, cubic B-spline";
+    row["printed_form"] = "V_i = rho_i/m_i";
+    row["corrected_form"] = "V_i = m_i/rho_i (as in its own assumption sum m_i/rho_i = |Omega_H|)";
+    row["error_printed"] = fmt(ep), row["error_corrected"] = fmt(ec);
+    row["evidence"] = "the printed volumes scale the interpolant by (N/|Omega_H|)^2 = " +
+                      fmt((N / area) * (N / area));
+    t.add_row(row);
   }
   t.save(a.str("out"));
   for (std::size_t i = 0; i < t.rows.size(); ++i)

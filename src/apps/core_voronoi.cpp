@@ -108,12 +108,20 @@ int body(int argc, char** argv) {
     const double pred = std::sqrt(2.0) * std::max({dx / 2, g_lo, g_hi});
     const double imoto = std::sqrt(2.0) * 1.25 * dx / 2;
     auto add = [&](uint64_t seed, const char* dist, const Row& r) {
-      const double rel = std::abs(r.area_sum - dom.area_H()) / dom.area_H();
-      t.add_row({fmt(level), fmt(dx), fmt(static_cast<long long>(seed)), dist, fmt(r.n),
-                 fmt(r.n_in), fmt(r.area_sum), fmt(rel), fmt(r.r_c), fmt(r.r_c / dx),
-                 fmt(r.r_c_omega / dx), fmt(pred), fmt(imoto), r.r_c <= imoto ? "1" : "0",
-                 (r.r_c >= 1.4 * dx && r.r_c <= 1.8 * dx) ? "1" : "0", fmt(r.wx), fmt(r.wy),
-                 fmt(r.amin), fmt(r.amax), fmt(r.time_s), fmt(r.rss)});
+      // By name: the columns are voronoi_study()'s, listed in catalog.cpp, not here.
+      TsvRow row = t.named_row();
+      row["level"] = fmt(level), row["dx"] = fmt(dx), row["seed"] = fmt(static_cast<long long>(seed));
+      row["distribution"] = dist, row["N"] = fmt(r.n), row["N_in_omega"] = fmt(r.n_in);
+      row["area_sum"] = fmt(r.area_sum);
+      row["area_rel_err"] = fmt(std::abs(r.area_sum - dom.area_H()) / dom.area_H());
+      row["r_c"] = fmt(r.r_c), row["r_c_over_dx"] = fmt(r.r_c / dx);
+      row["r_c_omega_over_dx"] = fmt(r.r_c_omega / dx), row["r_c_grid_pred"] = fmt(pred);
+      row["imoto_bound"] = fmt(imoto), row["imoto_holds"] = r.r_c <= imoto ? "1" : "0";
+      row["thesis_range_holds"] = (r.r_c >= 1.4 * dx && r.r_c <= 1.8 * dx) ? "1" : "0";
+      row["worst_x"] = fmt(r.wx), row["worst_y"] = fmt(r.wy);
+      row["min_area_over_dx2"] = fmt(r.amin), row["max_area_over_dx2"] = fmt(r.amax);
+      row["time_s"] = fmt(r.time_s), row["peak_rss_mb"] = fmt(r.rss);
+      t.add_row(row);
     };
     Row grid;
     {

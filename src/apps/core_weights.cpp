@@ -35,11 +35,16 @@ gpm::TsvTable property_table(const gpm::Args& args) {
                "hyp_1_2",  "hyp_1_3",    "imoto_hyp2_k", "inv_r2_integral", "admissible"};
   for (auto& w : gpm::weight_registry()) {
     const auto p = gpm::compute_properties(w);
-    t.add_row({w.name, w.label, w.source, w.role, gpm::fmt(w.dimension), gpm::fmt(w.constant),
-               gpm::fmt(p.norm(w.dimension)), gpm::fmt(p.order_k), yes_no(p.positive),
-               gpm::fmt(p.p0), yes_no(p.continuous), yes_no(p.c1), yes_no(p.hyp_1_2),
-               yes_no(p.hyp_1_3), gpm::fmt(p.imoto_hyp2_k), gpm::fmt(p.inv_r2_integral),
-               yes_no(p.admissible)});
+    gpm::TsvRow row = t.named_row();
+    row["name"] = w.name, row["label"] = w.label, row["source"] = w.source, row["role"] = w.role;
+    row["dimension"] = gpm::fmt(w.dimension), row["constant"] = gpm::fmt(w.constant);
+    row["norm"] = gpm::fmt(p.norm(w.dimension)), row["order_k"] = gpm::fmt(p.order_k);
+    row["positive"] = yes_no(p.positive), row["p0"] = gpm::fmt(p.p0);
+    row["continuous"] = yes_no(p.continuous), row["c1"] = yes_no(p.c1);
+    row["hyp_1_2"] = yes_no(p.hyp_1_2), row["hyp_1_3"] = yes_no(p.hyp_1_3);
+    row["imoto_hyp2_k"] = gpm::fmt(p.imoto_hyp2_k), row["inv_r2_integral"] = gpm::fmt(p.inv_r2_integral);
+    row["admissible"] = yes_no(p.admissible);
+    t.add_row(row);
   }
   return t;
 }
@@ -49,9 +54,13 @@ gpm::TsvTable errata_table(const gpm::Args& args) {
   set_header(t, args);
   t.columns = {"name", "source", "printed", "corrected", "printed_norm", "corrected_norm",
                "evidence"};
-  for (auto& e : gpm::weight_errata())
-    t.add_row({e.name, e.source, e.printed, e.corrected, gpm::fmt(e.printed_norm_2d),
-               gpm::fmt(e.corrected_norm_2d), e.evidence});
+  for (auto& e : gpm::weight_errata()) {
+    gpm::TsvRow row = t.named_row();
+    row["name"] = e.name, row["source"] = e.source, row["printed"] = e.printed;
+    row["corrected"] = e.corrected, row["printed_norm"] = gpm::fmt(e.printed_norm_2d);
+    row["corrected_norm"] = gpm::fmt(e.corrected_norm_2d), row["evidence"] = e.evidence;
+    t.add_row(row);
+  }
   return t;
 }
 

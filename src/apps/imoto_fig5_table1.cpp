@@ -103,7 +103,10 @@ void write_printed_pi3(const std::vector<std::pair<std::string, std::string>>& p
       const double printed = printed_pi3_error(p, V, h);
       const double fixed = fused_errors(p, V, h, {{"Pi3", Operator::interp}}, {kStudy.function},
                                         false).errors[0].rel_error;
-      t.add_row({fmt(level), fmt(m), fmt(h), fmt(printed), fmt(fixed)});
+      TsvRow row = t.named_row();
+      row["level"] = fmt(level), row["m"] = fmt(m), row["h"] = fmt(h);
+      row["printed_5_over_pi"] = fmt(printed), row["corrected_6_over_pi"] = fmt(fixed);
+      t.add_row(row);
     }
   }
   t.set("wall_time_s",

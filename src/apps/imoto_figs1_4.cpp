@@ -26,13 +26,17 @@ const int kLevel = 5;          // Δx = 2^-5, the distribution the document draw
 const int kFig3Level = 3;      // Δx = 2^-3 for Figure 3 (81 particles: cells stay readable)
 const double kGrade = 1.8;     // exponent of the grading map of the non-uniform distribution
 
-// Every edge of every cell, as (cell, x1, y1, x2, y2) rows (drawn with gnuplot's vectors).
+// Every edge of every cell, as (distribution, cell, x1, y1, x2, y2) rows (drawn with
+// gnuplot's vectors).  By name: the tables' columns are set by the caller.
 void add_edges(TsvTable& t, const std::string& tag, const VoronoiCells& c) {
   for (std::size_t i = 0; i + 1 < c.offset.size(); ++i) {
     const uint64_t b = c.offset[i], e = c.offset[i + 1];
     for (uint64_t k = b; k < e; ++k) {
       const uint64_t l = k + 1 < e ? k + 1 : b;
-      t.add_row({tag, fmt(i), fmt(c.px[k]), fmt(c.py[k]), fmt(c.px[l]), fmt(c.py[l])});
+      TsvRow row = t.named_row();
+      row["distribution"] = tag, row["cell"] = fmt(i);
+      row["x1"] = fmt(c.px[k]), row["y1"] = fmt(c.py[k]), row["x2"] = fmt(c.px[l]), row["y2"] = fmt(c.py[l]);
+      t.add_row(row);
     }
   }
 }
@@ -78,8 +82,11 @@ int body(int argc, char** argv) {
   parts.set("N", fmt(p.size()));
   parts.set("N_in_omega", fmt(p.count_in_omega()));
   parts.columns = {"x", "y", "in_omega"};
-  for (std::size_t i = 0; i < p.size(); ++i)
-    parts.add_row({fmt(p.x[i]), fmt(p.y[i]), p.in_omega[i] ? "1" : "0"});
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    TsvRow row = parts.named_row();
+    row["x"] = fmt(p.x[i]), row["y"] = fmt(p.y[i]), row["in_omega"] = p.in_omega[i] ? "1" : "0";
+    parts.add_row(row);
+  }
   finish(parts, prefix + "_particles.tsv");
   TsvTable vor;
   header(vor, "voronoi");
@@ -114,7 +121,11 @@ int body(int argc, char** argv) {
   for (auto [tag, q] : {std::pair<const char*, const Particles*>{"uniform", &uni},
                         {"non-uniform", &gra}}) {
     const VoronoiCells v = voronoi_cells(*q, dom, true);
-    for (std::size_t i = 0; i < q->size(); ++i) f3p.add_row({tag, fmt(q->x[i]), fmt(q->y[i])});
+    for (std::size_t i = 0; i < q->size(); ++i) {
+      TsvRow row = f3p.named_row();
+      row["distribution"] = tag, row["x"] = fmt(q->x[i]), row["y"] = fmt(q->y[i]);
+      f3p.add_row(row);
+    }
     add_edges(f3e, tag, v);
     // The covering disc: centred at the worst cell's vertex farthest from its particle.
     const std::size_t w = v.worst;
@@ -123,8 +134,11 @@ int body(int argc, char** argv) {
       const double d = std::hypot(v.px[k] - q->x[w], v.py[k] - q->y[w]);
       if (d > best) best = d, cx = v.px[k], cy = v.py[k];
     }
-    f3d.add_row({tag, fmt(q->size()), fmt(q->x[w]), fmt(q->y[w]), fmt(cx), fmt(cy),
-                 fmt(v.covering_radius)});
+    TsvRow disc = f3d.named_row();
+    disc["distribution"] = tag, disc["N"] = fmt(q->size());
+    disc["worst_x"] = fmt(q->x[w]), disc["worst_y"] = fmt(q->y[w]);
+    disc["centre_x"] = fmt(cx), disc["centre_y"] = fmt(cy), disc["r_N"] = fmt(v.covering_radius);
+    f3d.add_row(disc);
     std::printf("Figure 3 %-12s N = %zu  r_N = %.6f\n", tag, q->size(), v.covering_radius);
   }
   finish(f3p, prefix + "_fig3_particles.tsv");

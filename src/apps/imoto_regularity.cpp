@@ -235,10 +235,14 @@ int body(int argc, char** argv) {
       farthest_vertex(c, p, c.worst, fx, fy);
       const double secs =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      cov.add_row({fmt(level), fmt(dx), fmt(static_cast<long long>(seed)), fmt(p.size()),
-                   fmt(c.covering_radius / dx), fmt(c.cover[wo] / dx), fmt(kClaimR),
-                   c.covering_radius / dx <= kClaimR ? "1" : "0", fmt(p.x[c.worst]),
-                   fmt(p.y[c.worst]), fmt(fx), fmt(fy), fmt(secs)});
+      TsvRow row = cov.named_row();
+      row["level"] = fmt(level), row["dx"] = fmt(dx), row["seed"] = fmt(static_cast<long long>(seed));
+      row["N"] = fmt(p.size()), row["r_N_over_dx"] = fmt(c.covering_radius / dx);
+      row["r_N_omega_over_dx"] = fmt(c.cover[wo] / dx), row["claim_over_dx"] = fmt(kClaimR);
+      row["claim_holds"] = c.covering_radius / dx <= kClaimR ? "1" : "0";
+      row["worst_x"] = fmt(p.x[c.worst]), row["worst_y"] = fmt(p.y[c.worst]);
+      row["far_x"] = fmt(fx), row["far_y"] = fmt(fy), row["time_s"] = fmt(secs);
+      cov.add_row(row);
       std::fprintf(stderr, "[imoto_regularity] level %d seed %llu N=%zu r_N/dx=%.4f (Omega %.4f) %.2fs\n",
                    level, static_cast<unsigned long long>(seed), p.size(),
                    c.covering_radius / dx, c.cover[wo] / dx, secs);
@@ -251,11 +255,14 @@ int body(int argc, char** argv) {
           std::size_t nearest = 0;
           const double dn = nearest_particle(p, vx, vy, nearest);
           const double eta1 = p.x[i] / dx - p.gi[i], eta2 = p.y[i] / dx - p.gj[i];
-          ex.add_row({name, fmt(level), fmt(static_cast<long long>(seed)), fmt(i),
-                      fmt(p.gi[i]), fmt(p.gj[i]), fmt(eta1), fmt(eta2), fmt(p.x[i]),
-                      fmt(p.y[i]), fmt(vx), fmt(vy),
-                      fmt(std::hypot(vx - p.x[i], vy - p.y[i]) / dx), fmt(dn / dx),
-                      fmt(kClaimR)});
+          TsvRow row = ex.named_row();
+          row["case"] = name, row["level"] = fmt(level), row["seed"] = fmt(static_cast<long long>(seed));
+          row["particle"] = fmt(i), row["node_i"] = fmt(p.gi[i]), row["node_j"] = fmt(p.gj[i]);
+          row["eta_1"] = fmt(eta1), row["eta_2"] = fmt(eta2), row["x"] = fmt(p.x[i]), row["y"] = fmt(p.y[i]);
+          row["vertex_x"] = fmt(vx), row["vertex_y"] = fmt(vy);
+          row["dist_over_dx"] = fmt(std::hypot(vx - p.x[i], vy - p.y[i]) / dx);
+          row["nearest_over_dx"] = fmt(dn / dx), row["claim_over_dx"] = fmt(kClaimR);
+          ex.add_row(row);
         }
       }
     }
@@ -289,13 +296,15 @@ int body(int argc, char** argv) {
       const double tol = simplex ? 1e-9 : 1e-6;
       const bool conv = std::isfinite(prev) && std::isfinite(r.d_over_dx) &&
                         std::fabs(r.d_over_dx - prev) <= tol * std::fabs(prev);
-      std::vector<std::string> row = {fmt(level), fmt(dx), fmt(lp_seed), fmt(p.size()), fmt(R),
-                                      fmt(r.variables), r.status, fmt(r.d_over_dx),
-                                      conv ? "1" : "0", fmt(c.covering_radius / dx),
-                                      fmt(kClaimD)};
+      TsvRow row = dev.named_row();
+      row["level"] = fmt(level), row["dx"] = fmt(dx), row["seed"] = fmt(lp_seed);
+      row["N"] = fmt(p.size()), row["R_over_dx"] = fmt(R), row["variables"] = fmt(r.variables);
+      row["status"] = r.status, row["d_N_over_dx"] = fmt(r.d_over_dx), row["converged"] = conv ? "1" : "0";
+      row["r_N_over_dx"] = fmt(c.covering_radius / dx), row["claim_d_over_dx"] = fmt(kClaimD);
+      // ratio_m1, ratio_m3, ...: an order of kOrders without its column throws here.
       for (double m : kOrders)
-        row.push_back(fmt((c.covering_radius + r.d_over_dx * dx) / std::pow(imoto_h(m, dx), m)));
-      row.push_back(fmt(r.seconds));
+        row["ratio_m" + fmt(m)] = fmt((c.covering_radius + r.d_over_dx * dx) / std::pow(imoto_h(m, dx), m));
+      row["time_s"] = fmt(r.seconds);
       dev.add_row(row);
       std::fprintf(stderr, "[imoto_regularity] LP level %d R=%g dx: %zu variables, %s, d_N/dx=%.6g %.2fs\n",
                    level, R, r.variables, r.status.c_str(), r.d_over_dx, r.seconds);

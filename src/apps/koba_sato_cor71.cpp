@@ -106,11 +106,18 @@ int body(int argc, char** argv) {
       n_rows++;
       n_fail += !holds;
       n_disagree += !agree;
-      t.add_row({cs.label == "ii" ? "(ii)" : "(i)", fmt(cs.m), exact_string(cs.r),
-                 exact_string(cs.C), exact_string(cs.lam), op, semi, row[c_coef],
-                 exact_string(printed), fmt(exact_to_double(printed)), exact_string(f), fmt(exact_to_double(f)),
-                 agree ? "1" : "0", holds ? "1" : "0", f == printed ? "1" : "0",
-                 exact_string(margin), fmt(exact_to_double(margin)), fmt(exact_to_double(f / printed))});
+      TsvRow out_row = t.named_row();
+      out_row["case"] = cs.label == "ii" ? "(ii)" : "(i)", out_row["m"] = fmt(cs.m);
+      out_row["r_sigma"] = exact_string(cs.r), out_row["C_star"] = exact_string(cs.C);
+      out_row["lambda"] = exact_string(cs.lam), out_row["operator"] = op, out_row["seminorm"] = semi;
+      out_row["printed"] = row[c_coef], out_row["printed_exact"] = exact_string(printed);
+      out_row["printed_value"] = fmt(exact_to_double(printed));
+      out_row["formula_exact"] = exact_string(f), out_row["formula"] = fmt(exact_to_double(f));
+      out_row["theorems_agree"] = agree ? "1" : "0", out_row["holds"] = holds ? "1" : "0";
+      out_row["equal"] = f == printed ? "1" : "0";
+      out_row["margin_exact"] = exact_string(margin), out_row["margin"] = fmt(exact_to_double(margin));
+      out_row["ratio"] = fmt(exact_to_double(f / printed));
+      t.add_row(out_row);
     }
   }
   if (n_rows == 0) throw InputError(args.str("published") + ": no rows for cases ii / i(m)");

@@ -106,9 +106,13 @@ int body(int argc, char** argv) {
   // before_trims: every unit at today's speed; before: also the full-matrix product.
   Agg all, trimmed, before_trims, before;
   for (auto& u : units) {
-    t.add_row({u.study, u.variant, fmt(u.level), fmt(u.dx), fmt(u.h), fmt(u.N), fmt(u.pairs),
-               fmt(u.products), u.method, fmt(u.time_s), fmt(u.mem_mib),
-               u.recorded ? "yes" : "no", u.trimmed.empty() ? "no" : u.trimmed, u.basis});
+    TsvRow row = t.named_row();
+    row["study"] = u.study, row["variant"] = u.variant, row["level"] = fmt(u.level);
+    row["dx"] = fmt(u.dx), row["h"] = fmt(u.h), row["N"] = fmt(u.N), row["pairs"] = fmt(u.pairs);
+    row["products"] = fmt(u.products), row["method"] = u.method, row["time_s"] = fmt(u.time_s);
+    row["peak_mib"] = fmt(u.mem_mib), row["recorded"] = u.recorded ? "yes" : "no";
+    row["trimmed"] = u.trimmed.empty() ? "no" : u.trimmed, row["basis"] = u.basis;
+    t.add_row(row);
     before_trims.add(u);
     before.add(u, true);
     if (!u.trimmed.empty()) {
@@ -141,8 +145,11 @@ int body(int argc, char** argv) {
   s.columns = {"study", "level", "units", "N", "pair_interactions", "time_s", "peak_mib", "method",
                "trimmed"};
   auto row = [&](const std::string& study, const std::string& level, const Agg& g, bool trim) {
-    s.add_row({study, level, fmt(g.units), fmt(g.N), fmt(g.pair_work), fmt(g.time_s),
-               fmt(g.peak_mib), g.method_list(), trim ? "yes" : "no"});
+    TsvRow r = s.named_row();
+    r["study"] = study, r["level"] = level, r["units"] = fmt(g.units), r["N"] = fmt(g.N);
+    r["pair_interactions"] = fmt(g.pair_work), r["time_s"] = fmt(g.time_s);
+    r["peak_mib"] = fmt(g.peak_mib), r["method"] = g.method_list(), r["trimmed"] = trim ? "yes" : "no";
+    s.add_row(r);
   };
   for (auto& study : planned_studies()) {
     for (auto& [k, g] : per_level[study]) row(study, fmt(k), g, false);
@@ -205,6 +212,13 @@ int body(int argc, char** argv) {
   add_provenance(hmt);
   hmt.columns = {"table", "series", "alone_s", "per_reading_s", "batched_s", "catalog_s",
                  "batched_over_per_reading"};
+  auto heat_row = [&](const HeatMatrixCost& m, double catalog) {
+    TsvRow row = hmt.named_row();
+    row["table"] = m.table, row["series"] = fmt(m.series), row["alone_s"] = fmt(m.alone_s);
+    row["per_reading_s"] = fmt(m.per_reading_s), row["batched_s"] = fmt(m.batched_s);
+    row["catalog_s"] = fmt(catalog), row["batched_over_per_reading"] = fmt(m.batched_s / m.per_reading_s);
+    hmt.add_row(row);
+  };
   HeatMatrixCost total{"all", 0, 0, 0, 0};
   double catalog_total = 0;
   for (auto& m : hm) {
@@ -213,13 +227,11 @@ int body(int argc, char** argv) {
     std::replace(study.begin(), study.end(), '.', '_');
     for (auto& u : units)
       if (u.trimmed.empty() && (u.study == study || u.study == study + "_h15")) catalog += u.time_s;
-    hmt.add_row({m.table, fmt(m.series), fmt(m.alone_s), fmt(m.per_reading_s), fmt(m.batched_s),
-                 fmt(catalog), fmt(m.batched_s / m.per_reading_s)});
+    heat_row(m, catalog);
     total.series += m.series, total.alone_s += m.alone_s, total.per_reading_s += m.per_reading_s;
     total.batched_s += m.batched_s, catalog_total += catalog;
   }
-  hmt.add_row({"all", fmt(total.series), fmt(total.alone_s), fmt(total.per_reading_s),
-               fmt(total.batched_s), fmt(catalog_total), fmt(total.batched_s / total.per_reading_s)});
+  heat_row(total, catalog_total);
   hmt.set("profile_total_today_s", all.time_s);
   hmt.set("profile_total_with_batched_matrix_s", all.time_s - catalog_total + total.batched_s);
   if (!a.str("heat-matrix").empty()) hmt.save(a.str("heat-matrix"));
@@ -232,29 +244,36 @@ int body(int argc, char** argv) {
     c.set("calibration_source", cal.source);
     add_provenance(c);
     c.columns = {"quantity", "value", "unit"};
+    // Every row is a (quantity, value, unit) triple: one named row here, so the calls below
+    // stay one line each and a change of c.columns cannot swap value and unit.
+    auto add = [&](const std::string& quantity, const std::string& value, const std::string& unit) {
+      TsvRow row = c.named_row();
+      row["quantity"] = quantity, row["value"] = value, row["unit"] = unit;
+      c.add_row(row);
+    };
     for (auto& [mix, pc] : cal.fused) {
-      c.add_row({"fused pass " + mix + ": pair rate", fmt(1 / pc.per_pair_s), "pairs/s"});
-      c.add_row({"fused pass " + mix + ": per target", fmt(pc.per_target_s * 1e6), "us"});
+      add("fused pass " + mix + ": pair rate", fmt(1 / pc.per_pair_s), "pairs/s");
+      add("fused pass " + mix + ": per target", fmt(pc.per_target_s * 1e6), "us");
     }
-    c.add_row({"Voronoi volumes", fmt(cal.voronoi_s_per_particle * 1e6), "us/particle"});
-    c.add_row({"Laplacian set-up", fmt(cal.setup_s_per_nnz * 1e9), "ns/non-zero"});
-    c.add_row({"assembled product (symmetric half)", fmt(cal.spmv_s_per_nnz * 1e9), "ns/non-zero"});
-    c.add_row({"assembled product (full matrix)", fmt(cal.spmv_full_s_per_nnz * 1e9), "ns/non-zero"});
-    c.add_row({"matrix-free product: pair rate", fmt(1 / cal.matrix_free.per_pair_s), "pairs/s"});
-    c.add_row({"matrix-free product: per target", fmt(cal.matrix_free.per_target_s * 1e6), "us"});
+    add("Voronoi volumes", fmt(cal.voronoi_s_per_particle * 1e6), "us/particle");
+    add("Laplacian set-up", fmt(cal.setup_s_per_nnz * 1e9), "ns/non-zero");
+    add("assembled product (symmetric half)", fmt(cal.spmv_s_per_nnz * 1e9), "ns/non-zero");
+    add("assembled product (full matrix)", fmt(cal.spmv_full_s_per_nnz * 1e9), "ns/non-zero");
+    add("matrix-free product: pair rate", fmt(1 / cal.matrix_free.per_pair_s), "pairs/s");
+    add("matrix-free product: per target", fmt(cal.matrix_free.per_target_s * 1e6), "us");
     for (auto& [w, r] : cal.block_ratio)
-      c.add_row({"block product of " + fmt(w) + " columns (time per vector)", fmt(r), "x single product"});
-    c.add_row({"calibration wall time", fmt(cal.seconds), "s"});
-    c.add_row({"calibration CPU time", fmt(cal.cpu_seconds), "s"});
-    c.add_row({"load average before / after", fmt(cal.load_before) + " / " + fmt(cal.load_after), ""});
+      add("block product of " + fmt(w) + " columns (time per vector)", fmt(r), "x single product");
+    add("calibration wall time", fmt(cal.seconds), "s");
+    add("calibration CPU time", fmt(cal.cpu_seconds), "s");
+    add("load average before / after", fmt(cal.load_before) + " / " + fmt(cal.load_after), "");
     if (std::filesystem::exists(a.str("bench"))) {
       const TsvTable b = TsvTable::load(a.str("bench"));
       const int cv = b.column("variant"), ct = b.column("threads"), cr = b.column("pairs_per_s");
       if (cv >= 0 && ct >= 0 && cr >= 0)
         for (auto& r : b.rows)
           if (r[cv] == "fused9" && r[ct] == "2")
-            c.add_row({"make bench fused9, 2 threads (" + b.get("written_utc").value_or("?") + ")",
-                       r[cr], "pairs/s"});
+            add("make bench fused9, 2 threads (" + b.get("written_utc").value_or("?") + ")", r[cr],
+                "pairs/s");
     }
     c.save(a.str("calibration-table"));
   }

@@ -130,11 +130,16 @@ int body(int argc, char** argv) {
     for (auto& [key, s] : rec)
       if (!planned_keys.count(key)) ++unplanned, ++unplanned_at[key.second];
     auto emit = [&](const std::string& level, const Cmp& c, int unpl, double peak_act) {
-      out.add_row({study, level, fmt(c.planned), fmt(c.run), fmt(unpl),
-                   c.run ? fmt(c.predicted_s) : "NA", c.run ? fmt(c.actual_s) : "NA",
-                   c.run && c.predicted_s > 0 ? fmt(c.actual_s / c.predicted_s) : "NA",
-                   c.work_pred > 0 ? fmt(c.work_act / c.work_pred) : "NA",
-                   fmt(c.predicted_all_s), fmt(c.peak_pred), f(peak_act)});
+      TsvRow row = out.named_row();
+      row["study"] = study, row["level"] = level;
+      row["units_planned"] = fmt(c.planned), row["units_run"] = fmt(c.run), row["unplanned"] = fmt(unpl);
+      row["predicted_s"] = c.run ? fmt(c.predicted_s) : "NA";
+      row["actual_s"] = c.run ? fmt(c.actual_s) : "NA";
+      row["ratio"] = c.run && c.predicted_s > 0 ? fmt(c.actual_s / c.predicted_s) : "NA";
+      row["work_ratio"] = c.work_pred > 0 ? fmt(c.work_act / c.work_pred) : "NA";
+      row["predicted_total_s"] = fmt(c.predicted_all_s);
+      row["peak_pred_mib"] = fmt(c.peak_pred), row["peak_actual_mib"] = f(peak_act);
+      out.add_row(row);
     };
     for (auto& [k, c] : lv) emit(fmt(k), c, unplanned_at[k], nan);
     emit("all", st, unplanned, peak_actual);
@@ -148,11 +153,15 @@ int body(int argc, char** argv) {
                 st.run && st.predicted_s > 0 ? st.actual_s / st.predicted_s : nan,
                 st.work_pred > 0 ? st.work_act / st.work_pred : nan);
   }
-  out.add_row({"total", "all", fmt(total.planned), fmt(total.run), "0", fmt(total.predicted_s),
-               fmt(total.actual_s),
-               total.predicted_s > 0 ? fmt(total.actual_s / total.predicted_s) : "NA",
-               total.work_pred > 0 ? fmt(total.work_act / total.work_pred) : "NA",
-               fmt(total.predicted_all_s), fmt(total.peak_pred), "NA"});
+  TsvRow row = out.named_row();
+  row["study"] = "total", row["level"] = "all";
+  row["units_planned"] = fmt(total.planned), row["units_run"] = fmt(total.run), row["unplanned"] = "0";
+  row["predicted_s"] = fmt(total.predicted_s), row["actual_s"] = fmt(total.actual_s);
+  row["ratio"] = total.predicted_s > 0 ? fmt(total.actual_s / total.predicted_s) : "NA";
+  row["work_ratio"] = total.work_pred > 0 ? fmt(total.work_act / total.work_pred) : "NA";
+  row["predicted_total_s"] = fmt(total.predicted_all_s);
+  row["peak_pred_mib"] = fmt(total.peak_pred), row["peak_actual_mib"] = "NA";
+  out.add_row(row);
   out.save(a.str("out"));
   std::printf("wrote %s\n", a.str("out").c_str());
   return 0;

@@ -68,12 +68,20 @@ int body(int argc, char** argv) {
     const ConnectivityResult r = h_connectivity(*p, h);
     std::vector<uint8_t> bad(p->size(), 0);
     for (int32_t i : r.unconnected) bad[i] = 1;
-    for (std::size_t i = 0; i < p->size(); ++i)
-      tp.add_row({name, fmt(p->x[i]), fmt(p->y[i]), fmt(static_cast<int>(p->in_omega[i])),
-                  fmt(r.hops[i]), fmt(static_cast<int>(bad[i]))});
-    for (auto [i, j] : neighbour_edges(*p, h))
-      te.add_row({name, fmt(p->x[i]), fmt(p->y[i]), fmt(p->x[j]), fmt(p->y[j]),
-                  fmt(static_cast<int>(bad[i]))});
+    for (std::size_t i = 0; i < p->size(); ++i) {
+      TsvRow row = tp.named_row();
+      row["case"] = name, row["x"] = fmt(p->x[i]), row["y"] = fmt(p->y[i]);
+      row["in_omega"] = fmt(static_cast<int>(p->in_omega[i])), row["hops"] = fmt(r.hops[i]);
+      row["unconnected"] = fmt(static_cast<int>(bad[i]));
+      tp.add_row(row);
+    }
+    for (auto [i, j] : neighbour_edges(*p, h)) {
+      TsvRow row = te.named_row();
+      row["case"] = name, row["x1"] = fmt(p->x[i]), row["y1"] = fmt(p->y[i]);
+      row["x2"] = fmt(p->x[j]), row["y2"] = fmt(p->y[j]);
+      row["unconnected"] = fmt(static_cast<int>(bad[i]));  // of the edge's first particle
+      te.add_row(row);
+    }
     for (TsvTable* t : {&tp, &te}) {
       t->set(std::string("N_") + name, fmt(p->size()));
       t->set(std::string("h_connected_") + name, r.connected ? "yes" : "no");

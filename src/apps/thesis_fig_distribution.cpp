@@ -53,7 +53,10 @@ int body(int argc, char** argv) {
       const auto b = c.offset[i], e = c.offset[i + 1];
       for (auto k = b; k < e; ++k) {
         const auto k2 = k + 1 < e ? k + 1 : b;
-        t.add_row({fmt(i), fmt(c.px[k]), fmt(c.py[k]), fmt(c.px[k2]), fmt(c.py[k2])});
+        TsvRow row = t.named_row();
+        row["cell"] = fmt(i), row["x1"] = fmt(c.px[k]), row["y1"] = fmt(c.py[k]);
+        row["x2"] = fmt(c.px[k2]), row["y2"] = fmt(c.py[k2]);
+        t.add_row(row);
       }
     }
     t.set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
@@ -62,8 +65,11 @@ int body(int argc, char** argv) {
   TsvTable t;
   header(t);
   t.columns = {"x", "y", "in_omega"};
-  for (std::size_t i = 0; i < p.size(); ++i)
-    t.add_row({fmt(p.x[i]), fmt(p.y[i]), fmt(static_cast<int>(p.in_omega[i]))});
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    TsvRow row = t.named_row();
+    row["x"] = fmt(p.x[i]), row["y"] = fmt(p.y[i]), row["in_omega"] = fmt(static_cast<int>(p.in_omega[i]));
+    t.add_row(row);
+  }
   t.set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   t.save(a.str("particles"));
   return 0;

@@ -122,10 +122,14 @@ int cmd_weights(int argc, char** argv) {
   for (auto& n : names) {
     const auto& w = weight(n);
     const auto p = compute_properties(w);
-    t.add_row({w.name, w.source, w.role, fmt(w.constant), fmt(p.norm_2d), fmt(p.norm_3d),
-               fmt(p.order_k), yes(p.positive), fmt(p.p0), yes(p.continuous), yes(p.c1),
-               yes(p.hyp_1_2), yes(p.hyp_1_3), fmt(p.imoto_hyp2_k), fmt(p.inv_r2_integral),
-               yes(p.admissible)});
+    TsvRow row = t.named_row();
+    row["name"] = w.name, row["source"] = w.source, row["role"] = w.role, row["constant"] = fmt(w.constant);
+    row["norm_2d"] = fmt(p.norm_2d), row["norm_3d"] = fmt(p.norm_3d), row["order_k"] = fmt(p.order_k);
+    row["positive"] = yes(p.positive), row["p0"] = fmt(p.p0), row["continuous"] = yes(p.continuous);
+    row["c1"] = yes(p.c1), row["hyp_1_2"] = yes(p.hyp_1_2), row["hyp_1_3"] = yes(p.hyp_1_3);
+    row["imoto_hyp2_k"] = fmt(p.imoto_hyp2_k), row["inv_r2_integral"] = fmt(p.inv_r2_integral);
+    row["admissible"] = yes(p.admissible);
+    t.add_row(row);
   }
   print(t);
   return 0;
@@ -152,8 +156,12 @@ int cmd_particles(int argc, char** argv) {
   t.set("N", fmt(p.size()));
   t.set("N_in_omega", fmt(p.count_in_omega()));
   t.columns = {"x", "y", "in_omega", "i", "j"};
-  for (std::size_t k = 0; k < p.size(); ++k)
-    t.add_row({fmt(p.x[k]), fmt(p.y[k]), fmt(p.in_omega[k]), fmt(p.gi[k]), fmt(p.gj[k])});
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    TsvRow row = t.named_row();
+    row["x"] = fmt(p.x[k]), row["y"] = fmt(p.y[k]), row["in_omega"] = fmt(p.in_omega[k]);
+    row["i"] = fmt(p.gi[k]), row["j"] = fmt(p.gj[k]);
+    t.add_row(row);
+  }
   print(t);
   return 0;
 }
@@ -181,12 +189,19 @@ int cmd_voronoi(int argc, char** argv) {
   if (a.has("polygons")) {
     t.columns = {"particle", "x", "y"};
     for (std::size_t i = 0; i < p.size(); ++i)
-      for (auto k = v.offset[i]; k < v.offset[i + 1]; ++k)
-        t.add_row({fmt(i), fmt(v.px[k]), fmt(v.py[k])});
+      for (auto k = v.offset[i]; k < v.offset[i + 1]; ++k) {
+        TsvRow row = t.named_row();
+        row["particle"] = fmt(i), row["x"] = fmt(v.px[k]), row["y"] = fmt(v.py[k]);
+        t.add_row(row);
+      }
   } else {
     t.columns = {"x", "y", "area", "cover"};
-    for (std::size_t i = 0; i < p.size(); ++i)
-      t.add_row({fmt(p.x[i]), fmt(p.y[i]), fmt(v.area[i]), fmt(v.cover[i])});
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      TsvRow row = t.named_row();
+      row["x"] = fmt(p.x[i]), row["y"] = fmt(p.y[i]);
+      row["area"] = fmt(v.area[i]), row["cover"] = fmt(v.cover[i]);
+      t.add_row(row);
+    }
   }
   print(t);
   return 0;
@@ -244,8 +259,12 @@ int cmd_trunc(int argc, char** argv) {
                  "worst_to_boundary_over_h: its distance to the boundary of Omega / h");
   t.columns = {"dx", "h", "N", "N_in_omega", "pairs", "rel_error", "worst_x", "worst_y",
                "worst_to_boundary_over_h", "time_s"};
-  t.add_row({fmt(s.dx), fmt(s.h), fmt(r.n), fmt(r.n_in_omega), fmt(r.pairs), fmt(r.rel_error),
-             fmt(r.worst_x), fmt(r.worst_y), fmt(to_boundary / s.h), fmt(r.seconds)});
+  TsvRow row = t.named_row();
+  row["dx"] = fmt(s.dx), row["h"] = fmt(s.h), row["N"] = fmt(r.n), row["N_in_omega"] = fmt(r.n_in_omega);
+  row["pairs"] = fmt(r.pairs), row["rel_error"] = fmt(r.rel_error);
+  row["worst_x"] = fmt(r.worst_x), row["worst_y"] = fmt(r.worst_y);
+  row["worst_to_boundary_over_h"] = fmt(to_boundary / s.h), row["time_s"] = fmt(r.seconds);
+  t.add_row(row);
   if (r.h_exceeds_H)
     std::fprintf(stderr, "gpm trunc: warning: h = %g >= H = 0.1: stencils near the boundary are "
                          "cut by the edge of Omega_H (outside the theory)\n", s.h);
@@ -329,10 +348,15 @@ int cmd_poisson(int argc, char** argv) {
   t.set("volume_mismatch", "V_i/dx^2 - 1");
   t.columns = {"dx", "h", "h_over_H", "N", "N_omega", "volume_mismatch", "nnz", "rel_error", "max_x", "max_y",
                "max_distance_over_h", "rel_error_inner", "cg_iterations", "rel_residual", "solve_s"};
-  t.add_row({fmt(dx), fmt(h), fmt(h / Domain{}.H), fmt(p.size()), fmt(L.n_unknowns()),
-             fmt(V.front() / (dx * dx) - 1), fmt(static_cast<long long>(L.nnz())), fmt(e.rel_error), fmt(e.x), fmt(e.y),
-             fmt(e.distance_to_boundary / h), fmt(e.rel_error_inner), fmt(r.cg.iterations),
-             fmt(r.cg.rel_residual), fmt(r.solve_seconds)});
+  TsvRow row = t.named_row();
+  row["dx"] = fmt(dx), row["h"] = fmt(h), row["h_over_H"] = fmt(h / Domain{}.H), row["N"] = fmt(p.size());
+  row["N_omega"] = fmt(L.n_unknowns()), row["volume_mismatch"] = fmt(V.front() / (dx * dx) - 1);
+  row["nnz"] = fmt(static_cast<long long>(L.nnz())), row["rel_error"] = fmt(e.rel_error);
+  row["max_x"] = fmt(e.x), row["max_y"] = fmt(e.y);
+  row["max_distance_over_h"] = fmt(e.distance_to_boundary / h);
+  row["rel_error_inner"] = fmt(e.rel_error_inner), row["cg_iterations"] = fmt(r.cg.iterations);
+  row["rel_residual"] = fmt(r.cg.rel_residual), row["solve_s"] = fmt(r.solve_seconds);
+  t.add_row(row);
   print(t);
   return 0;
 }
@@ -377,11 +401,16 @@ int cmd_heat(int argc, char** argv) {
   t.set("error", "(4.2): max_k ||u-U||_l2(Omega_H) / max_k ||u||_l2(Omega_H)");
   t.columns = {"dx", "h", "N", "N_omega", "volume_mismatch", "theta", "dt", "K", "steps_done",
                "blew_up", "rel_error", "rel_error_max", "growth_max", "cg_mean_iterations", "seconds"};
-  t.add_row({fmt(dx), fmt(h), fmt(p.size()), fmt(L.n_unknowns()), fmt(V.front() / (dx * dx) - 1),
-             fmt(hs.theta), fmt(r.dt), fmt(static_cast<long long>(r.K)),
-             fmt(static_cast<long long>(r.steps_done)), r.blew_up ? "yes" : "no",
-             r.blew_up ? "NA" : fmt(r.rel_error), r.blew_up ? "NA" : fmt(r.rel_error_max),
-             fmt(r.growth_max), fmt(r.mean_cg_iterations), fmt(r.seconds)});
+  TsvRow row = t.named_row();
+  row["dx"] = fmt(dx), row["h"] = fmt(h), row["N"] = fmt(p.size()), row["N_omega"] = fmt(L.n_unknowns());
+  row["volume_mismatch"] = fmt(V.front() / (dx * dx) - 1), row["theta"] = fmt(hs.theta), row["dt"] = fmt(r.dt);
+  row["K"] = fmt(static_cast<long long>(r.K)), row["steps_done"] = fmt(static_cast<long long>(r.steps_done));
+  row["blew_up"] = r.blew_up ? "yes" : "no";
+  row["rel_error"] = r.blew_up ? "NA" : fmt(r.rel_error);
+  row["rel_error_max"] = r.blew_up ? "NA" : fmt(r.rel_error_max);
+  row["growth_max"] = fmt(r.growth_max), row["cg_mean_iterations"] = fmt(r.mean_cg_iterations);
+  row["seconds"] = fmt(r.seconds);
+  t.add_row(row);
   print(t);
   return 0;
 }
@@ -419,7 +448,9 @@ int cmd_smoothing(int argc, char** argv) {
     const double e = op == "lap"    ? laplacian_smoothing_error(w, k * h)
                      : op == "grad" ? gradient_smoothing_error(w, k * h)
                                     : interpolant_smoothing_error_case1(w, h);
-    t.add_row({fmt(h), fmt(k * h), fmt(e)});
+    TsvRow row = t.named_row();
+    row["h"] = fmt(h), row["kh"] = fmt(k * h), row["eps"] = fmt(e);
+    t.add_row(row);
   }
   print(t);
   return 0;
@@ -442,7 +473,7 @@ int cmd_fingerprint(int argc, char** argv) {
                        join(known, ", "));
   TsvTable t;
   t.set("git_revision", git_revision());
-  t.columns = {"program", "code"};
+  t.columns = {"program", "code"};  // two columns written on the next line: kept by position
   for (int i = 2; i < argc; ++i) t.add_row({argv[i], code_fingerprint(argv[i])});
   print(t);
   return 0;
@@ -698,8 +729,11 @@ int cmd_study(int argc, char** argv) {
     for (auto& e : study_registry()) {
       std::vector<std::string> command = {e.program};
       command.insert(command.end(), e.fixed_args.begin(), e.fixed_args.end());
-      t.add_row({e.name, e.item, join(command, " "), levels(e.levels.quick),
-                 levels(e.levels.paper), join(e.header(), ",")});
+      TsvRow row = t.named_row();
+      row["study"] = e.name, row["item"] = e.item, row["program"] = join(command, " ");
+      row["quick_levels"] = levels(e.levels.quick), row["paper_levels"] = levels(e.levels.paper);
+      row["header"] = join(e.header(), ",");
+      t.add_row(row);
     }
     print(t);
     return first.empty() ? 2 : 0;
@@ -709,8 +743,12 @@ int cmd_study(int argc, char** argv) {
     t.set("program", "gpm study --readings");
     add_provenance(t);
     t.columns = {"reading", "h_rule", "volumes", "dt_rule", "file_suffix"};
-    for (auto& r : heat_reading_matrix({"h10", "h15"}, {"lattice", "cell"}, {"fit", "exact"}))
-      t.add_row({r.name(), r.h_rule, r.volumes, r.dt_rule, r.file_suffix()});
+    for (auto& r : heat_reading_matrix({"h10", "h15"}, {"lattice", "cell"}, {"fit", "exact"})) {
+      TsvRow row = t.named_row();
+      row["reading"] = r.name(), row["h_rule"] = r.h_rule, row["volumes"] = r.volumes;
+      row["dt_rule"] = r.dt_rule, row["file_suffix"] = r.file_suffix();
+      t.add_row(row);
+    }
     print(t);
     return 0;
   }

@@ -40,6 +40,15 @@ std::optional<TsvTable> load_if(const std::string& path) {
   return TsvTable::load(path);
 }
 
+// One row of the table, by column name: its columns are set in decisions() at the end of this
+// file, while each question below writes its own row.
+void add_question(TsvTable& out, const std::string& question, const std::string& evidence,
+                  const std::string& decision) {
+  TsvRow row = out.named_row();
+  row["question"] = question, row["evidence"] = evidence, row["decision"] = decision;
+  out.add_row(row);
+}
+
 // ------------------------------------------------------------------------------------------
 // Table 4.7: dt = T/K or dt = dt0.
 
@@ -79,7 +88,7 @@ double mean_distance(const TsvTable& r) {
 void time_step_question(const std::string& store, const std::string& pub_dir, TsvTable& out) {
   const std::string fit = store + "/thesis_table4_7.tsv", ex = store + "/thesis_table4_7_dtexact.tsv";
   if (!fs::exists(fit) || !fs::exists(ex)) {
-    out.add_row({"Table 4.7 (dt = 0.5h, T = 0.1): dt = T/K or dt = dt0", "not yet in the store", "open"});
+    add_question(out, "Table 4.7 (dt = 0.5h, T = 0.1): dt = T/K or dt = dt0", "not yet in the store", "open");
     return;
   }
   const TsvTable published = TsvTable::load(pub_dir + "/thesis_table4_7_long.tsv");
@@ -116,10 +125,11 @@ void time_step_question(const std::string& store, const std::string& pub_dir, Ts
   for (int l = 5; l <= 9; ++l)
     if (steps.count(std::to_string(l)))
       k += format_text("%s2^-%d: %s", k.empty() ? "" : ", ", l, steps[std::to_string(l)].c_str());
-  out.add_row({"Table 4.7 (dt = 0.5h, T = 0.1): dt = T/K with K = ceil(T/dt0) (the thesis defines dt = T/K), or "
+  add_question(out,
+               "Table 4.7 (dt = 0.5h, T = 0.1): dt = T/K with K = ceil(T/dt0) (the thesis defines dt = T/K), or "
                "dt = dt0 as prescribed",
                ev + " Steps K under dt = T/K: " + k + ".",
-               "both readings kept; " + (verdict.empty() ? std::string("no level pair computed under both") : verdict)});
+               "both readings kept; " + (verdict.empty() ? std::string("no level pair computed under both") : verdict));
 }
 
 // ------------------------------------------------------------------------------------------
@@ -128,7 +138,7 @@ void time_step_question(const std::string& store, const std::string& pub_dir, Ts
 void poisson_volume_question(const std::string& store, const std::string& pub_dir, TsvTable& out) {
   const std::optional<TsvTable> diag = load_if(store + "/thesis_poisson_diagnostic.tsv");
   if (!diag || diag->column("tau_predicted") < 0) {
-    out.add_row({"Table 4.4: the volumes of (A.10)", "not yet in the store", "open"});
+    add_question(out, "Table 4.4: the volumes of (A.10)", "not yet in the store", "open");
     return;
   }
   const TsvTable pub = TsvTable::load(pub_dir + "/thesis_table4_4_long.tsv");
@@ -189,11 +199,11 @@ void poisson_volume_question(const std::string& store, const std::string& pub_di
       ev += format_text(" %s, rates 2^-8/2^-9:%s (published %s).", w.c_str(), line.c_str(),
                    p == published.end() ? "" : p->second.c_str());
     }
-    out.add_row({"Table 4.4, " + r + ": the volumes (A.10) on the grid G_dx", ev,
+    add_question(out, "Table 4.4, " + r + ": the volumes (A.10) on the grid G_dx", ev,
                  "the error is the operator consistency error (V/dx^2)(1 - eps) - 1 carried through the solve; with "
                  "(A.10) on G_dx the volume mismatch changes sign between 2^-8 and 2^-9 and sets the rates; with "
                  "V_i = dx^2 the rates are those of eps alone (rows *_cell). Kept: (A.10) as the thesis prints it; "
-                 "the published rates match V_i = dx^2"});
+                 "the published rates match V_i = dx^2");
   }
 }
 
@@ -259,10 +269,10 @@ void imoto_smoothing_question(const std::string& store, const std::string& pub_d
       r += format_text(", predicted (plain) %.2f, eps alone %.2f (published %s).",
                   two_level_rate(h[11], pred[11], h[12], pred[12]), two_level_rate(h[11], eps[11], h[12], eps[12]),
                   pubrate.c_str());
-    out.add_row({"Imoto Table 1, " + w + " at m = 5: smoothing, volume mismatch and particles", ev + r,
+    add_question(out, "Imoto Table 1, " + w + " at m = 5: smoothing, volume mismatch and particles", ev + r,
                  "the plain-grid error is the consistency error |(1 + delta)(1 - eps) - 1| of the operator (no "
                  "particle part); the jittered seeds add the particle part, which shrinks fastest between 2^-11 and "
-                 "2^-12 and so steepens the two-level rate"});
+                 "2^-12 and so steepens the two-level rate");
   }
 }
 
@@ -309,17 +319,17 @@ void imoto_where_question(const std::string& store, TsvTable& out) {
       ++n;
       dev = std::max(dev, std::fabs(x / it->second - 1));
     }
-    out.add_row(
-        {"Imoto Table 1, " + w + " at m = 5: where the maximum sits",
-         format_text("jittered runs (%d, levels%s): the largest error sits %.1f h to %.1f h inside the boundary of Omega; "
+    add_question(
+        out, "Imoto Table 1, " + w + " at m = 5: where the maximum sits",
+        format_text("jittered runs (%d, levels%s): the largest error sits %.1f h to %.1f h inside the boundary of Omega; "
                 "plain grid (%d runs): its maximum lies within %.2f h of the boundary (it is attained along whole "
                 "lines where |Lap u| is largest, so its place is not informative); the runs reproduce %d stored "
                 "errors to %.1e (relative)",
                 nj, lv.c_str(), jmin, jmax, np, pmax, n, dev),
-         jmin >= 1 ? "the particle part of the error is an interior effect (no boundary layer): the steep "
-                     "2^-11/2^-12 rate is not a boundary artefact"
-                   : "the largest error sits within h of the boundary in some jittered run: a boundary effect "
-                     "cannot be excluded"});
+        jmin >= 1 ? "the particle part of the error is an interior effect (no boundary layer): the steep "
+                    "2^-11/2^-12 rate is not a boundary artefact"
+                  : "the largest error sits within h of the boundary in some jittered run: a boundary effect "
+                    "cannot be excluded");
   }
 }
 
@@ -348,10 +358,10 @@ void readings_question(const TsvTable& score, TsvTable& out) {
   }
   for (const std::string& t : order)
     if (n[t] >= 2)
-      out.add_row({t + ": which reading of the set-up the document ran", ev[t],
+      add_question(out, t + ": which reading of the set-up the document ran", ev[t],
                    "identified: " + pick[t] +
                        " (the rule of paper/04-setup-rule.md: the fingerprint where one decides, else as printed; "
-                       "the judged rates play no part); every reading stays in the data"});
+                       "the judged rates play no part); every reading stays in the data");
 }
 
 // ------------------------------------------------------------------------------------------
@@ -392,12 +402,13 @@ void omega_h_question(TsvTable& out) {
     ev += ' ';
     ev += omega_h_level(k);
   }
-  out.add_row({"Omega_H: the square (-H, 1+H)^2 or the rounded H-neighbourhood of Omega; jittered particles that leave "
+  add_question(out,
+               "Omega_H: the square (-H, 1+H)^2 or the rounded H-neighbourhood of Omega; jittered particles that leave "
                "Omega_H mirrored back or dropped",
                ev,
                "the square: Imoto Sec. 5 sets Omega_H = (-0.1, 1.1)^2 in so many words, and its node count at 2^-5 is "
                "the N printed with Figure 4.1; particles mirrored (kept), the dropped alternative changes the volume "
-               "mismatch by the amounts listed"});
+               "mismatch by the amounts listed");
 }
 
 }  // namespace
@@ -412,19 +423,19 @@ TsvTable decisions(const std::string& store, const std::string& published_dir, c
   if (score) readings_question(*score, out);
   omega_h_question(out);
   // Decided by the documents' definitions (and checked by unit tests), not by stored runs.
-  out.add_row({"w^bell of Sections 4.2-4.3: which registry weight",
+  add_question(out, "w^bell of Sections 4.2-4.3: which registry weight",
                "thesis 4.1.2: the operators with the quartic polynomial are those of SPH with the bell-shaped kernel "
                "(Remark A.1: w = -(r/d) d/dr w^S); the unit test \"quartic_polynomial is -(r/2) d/dr of the "
                "bell-shaped kernel\" checks the registry weight against central differences of "
                "(5/pi)(1+3r)(1-r)^3 at r = 0.05..0.95",
                "quartic_polynomial (and piecewise cubic / quintic polynomial for w^cubic, w^quintic, by the same "
-               "remark)"});
-  out.add_row({"Gradient error norm",
+               "remark)");
+  add_question(out, "Gradient error norm",
                "Imoto Sec. 1 defines |x| as the Euclidean norm; the thesis writes [l-inf(Omega)]^2 for vector fields; "
                "test \"gradient error: Euclidean norm, brute force reference\" checks the fused pass against a "
                "brute-force Euclidean evaluation and that the component-wise value differs",
                "Euclidean length of the error vector, maximum over particles in Omega (all gradient data since this "
-               "change)"});
+               "change)");
   return out;
 }
 
