@@ -58,7 +58,7 @@
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/solvers/poisson_probes.hpp"
 #include "gpm/studies/profile.hpp"
-#include "gpm/studies/store.hpp"
+#include "gpm/studies/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
 using namespace gpm;
@@ -230,31 +230,30 @@ DenseFacts dense_facts(const DiscreteLaplacian& L) {
 }
 
 int body(int argc, char** argv) {
-  Args a("thesis_poisson_failure",
-         "Where the discrete Poisson problem (thesis (2.2)) fails: (a) a weight that changes\n"
-         "sign (cubic spike vs quartic polynomial): sign pattern, CG, maximum principle,\n"
-         "smallest eigenvalue; (b) h below the h-connectivity threshold: refusal and the\n"
-         "unchecked solve.");
-  a.opt("profile", "quick", "quick (levels 4-6, sweep at 2^-5, 4 seeds) or paper "
-                            "(levels 5-8, sweep at 2^-5..2^-7, 8 seeds)")
-      .output("out", "", "data file of part (a) (required)")
-      .output("out-sweep", "", "data file of part (b), the h sweep (required)")
-      .opt("seed", "1", "jitter seed of part (a)");
-  add_cache_options(a);
-  a.parse(argc, argv);
-  if (a.str("out").empty() || a.str("out-sweep").empty())
-    throw InputError("--out PATH and --out-sweep PATH are required (see --help)");
-  const CacheMode mode = cache_mode(a);
-  const Profile prof = parse_profile(a.str("profile"));
-  const uint64_t seed = a.seed();
+  // The runner owns the options, both data files (cache, store checks, header stamp), the
+  // progress lines and the closing lines; --out is part (a), --out-sweep part (b).
+  StudyRunner run("thesis_poisson_failure",
+                  "Where the discrete Poisson problem (thesis (2.2)) fails: (a) a weight that changes\n"
+                  "sign (cubic spike vs quartic polynomial): sign pattern, CG, maximum principle,\n"
+                  "smallest eigenvalue; (b) h below the h-connectivity threshold: refusal and the\n"
+                  "unchecked solve.  --seed and --levels are part (a)'s.",
+                  "quick (levels 4-6, sweep at 2^-5, 4 seeds) or paper (levels 5-8, sweep at "
+                  "2^-5..2^-7, 8 seeds)");
+  Args& a = run.args();
+  a.output("out-sweep", "", "data file of part (b), the h sweep (required)");
+  run.parse(argc, argv);
+  if (a.str("out-sweep").empty()) throw InputError("--out-sweep PATH is required (see --help)");
+  const Profile prof = run.profile();
+  const uint64_t seed = run.seed();
   const int dense_max = prof == Profile::quick ? kQuickDenseMax : kPaperDenseMax;
   const Domain dom;
   const TestFunction& u = test_function("sin2pi");
 
-  // --- (a) A weight that changes sign. ----------------------------------------------------
-  // One row per (reading of h, weight, level), cached: a rerun skips finished rows.
-  LevelCache ca(a.str("out"),
-                {{"program", "thesis_poisson_failure"}, {"part", "a: weight sign"},
+  // --- The data files, both opened at once (the runner keeps one set of files per run): --
+  // (a) one row per (reading of h, weight, level), (b) one row per (level, seed, h/dx);
+  // each cached, so a rerun skips finished rows.
+  const std::vector<LevelCache*> files = run.open_files(
+      {{run.out(), {{"program", "thesis_poisson_failure"}, {"part", "a: weight sign"},
                  {"profile", profile_name(prof)}, {"seed", fmt(static_cast<long long>(seed))},
                  {"tol", fmt(kTol)}, {"max_iter", fmt(kMaxIter)},
                  {"dense_max_unknowns", fmt(dense_max)}, {"function", "sin2pi"},
@@ -270,10 +269,25 @@ int body(int argc, char** argv) {
                  "negative_offdiag", "not_dominant", "positive_diag", "cg_status",
                  "cg_iterations", "rel_error", "cg_message", "mp_source", "mp_boundary",
                  "mp_boundary_abs",
-                 "lambda_min", "lambda_max", "green_min", "harmonic_min", "seconds"},
-                3, mode);
-  double total = 0;
-  for (int k : pick(prof, kQuickLevels, kPaperLevels)) {
+                 "lambda_min", "lambda_max", "green_min", "harmonic_min", "seconds"}},
+       {a.str("out-sweep"), {{"program", "thesis_poisson_failure"}, {"part", "b: h sweep"},
+                 {"profile", profile_name(prof)}, {"seed", seed_list(prof)},
+                 {"weight", kSweepWeight},
+                 {"tol", fmt(kTol)}, {"max_iter", fmt(kMaxIter)}, {"function", "sin2pi"},
+                 {"volumes", "uniform |Omega_H|/N"},
+                 {"h_star", "smallest h with h-connectivity (50 bisection steps in [0.1,3] dx)"},
+                 {"near_threshold", "rows at 0.98, 0.99, 0.995, 1.005, 1.02 h* per seed"},
+                 {"true_residual", "|-Delta_h U - f|_2 / |f + M_OB g|_2 over Omega, recomputed"}},
+                {"level", "seed", "h_over_dx", "dx", "h", "N_omega", "h_star_over_dx",
+                 "connected", "unconnected", "isolated", "checked_status", "checked_message",
+                 "unchecked_status", "unchecked_iterations", "rel_error", "max_abs_U", "true_residual",
+                 "unchecked_message", "seconds"}}},
+      {}, 3);
+  LevelCache& ca = *files[0];
+  LevelCache& cb = *files[1];
+
+  // --- (a) A weight that changes sign. ----------------------------------------------------
+  for (int k : run.levels(kQuickLevels, kPaperLevels)) {
     const double dx = std::ldexp(1.0, -k);
     // Particles, volumes, data and probes: shared by both weights and readings of h.
     const Particles p = jittered_grid(dx, seed);
@@ -283,7 +297,7 @@ int body(int argc, char** argv) {
     f_src[nearest(p, 0.5, 0.5, true)] = -1;
     for (const auto& rule : pde_h_rules())
       for (const auto& wname : kWeights) {
-        if (ca.has({rule, wname, fmt(k)})) continue;
+        if (ca.has({rule, wname, fmt(k)}) || !run.claim()) continue;
         const auto t0 = std::chrono::steady_clock::now();
         const double h = pde_h(rule, dx);
         const DiscreteLaplacian L(p, V, weight(wname), h, LaplacianStorage::assembled);
@@ -304,45 +318,31 @@ int body(int argc, char** argv) {
         DenseFacts df;
         if (static_cast<int>(L.n_unknowns()) <= dense_max) df = dense_facts(L);
         const double secs = seconds_since(t0);
-        total += secs;
         auto probe = [&](const Outcome& o) {
           return o.status == "ok" ? fmt(rise_above_zero(p, o.U)) : std::string("nan");
         };
-        ca.add({rule, wname, fmt(k), fmt(dx), fmt(h), fmt(h / dx), fmt(p.size()),
-                fmt(L.n_unknowns()), fmt(sp.negative_offdiag), fmt(sp.not_dominant),
-                fmt(sp.positive_diag), sol.status, fmt(sol.iterations), fmt(err), sol.message,
-                probe(src), probe(bnd), bnd.status == "ok" ? fmt(omega_max(p, bnd.U)) : "nan",
-                fmt(df.lambda_min), fmt(df.lambda_max),
-                fmt(df.green_min), fmt(df.harmonic_min), fmt(secs)});
-        ca.table().set("wall_time_s", total);
-        ca.save();
-        std::fprintf(stderr,
-                     "thesis_poisson_failure (a): %s %-18s dx=2^-%d h/dx=%.2f neg.off=%.3f "
-                     "CG %s (%d it) err=%.3g  mp src=%s bnd=%s  lmin=%.4g green_min=%.3g  "
-                     "%.1f s\n",
-                     rule.c_str(), wname.c_str(), k, h / dx, sp.negative_offdiag,
-                     sol.status.c_str(), sol.iterations, err, probe(src).c_str(),
-                     probe(bnd).c_str(), df.lambda_min, df.green_min, secs);
+        TsvRow row = run.row(0);
+        row["h_rule"] = rule, row["weight"] = wname, row["level"] = fmt(k), row["dx"] = fmt(dx);
+        row["h"] = fmt(h), row["h_over_dx"] = fmt(h / dx), row["N"] = fmt(p.size());
+        row["N_omega"] = fmt(L.n_unknowns()), row["negative_offdiag"] = fmt(sp.negative_offdiag);
+        row["not_dominant"] = fmt(sp.not_dominant), row["positive_diag"] = fmt(sp.positive_diag);
+        row["cg_status"] = sol.status, row["cg_iterations"] = fmt(sol.iterations);
+        row["rel_error"] = fmt(err), row["cg_message"] = sol.message;
+        row["mp_source"] = probe(src), row["mp_boundary"] = probe(bnd);
+        row["mp_boundary_abs"] = bnd.status == "ok" ? fmt(omega_max(p, bnd.U)) : "nan";
+        row["lambda_min"] = fmt(df.lambda_min), row["lambda_max"] = fmt(df.lambda_max);
+        row["green_min"] = fmt(df.green_min), row["harmonic_min"] = fmt(df.harmonic_min);
+        row["seconds"] = fmt(secs);
+        run.add(0, row);
+        run.unit_done(0, line_printf("(a) %s %-18s dx=2^-%d h/dx=%.2f neg.off=%.3f CG %s (%d it) "
+                                     "err=%.3g  mp src=%s bnd=%s  lmin=%.4g green_min=%.3g  %.1f s",
+                                     rule.c_str(), wname.c_str(), k, h / dx, sp.negative_offdiag,
+                                     sol.status.c_str(), sol.iterations, err, probe(src).c_str(),
+                                     probe(bnd).c_str(), df.lambda_min, df.green_min, secs));
       }
   }
 
   // --- (b) h below the connectivity threshold. ---------------------------------------------
-  // One row per (level, seed, h/Δx), cached.
-  LevelCache cb(a.str("out-sweep"),
-                {{"program", "thesis_poisson_failure"}, {"part", "b: h sweep"},
-                 {"profile", profile_name(prof)}, {"seed", seed_list(prof)},
-                 {"weight", kSweepWeight},
-                 {"tol", fmt(kTol)}, {"max_iter", fmt(kMaxIter)}, {"function", "sin2pi"},
-                 {"volumes", "uniform |Omega_H|/N"},
-                 {"h_star", "smallest h with h-connectivity (50 bisection steps in [0.1,3] dx)"},
-                 {"near_threshold", "rows at 0.98, 0.99, 0.995, 1.005, 1.02 h* per seed"},
-                 {"true_residual", "|-Delta_h U - f|_2 / |f + M_OB g|_2 over Omega, recomputed"}},
-                {"level", "seed", "h_over_dx", "dx", "h", "N_omega", "h_star_over_dx",
-                 "connected", "unconnected", "isolated", "checked_status", "checked_message",
-                 "unchecked_status", "unchecked_iterations", "rel_error", "max_abs_U", "true_residual",
-                 "unchecked_message", "seconds"},
-                3, mode);
-  double total_b = 0;
   for (int k : pick(prof, kQuickSweepLevels, kPaperSweepLevels))
     for (int s : pick(prof, kQuickSeeds, kPaperSeeds)) {
       const double dx = std::ldexp(1.0, -k);
@@ -356,7 +356,7 @@ int body(int argc, char** argv) {
       for (double c : kNearThreshold) radii.push_back(c * h_star);
       for (double h : radii) {
         const double c = h / dx;
-        if (cb.has({fmt(k), fmt(s), fmt(c)})) continue;
+        if (cb.has({fmt(k), fmt(s), fmt(c)}) || !run.claim()) continue;
         const auto t0 = std::chrono::steady_clock::now();
         const ConnectivityResult con = h_connectivity(p, h);
         const DiscreteLaplacian L(p, V, weight(kSweepWeight), h, LaplacianStorage::assembled);
@@ -388,29 +388,24 @@ int body(int argc, char** argv) {
           err /= umax;
         }
         const double secs = seconds_since(t0);
-        total_b += secs;
-        cb.add({fmt(k), fmt(s), fmt(c), fmt(dx), fmt(h), fmt(L.n_unknowns()),
-                fmt(h_star / dx), con.connected ? "yes" : "no", fmt(con.unconnected.size()),
-                fmt(isolated), chk.status, chk.message, unc.status, fmt(unc.iterations),
-                fmt(err), fmt(big), fmt(true_res), unc.message, fmt(secs)});
-        cb.table().set("wall_time_s", total_b);
-        cb.save();
-        std::fprintf(stderr,
-                     "thesis_poisson_failure (b): dx=2^-%d seed %d h/dx=%.2f (h*/dx=%.3f) "
-                     "%s, %zu unconnected, %lld isolated; checked: %s; unchecked: %s "
-                     "err=%.3g  %.2f s\n",
-                     k, s, c, h_star / dx, con.connected ? "connected" : "NOT connected",
-                     con.unconnected.size(), isolated, chk.status.c_str(), unc.status.c_str(),
-                     err, secs);
+        TsvRow row = run.row(1);
+        row["level"] = fmt(k), row["seed"] = fmt(s), row["h_over_dx"] = fmt(c), row["dx"] = fmt(dx);
+        row["h"] = fmt(h), row["N_omega"] = fmt(L.n_unknowns()), row["h_star_over_dx"] = fmt(h_star / dx);
+        row["connected"] = con.connected ? "yes" : "no", row["unconnected"] = fmt(con.unconnected.size());
+        row["isolated"] = fmt(isolated), row["checked_status"] = chk.status;
+        row["checked_message"] = chk.message, row["unchecked_status"] = unc.status;
+        row["unchecked_iterations"] = fmt(unc.iterations), row["rel_error"] = fmt(err);
+        row["max_abs_U"] = fmt(big), row["true_residual"] = fmt(true_res);
+        row["unchecked_message"] = unc.message, row["seconds"] = fmt(secs);
+        run.add(1, row);
+        run.unit_done(0, line_printf("(b) dx=2^-%d seed %d h/dx=%.2f (h*/dx=%.3f) %s, %zu unconnected, "
+                                     "%lld isolated; checked: %s; unchecked: %s err=%.3g  %.2f s",
+                                     k, s, c, h_star / dx, con.connected ? "connected" : "NOT connected",
+                                     con.unconnected.size(), isolated, chk.status.c_str(), unc.status.c_str(),
+                                     err, secs));
       }
     }
-  ca.finish();
-  cb.finish();
-  if (!ca.writes()) return 0;
-  std::printf("thesis_poisson_failure: wrote %s (%zu rows, %zu reused) and %s (%zu rows, "
-              "%zu reused), %.1f s computed\n",
-              a.str("out").c_str(), ca.rows().size(), ca.reused(), a.str("out-sweep").c_str(),
-              cb.rows().size(), cb.reused(), total + total_b);
+  run.finish();
   return 0;
 }
 

@@ -128,14 +128,14 @@ std::vector<LevelCache*> StudyRunner::open_files(std::vector<DataFile> files,
                                                  std::vector<std::string> columns,
                                                  int key_columns) {
   if (!caches_.empty()) throw std::logic_error("StudyRunner: data files opened twice");
-  columns_ = columns;
   for (auto& [k, v] : files.front().params) params_text_ += k + "=" + v + ";";
   std::vector<LevelCache*> out;
   for (auto& f : files) {
     for (auto& p : paths_)
       if (p == f.path) throw InputError("one data file named twice in one run: " + f.path);
     // A file that refuses (InputError) leaves the earlier ones' locks to their destructors.
-    caches_.push_back(std::make_unique<LevelCache>(f.path, std::move(f.params), columns,
+    file_columns_.push_back(f.columns.empty() ? columns : f.columns);
+    caches_.push_back(std::make_unique<LevelCache>(f.path, std::move(f.params), file_columns_.back(),
                                                    key_columns, mode_, rank_ == 0));
     paths_.push_back(f.path);
     saved_added_.push_back(0);

@@ -106,6 +106,9 @@ class StudyRunner {
   struct DataFile {
     std::string path;
     std::vector<std::pair<std::string, std::string>> params;
+    // Its own columns, for files that are parts of one study with different rows (the
+    // Poisson failure probes and their h sweep); empty: open_files' common columns.
+    std::vector<std::string> columns = {};
   };
   std::vector<LevelCache*> open_files(std::vector<DataFile> files, std::vector<std::string> columns,
                                       int key_columns);
@@ -137,7 +140,7 @@ class StudyRunner {
   void add(std::vector<std::string> row) { add(0, std::move(row)); }
   void add(std::size_t file, std::vector<std::string> row);
   // A row of the study's own columns filled by name (TsvRow), and that row added.
-  TsvRow row() const { return TsvRow(columns_); }
+  TsvRow row(std::size_t file = 0) const { return TsvRow(file_columns_.at(file)); }
   void add(const TsvRow& row) { add(0, row.cells()); }
   void add(std::size_t file, const TsvRow& row) { add(file, row.cells()); }
   int rank() const { return rank_; }
@@ -170,7 +173,7 @@ class StudyRunner {
   CacheMode mode_ = CacheMode::run;
   std::vector<std::unique_ptr<LevelCache>> caches_;  // open() or open_files()
   std::vector<std::string> paths_;
-  std::vector<std::string> columns_;  // the study's own (open_files)
+  std::vector<std::vector<std::string>> file_columns_;  // each file's own columns (open_files)
   std::vector<std::size_t> saved_added_;  // rows each file had added when last written
   int parts_ = 1;                          // --parts
   std::string params_text_;                // the first data file's parameters, for part files
