@@ -56,6 +56,7 @@ listing=$("$build/gpm" study --store-files) || { echo "verify_store.sh: gpm stud
 while IFS=$'\t' read -r _study file program args census coarse _slice; do
   [ "$args" = - ] && args=""
   [ "$census" = - ] && census=""
+  [ "$coarse" = - ] && coarse=""
   # shellcheck disable=SC2086  # the arguments are words
   check "$file.tsv" "$census" "$coarse" "$program" $args
 done < <(grep -v '^#' <<<"$listing" | tail -n +2 | awk -F'\t' -v OFS='\t' '{ for (i = 1; i <= NF; i++) if ($i == "") $i = "-"; print }')

@@ -361,6 +361,12 @@ std::vector<std::string> RegisteredStudy::header() const {
   return h;
 }
 
+std::vector<std::string> RegisteredStudy::command_args(const std::vector<std::string>& file_args) const {
+  std::vector<std::string> a = fixed_args;
+  a.insert(a.end(), file_args.begin(), file_args.end());
+  return a;
+}
+
 void StudyRegistry::add(RegisteredStudy s) {
   for (auto& o : studies_) {
     if (o.name == s.name) throw InputError("study '" + s.name + "' is registered twice");
@@ -393,9 +399,7 @@ TsvTable store_file_table(const StudyRegistry& registry) {
   t.columns = {"study", "file", "program", "args", "census", "coarse", "slice"};
   for (auto& s : registry)
     for (auto& f : s.store_files) {
-      std::vector<std::string> args = s.fixed_args;
-      args.insert(args.end(), f.args.begin(), f.args.end());
-      t.add_row({s.name, f.name, s.program, join(args, " "), join(f.census, " "), join(f.coarse, " "), f.slice});
+      t.add_row({s.name, f.name, s.program, join(s.command_args(f.args), " "), join(f.census, " "), join(f.coarse, " "), f.slice});
     }
   return t;
 }
@@ -420,8 +424,6 @@ const RegisteredStudy& registered_study_of_file(const std::string& file) {
 // --- make -------------------------------------------------------------------------------------
 
 namespace {
-// "a b c" for a make list; `prefix`, `suffix` around each.
-std::string words(const std::vector<std::string>& v) { return join(v, " "); }
 // 5$(,)6$(,)7: a comma inside $(call …) must be make's $(,).
 std::string call_levels(const std::vector<int>& k) {
   std::vector<std::string> s;
@@ -449,19 +451,18 @@ std::string make_rules(const StudyRegistry& registry) {
       }
     }
   }
-  m << "STUDIES := " << words(names) << "\n";
-  for (auto& g : groups) m << "STUDIES_" << g << " := " << words(group_names[g]) << "\n";
-  m << "STUDY_FILES := " << words(files) << "\n";
-  for (auto& g : groups) m << "STUDY_FILES_" << g << " := " << words(group_files[g]) << "\n";
-  m << "STUDY_RATES := " << words(rates) << "\n";
-  m << "STUDY_SCORED_RATES := " << words(scored) << "\n";
+  m << "STUDIES := " << join(names, " ") << "\n";
+  for (auto& g : groups) m << "STUDIES_" << g << " := " << join(group_names[g], " ") << "\n";
+  m << "STUDY_FILES := " << join(files, " ") << "\n";
+  for (auto& g : groups) m << "STUDY_FILES_" << g << " := " << join(group_files[g], " ") << "\n";
+  m << "STUDY_RATES := " << join(rates, " ") << "\n";
+  m << "STUDY_SCORED_RATES := " << join(scored, " ") << "\n";
   m << "DATAFILES += $(foreach f,$(STUDY_FILES) $(STUDY_RATES),$(DATA)/$(f).tsv)\n";
   for (auto& s : registry) {
     m << "\n# " << s.name << ": " << s.item << "\n";
     for (auto& f : s.files) {
-      std::vector<std::string> args = s.fixed_args;
-      args.insert(args.end(), f.args.begin(), f.args.end());
-      const std::string fixed = args.empty() ? "" : " " + words(args);
+      const std::vector<std::string> args = s.command_args(f.args);
+      const std::string fixed = args.empty() ? "" : " " + join(args, " ");
       std::string sides, side_files;
       for (auto& [option, stem] : f.side_outputs) {
         sides += " " + option + " $(DATA)/" + stem + ".tsv";

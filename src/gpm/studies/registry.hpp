@@ -97,6 +97,8 @@ struct RegisteredStudy {
   // The header of the data file its program writes: its columns, and for a cached study
   // the provenance of each row (code, made_on, checked).
   std::vector<std::string> header() const;
+  // The program's arguments for one of its files: the fixed ones, then the file's.
+  std::vector<std::string> command_args(const std::vector<std::string>& file_args) const;
 };
 
 class StudyRegistry {
