@@ -93,6 +93,8 @@ test-paper: build
 # program, levels already computed with the same parameters are read back, not redone.
 DATAFILES :=
 FIGFILES :=
+# The committed result store (paper profile): set before studies.mk, whose rules name it.
+STORE := results/paper
 , := ,
 # Goals that need no study rule may run before the first build; any other needs them.
 ifeq ($(wildcard $(STUDIES_MK)),)

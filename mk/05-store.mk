@@ -1,7 +1,6 @@
 # Paper scale from the committed result store (results/paper), for every profile: the
 # documents' rates computed from the stored rows (no study is run), the provenance of those
 # rows, and the verdict counts.  A fresh clone's `make report` shows them at once.
-STORE := results/paper
 STORE_FILES := $(wildcard $(STORE)/*.tsv)
 DATAFILES += $(DATA)/store_rates.tsv $(DATA)/store_summary.tsv $(DATA)/store_score.tsv \
              $(DATA)/checked_reasons.tsv $(DATA)/setup_identification.tsv
@@ -57,30 +56,12 @@ $(DATA)/verdicts.tsv: $(BUILD)/gpm tables/items.tsv $(DATA)/store_score.tsv \
 	$(BUILD)/gpm verdicts --items tables/items.tsv --score $(DATA)/store_score.tsv --data $(DATA) --out $@
 
 # The documents' figures drawn from the store where it holds their levels (the same gnuplot
-# scripts, datadir = the store): figures/out/store_<figure>.svg.
-STORE_FIGS := thesis_fig4_3 thesis_fig4_5 thesis_fig4_6 thesis_fig4_7 thesis_fig4_8 thesis_fig4_9 thesis_fig4_10 thesis_fig4_11 thesis_heat_readings imoto_fig5
-FIGFILES += $(foreach f,$(STORE_FIGS),$(FIGOUT)/store_$(f).svg)
-# Figures 4.8-4.11 (Poisson, heat) from the store in two readings of the set-up: the one the
-# set-up rule identified (setup_identification.tsv's `identified`, the board the report leads
-# with: store_thesis_fig4_N) and the reading as printed (h10, V_i = |Omega_H|/N, dt = T/K:
-# store_printed_thesis_fig4_N, for the supplement); figures/store_reading.sh finds the file.
-# store_reading_fig FIGURE TABLE READING PREFIX
-define store_reading_fig
-$$(FIGOUT)/$(4)thesis_fig$(1).svg: figures/thesis_fig$(1).gp figures/style.gp figures/store_reading.sh \
-    tables/store_lib.sh $$(DATA)/setup_identification.tsv $$(wildcard $$(STORE)/thesis_table$(2)*.tsv) tables/published/thesis_table$(2)_long.tsv
-	bash figures/store_reading.sh $$< $(2) $(3) $$(STORE) $$(DATA)/setup_identification.tsv $$@
-endef
-STORE_READING_FIGS := 4_8:4_4 4_9:4_5 4_10:4_6 4_11:4_7
-$(foreach p,$(STORE_READING_FIGS),$(eval $(call store_reading_fig,$(word 1,$(subst :, ,$(p))),$(word 2,$(subst :, ,$(p))),identified,store_)))
-$(foreach p,$(STORE_READING_FIGS),$(eval $(call store_reading_fig,$(word 1,$(subst :, ,$(p))),$(word 2,$(subst :, ,$(p))),h10,store_printed_)))
-$(foreach f,9 10 11,$(FIGOUT)/store_thesis_fig4_$(f).svg $(FIGOUT)/store_printed_thesis_fig4_$(f).svg): figures/thesis_heat.gp
-FIGFILES += $(foreach p,$(STORE_READING_FIGS),$(FIGOUT)/store_printed_thesis_fig$(word 1,$(subst :, ,$(p))).svg)
-$(FIGOUT)/store_thesis_fig4_3.svg: $(STORE)/thesis_table4_1.tsv figures/thesis_errors.gp tables/published/thesis_table4_1_long.tsv
-$(FIGOUT)/store_thesis_fig4_5.svg: $(STORE)/thesis_table4_2.tsv figures/thesis_errors.gp tables/published/thesis_table4_2_long.tsv
-$(FIGOUT)/store_thesis_fig4_6.svg $(FIGOUT)/store_thesis_fig4_7.svg: $(STORE)/thesis_table4_3.tsv figures/thesis_errors.gp \
-    tables/published/thesis_table4_3_long.tsv
+# scripts, datadir = the store): figures/out/store_<figure>.svg.  A study's figures and their
+# rules are the registry's (build/studies.mk; the per-reading ones, Figures 4.8-4.11, in the
+# reading the set-up rule identified and in the one printed); the figure of a group of studies
+# is here.
+FIGFILES += $(FIGOUT)/store_thesis_heat_readings.svg
 $(FIGOUT)/store_thesis_heat_readings.svg: $(foreach f,$(STUDY_FILES_heat),$(STORE)/$(f).tsv)
-$(FIGOUT)/store_imoto_fig5.svg: $(STORE)/imoto_fig5_table1.tsv tables/published/imoto_table1.tsv
 $(FIGOUT)/store_%.svg: figures/%.gp figures/style.gp
 	@mkdir -p $(FIGOUT)
 	gnuplot -e "datadir='$(STORE)'; $(GNUPLOT_STUDIES); out='$@.tmp'" $< && mv $@.tmp $@

@@ -5,7 +5,7 @@
 # rules are the registry's (build/studies.mk).
 DATAFILES += $(DATA)/imoto_regularity_cover.tsv $(DATA)/imoto_figs_particles.tsv
 FIGFILES  += $(FIGOUT)/imoto_fig4.svg $(FIGOUT)/imoto_fig2.svg $(FIGOUT)/imoto_fig3.svg \
-             $(FIGOUT)/imoto_fig5.svg $(FIGOUT)/imoto_covering.svg
+             $(FIGOUT)/imoto_covering.svg
 
 # Covering radius over levels and seeds, the counter-example, and d_N by the LP.
 $(DATA)/imoto_regularity_cover.tsv: $(BUILD)/imoto_regularity
@@ -19,5 +19,4 @@ $(DATA)/imoto_figs_particles.tsv: $(BUILD)/imoto_figs1_4
 $(FIGOUT)/imoto_fig4.svg: figures/imoto_fig4.gp figures/style.gp $(DATA)/imoto_figs_particles.tsv
 $(FIGOUT)/imoto_fig2.svg: figures/imoto_fig2.gp figures/style.gp $(DATA)/imoto_figs_particles.tsv
 $(FIGOUT)/imoto_fig3.svg: figures/imoto_fig3.gp figures/style.gp $(DATA)/imoto_figs_particles.tsv
-$(FIGOUT)/imoto_fig5.svg: figures/imoto_fig5.gp figures/style.gp $(DATA)/imoto_fig5_table1.tsv tables/published/imoto_table1.tsv
 $(FIGOUT)/imoto_covering.svg: figures/imoto_covering.gp figures/style.gp $(DATA)/imoto_regularity_cover.tsv

@@ -1,10 +1,11 @@
 # Thesis truncation-error studies (issue 4): Figures 1.1-1.4, 4.1-4.7, Tables 4.1-4.3.
 # Each table program writes one data file (all h readings and volume choices; key columns
-# h_reading, volumes, level); its rule and the rate tables (one per h reading and volumes,
-# rate_table --where) are the registry's (build/studies.mk, group truncation).
+# h_reading, volumes, level); its rule, the rate tables (one per h reading and volumes,
+# rate_table --where) and the figures of its errors (4.3, 4.5-4.7) are the registry's
+# (build/studies.mk, group truncation).
 DATAFILES += $(DATA)/thesis_fig_weights.tsv $(DATA)/thesis_fig1_1_particles.tsv \
              $(DATA)/thesis_fig4_1_particles.tsv $(DATA)/thesis_connectivity_particles.tsv
-FIGFILES  += $(foreach f,fig1_1 fig1_2 fig1_3 fig1_4 fig4_1 fig4_2 fig4_3 fig4_4 fig4_5 fig4_6 fig4_7 speed_accuracy,$(FIGOUT)/thesis_$(f).svg)
+FIGFILES  += $(foreach f,fig1_1 fig1_2 fig1_3 fig1_4 fig4_1 fig4_2 fig4_4 speed_accuracy,$(FIGOUT)/thesis_$(f).svg)
 
 # --- data ---------------------------------------------------------------------------------
 $(DATA)/thesis_fig_weights.tsv: $(BUILD)/thesis_fig_weights
@@ -24,8 +25,4 @@ $(FIGOUT)/thesis_fig1_4.svg: figures/thesis_fig1_4.gp figures/thesis_connectivit
 $(FIGOUT)/thesis_fig4_1.svg: figures/thesis_fig4_1.gp figures/style.gp $(DATA)/thesis_fig4_1_particles.tsv
 $(FIGOUT)/thesis_fig4_2.svg: figures/thesis_fig4_2.gp figures/style.gp $(DATA)/thesis_fig_weights.tsv
 $(FIGOUT)/thesis_fig4_4.svg: figures/thesis_fig4_4.gp figures/style.gp $(DATA)/thesis_fig_weights.tsv
-$(FIGOUT)/thesis_fig4_3.svg: figures/thesis_fig4_3.gp figures/thesis_errors.gp figures/style.gp $(DATA)/thesis_table4_1.tsv tables/published/thesis_table4_1_long.tsv
-$(FIGOUT)/thesis_fig4_5.svg: figures/thesis_fig4_5.gp figures/thesis_errors.gp figures/style.gp $(DATA)/thesis_table4_2.tsv tables/published/thesis_table4_2_long.tsv
-$(FIGOUT)/thesis_fig4_6.svg: figures/thesis_fig4_6.gp figures/thesis_errors.gp figures/style.gp $(DATA)/thesis_table4_3.tsv tables/published/thesis_table4_3_long.tsv
-$(FIGOUT)/thesis_fig4_7.svg: figures/thesis_fig4_7.gp figures/thesis_errors.gp figures/style.gp $(DATA)/thesis_table4_3.tsv tables/published/thesis_table4_3_long.tsv
 $(FIGOUT)/thesis_speed_accuracy.svg: figures/thesis_speed_accuracy.gp figures/style.gp $(foreach f,$(STUDY_FILES_truncation),$(DATA)/$(f).tsv)

@@ -3,13 +3,7 @@
 # rate rules are the registry's (build/studies.mk, groups poisson and heat): one run of
 # thesis_heat per table and h rule, which also writes the rows of the series that never blew
 # up (…_finite.tsv), the rate table's input.
-FIGFILES  += $(FIGOUT)/thesis_fig4_8.svg $(FIGOUT)/thesis_fig4_9.svg \
-             $(FIGOUT)/thesis_fig4_10.svg $(FIGOUT)/thesis_fig4_11.svg \
-             $(FIGOUT)/thesis_heat_readings.svg
+FIGFILES  += $(FIGOUT)/thesis_heat_readings.svg
 
-$(FIGOUT)/thesis_fig4_8.svg: figures/thesis_fig4_8.gp figures/style.gp $(DATA)/thesis_table4_4.tsv tables/published/thesis_table4_4_long.tsv
-$(FIGOUT)/thesis_fig4_9.svg: figures/thesis_fig4_9.gp figures/thesis_heat.gp figures/style.gp $(DATA)/thesis_table4_5.tsv tables/published/thesis_table4_5_long.tsv
-$(FIGOUT)/thesis_fig4_10.svg: figures/thesis_fig4_10.gp figures/thesis_heat.gp figures/style.gp $(DATA)/thesis_table4_6.tsv tables/published/thesis_table4_6_long.tsv
-$(FIGOUT)/thesis_fig4_11.svg: figures/thesis_fig4_11.gp figures/thesis_heat.gp figures/style.gp $(DATA)/thesis_table4_7.tsv tables/published/thesis_table4_7_long.tsv
 $(FIGOUT)/thesis_heat_readings.svg: figures/thesis_heat_readings.gp figures/style.gp \
     $(foreach f,$(STUDY_FILES_heat),$(DATA)/$(f).tsv)

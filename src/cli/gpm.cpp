@@ -704,13 +704,16 @@ int cmd_decisions(int argc, char** argv) {
 int cmd_study(int argc, char** argv) {
   const std::string first = argc >= 3 ? argv[2] : "";
   if (first == "--help" || first == "-h") {
-    std::cout << "usage: gpm study --list | --readings | --store-files | --make FILE | NAME [options]\n"
+    std::cout << "usage: gpm study --list | --readings | --store-files | --reading-file STUDY READING |\n"
+                 "                 --make FILE | NAME [options]\n"
                  "  --list      every registered study: document item, program, levels per profile\n"
                  "  --make FILE the studies' make rules and lists (make build writes build/studies.mk)\n"
                  "  --store-files  every study's files in the result store: program and arguments, the\n"
                  "              units each must hold (census) and the ones the store check recomputes\n"
                  "  --readings  the heat tables' set-up readings: name, h rule, volumes, time step,\n"
                  "              store file suffix (thesis_heat's {reading})\n"
+                 "  --reading-file STUDY READING  the store file (stem) holding that set-up reading's\n"
+                 "              rows (the per-reading figures find their data with it)\n"
                  "  NAME        runs the study's program with its fixed arguments, then the\n"
                  "              options given (e.g. --profile quick --out FILE); see\n"
                  "              gpm study NAME --help for them\n";
@@ -750,6 +753,11 @@ int cmd_study(int argc, char** argv) {
       t.add_row(row);
     }
     print(t);
+    return 0;
+  }
+  if (first == "--reading-file") {
+    if (argc != 5) throw InputError("gpm study --reading-file: give a study and a reading (e.g. thesis_table4_6 h15_cell_exact)");
+    std::cout << study_registry().study(argv[3]).store_file_of(argv[4]).name << "\n";
     return 0;
   }
   if (first == "--store-files") {

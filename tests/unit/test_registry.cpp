@@ -74,3 +74,35 @@ TEST_CASE("registry: a heat data file read back per unit", "[unit][registry]") {
   CHECK(r.at({"quartic_polynomial/theta=0", 6}).pair_interactions == Approx(1000.0 * 10 * 1));
   CHECK(r.at({"quartic_polynomial/theta=1", 6}).seconds == 2.5);
 }
+
+// The per-reading figures find a reading's store file through the registry: each heat
+// reading stored has one file, named by the reading's suffix (thesis_heat writes the same
+// names), Table 4.4 keeps both h rules of one volume choice per file and has no time step,
+// and an unknown reading or a study without readings is refused.
+TEST_CASE("registry: a set-up reading's store file", "[unit][registry]") {
+  const StudyRegistry& r = study_registry();
+  int heat_files = 0;
+  for (const HeatTable& hp : heat_tables()) {
+    const RegisteredStudy& s = r.study("thesis_table" + std::string(1, hp.table[0]) + "_" + hp.table.substr(2));
+    for (const StoreFile& f : s.store_files) {
+      REQUIRE(f.readings.size() == 1);
+      const HeatReading reading = [&] {
+        for (auto& x : heat_reading_matrix({"h10", "h15"}, {"lattice", "cell"}, {"fit", "exact"}))
+          if (x.name() == f.readings.front()) return x;
+        FAIL("no reading named " << f.readings.front());
+        return HeatReading{};
+      }();
+      CHECK(f.name == s.name + reading.file_suffix());
+      CHECK(s.store_file_of(reading.name()).name == f.name);
+      ++heat_files;
+    }
+  }
+  CHECK(heat_files == 4 + 8 + 8);
+  const RegisteredStudy& poisson = r.study("thesis_table4_4");
+  CHECK(poisson.store_file_of("h10").name == "thesis_table4_4");
+  CHECK(poisson.store_file_of("h15_exact").name == "thesis_table4_4");
+  CHECK(poisson.store_file_of("h15_cell_exact").name == "thesis_table4_4_cellvol");
+  CHECK_THROWS_AS(poisson.store_file_of("h20"), InputError);
+  CHECK_THROWS_AS(r.study("thesis_table4_5").store_file_of("h15_exact"), InputError);  // not stored
+  CHECK_THROWS_AS(r.study("thesis_table4_1").store_file_of("h10"), InputError);        // no readings
+}

@@ -1,7 +1,7 @@
 // Adding a study is one registry entry plus its unit body (README, "How to add"): this test
 // registers a small example study beside the package's and checks that every part that
 // should know it does, with no other file touched — the catalog (`gpm study`), the runner
-// (its levels, columns, cache), the plan, the make rules (build/studies.mk) and the
+// (its levels, columns, cache), the plan, the make rules (build/studies.mk, its figure's too) and the
 // verdicts (store rates, boards).
 #include <catch2/catch.hpp>
 
@@ -41,6 +41,7 @@ RegisteredStudy example_study() {
   s.files = {{"example_interpolant", {}, {}, {{"example_interpolant_rates", "example_interpolant", {}, true}}}};
   s.store_files = {{"example_interpolant", "all", {}, {}, {"--levels", "4"}}};
   s.published = PublishedRates{"example_table", "example_table.tsv", {"weight"}, "all", {}, false, {}};
+  s.figures = {{"example_fig", {}, false}};
   s.plan = [](UnitPricer& p) {
     for (int k : p.paper() ? std::vector<int>{4, 5, 6} : std::vector<int>{4, 5})
       p.add_fused("example_interpolant", "quartic", k, example_h(k), "imoto9");
@@ -155,6 +156,12 @@ TEST_CASE("registry example: the plan prices it and make gets its rules", "[unit
   CHECK(mk.find("$(DATA)/example_interpolant.tsv: $(BUILD)/example_interpolant\n") != std::string::npos);
   CHECK(mk.find("$(call store_recheck,$<,4)") != std::string::npos);
   CHECK(mk.find("$(DATA)/example_interpolant_rates.tsv: $(BUILD)/rate_table $(DATA)/example_interpolant.tsv "
+                "tables/published/example_table.tsv\n") != std::string::npos);
+  // Its figure, from the run's data and from the store.
+  CHECK(mk.find("FIGFILES += $(FIGOUT)/example_fig.svg $(FIGOUT)/store_example_fig.svg\n") != std::string::npos);
+  CHECK(mk.find("$(FIGOUT)/example_fig.svg: figures/example_fig.gp figures/style.gp $(DATA)/example_interpolant.tsv "
+                "tables/published/example_table.tsv\n") != std::string::npos);
+  CHECK(mk.find("$(FIGOUT)/store_example_fig.svg: figures/example_fig.gp figures/style.gp $(STORE)/example_interpolant.tsv "
                 "tables/published/example_table.tsv\n") != std::string::npos);
   // On the front page's scoreboard list, after the package's own.
   const auto scored = mk.find("STUDY_SCORED_RATES := ");

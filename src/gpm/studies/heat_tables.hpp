@@ -40,7 +40,7 @@ constexpr double kHeatKappa = 0.5, kHeatT = 0.1;
 // One reading of the heat tables' set-up (paper/04-setup-rule.md): the h rule (h10 as
 // printed, h15), the volumes (lattice: (A.10)'s |Ω_H|/N as printed, cell: Δx²) and the time
 // step (fit: Δt = T/K as printed, exact: Δt = Δt₀).  The one map from a reading to its name
-// in the rate tables and to its store file (tables/store_lib.sh's heat_file mirrors it).
+// in the rate tables and to its store file (the registry's store files carry these names).
 struct HeatReading {
   std::string h_rule = "h10", volumes = "lattice", dt_rule = "fit";
   // h10, h15_cell, h10_exact, h15_cell_exact, …

@@ -76,6 +76,7 @@ RegisteredStudy imoto() {
                    {"imoto_fig5_table1_plain", "plain", {"--jitter", "0"}, {}, coarse},
                    {"imoto_fig5_table1_cellvol", "cellvol", {"--volumes", "cell"}, {}, coarse}};
   s.published = PublishedRates{"imoto_table1", "imoto_table1.tsv", {"operator", "weight", "m"}, "all", {}, false, {}};
+  s.figures = {{"imoto_fig5", {}, false}};
   s.plan = [](UnitPricer& p) {
     for (int k : p.paper() ? imoto_study().levels.paper : imoto_study().levels.quick)
       for (double m : imoto_study().orders)
@@ -128,6 +129,12 @@ RegisteredStudy thesis_truncation(const ThesisTableSpec& t) {
           }
         return out;
       }};
+  // The document's figures of the table: errors against h (Table 4.3: the gradient, then
+  // the Laplacian).
+  const std::map<std::string, std::vector<std::string>> figures = {
+      {"thesis_table4_1", {"thesis_fig4_3"}}, {"thesis_table4_2", {"thesis_fig4_5"}},
+      {"thesis_table4_3", {"thesis_fig4_6", "thesis_fig4_7"}}};
+  for (const std::string& f : figures.at(t.program)) s.figures.push_back({f, {"figures/thesis_errors.gp"}, false});
   s.plan = [&t](UnitPricer& p) {
     std::vector<int> all;
     for (HReading r : t.readings) {
@@ -171,13 +178,14 @@ RegisteredStudy poisson() {
   // Both readings of h in one file (the verdicts give each its slice); cellvol is the reading
   // V_i = dx^2; seeds 2, 3 at the coarse and the rate levels.
   const std::vector<std::string> coarse = {"--levels", "5,6"};
-  s.store_files = {{"thesis_table4_4", "all", {}, {}, coarse},
-                   {"thesis_table4_4_cellvol", "cellvol", {"--volumes", "cell"}, {}, coarse},
+  s.store_files = {{"thesis_table4_4", "all", {}, {}, coarse, {"h10", "h15"}},
+                   {"thesis_table4_4_cellvol", "cellvol", {"--volumes", "cell"}, {}, coarse, {"h10_cell", "h15_cell"}},
                    {"thesis_table4_4_seed2", "seed2", {"--seed", "2"}, {"--levels", "5,6,8,9"}, coarse},
                    {"thesis_table4_4_seed3", "seed3", {"--seed", "3"}, {"--levels", "5,6,8,9"}, coarse}};
   s.published = PublishedRates{"thesis_table4_4", "thesis_table4_4_long.tsv", {"h_rule", "weight"}, "h10",
                                [](const HeatReading& r) { return r.h_rule + (r.volumes == "cell" ? "_cell" : ""); },
                                false, {}};
+  s.figures = {{"thesis_fig4_8", {}, /*per_reading=*/true}};
   s.plan = [](UnitPricer& p) {
     const Calibration& c = p.cal();
     for (int k : p.paper() ? poisson_table().levels.paper : poisson_table().levels.quick)
@@ -271,10 +279,13 @@ RegisteredStudy heat(const HeatTable& hp) {
     args.insert(args.end(), r.args.begin(), r.args.end());
     s.store_files.push_back({name + reading.file_suffix(), reading.name(), args,
                              r.census.empty() ? std::vector<std::string>{} : std::vector<std::string>{"--levels", r.census},
-                             {"--levels", "5"}});
+                             {"--levels", "5"}, {reading.name()}});
   }
   s.published = PublishedRates{name, name + "_long.tsv", {"weight", "theta"}, "h10",
                                [](const HeatReading& r) { return r.name(); }, /*finite_series=*/true, {}};
+  // The document's figure of the table (Figures 4.9–4.11), drawn in each reading.
+  const std::map<std::string, std::string> figure = {{"4.5", "thesis_fig4_9"}, {"4.6", "thesis_fig4_10"}, {"4.7", "thesis_fig4_11"}};
+  s.figures = {{figure.at(hp.table), {"figures/thesis_heat.gp"}, /*per_reading=*/true}};
   s.plan = [&hp](UnitPricer& p) {
     for (const char* rule : {"h10", "h15"}) {
       const std::string study = heat_file(hp, rule);
@@ -361,6 +372,16 @@ std::vector<std::string> RegisteredStudy::header() const {
   return h;
 }
 
+const StoreFile& RegisteredStudy::store_file_of(const std::string& reading) const {
+  const HeatReading r = heat_reading_named(reading);
+  if (!published || !published->identified_slice)
+    throw InputError("study '" + name + "' keeps no set-up readings in the store");
+  const std::string slice = published->identified_slice(r);
+  for (const StoreFile& f : store_files)
+    if (std::find(f.readings.begin(), f.readings.end(), slice) != f.readings.end()) return f;
+  throw InputError("study '" + name + "' stores no file of the reading '" + reading + "'");
+}
+
 std::vector<std::string> RegisteredStudy::command_args(const std::vector<std::string>& file_args) const {
   std::vector<std::string> a = fixed_args;
   a.insert(a.end(), file_args.begin(), file_args.end());
@@ -430,6 +451,37 @@ std::string call_levels(const std::vector<int>& k) {
   for (int v : k) s.push_back(fmt(v));
   return join(s, "$(,)");
 }
+
+// The rules of a study's figures: from the run's data (the pattern rule's gnuplot call) and
+// from the store (mk/05's store_% rule), a per-reading one twice (figures/store_reading.sh:
+// the identified reading, then h10, the one printed).  STORE must be set before this file is
+// read (the Makefile), since make expands prerequisites as it reads them.
+void figure_rules(std::ostringstream& m, const RegisteredStudy& s) {
+  if (s.figures.empty()) return;
+  if (s.files.empty() || !s.published) throw InputError("study '" + s.name + "': a figure needs a data file and published rates");
+  const std::string data = s.files.front().name + ".tsv", pub = "tables/published/" + s.published->file;
+  for (const StudyFigure& f : s.figures) {
+    std::string inputs = "figures/" + f.name + ".gp figures/style.gp";
+    for (auto& g : f.scripts) inputs += " " + g;
+    m << "FIGFILES += $(FIGOUT)/" << f.name << ".svg $(FIGOUT)/store_" << f.name << ".svg\n";
+    m << "$(FIGOUT)/" << f.name << ".svg: " << inputs << " $(DATA)/" << data << " " << pub << "\n";
+    if (!f.per_reading) {
+      m << "$(FIGOUT)/store_" << f.name << ".svg: " << inputs << " $(STORE)/" << data << " " << pub << "\n";
+      continue;
+    }
+    std::vector<std::string> stored;
+    for (auto& sf : s.store_files)
+      if (!sf.readings.empty()) stored.push_back("$(STORE)/" + sf.name + ".tsv");
+    m << "FIGFILES += $(FIGOUT)/store_printed_" << f.name << ".svg\n";
+    for (const char* reading : {"identified", "h10"}) {
+      const std::string out = std::string(reading) == "h10" ? "store_printed_" : "store_";
+      m << "$(FIGOUT)/" << out << f.name << ".svg: " << inputs << " figures/store_reading.sh $(BUILD)/gpm "
+        << "$(DATA)/setup_identification.tsv $(wildcard " << join(stored, " ") << ") " << pub << "\n";
+      m << "\tbash figures/store_reading.sh $(BUILD)/gpm $< " << s.name << " " << reading
+        << " $(STORE) $(DATA)/setup_identification.tsv $@\n";
+    }
+  }
+}
 }  // namespace
 
 std::string make_rules(const StudyRegistry& registry) {
@@ -488,6 +540,7 @@ std::string make_rules(const StudyRegistry& registry) {
         m << " --out $@\n";
       }
     }
+    figure_rules(m, s);
   }
   return m.str();
 }

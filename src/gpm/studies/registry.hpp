@@ -51,6 +51,21 @@ struct StoreFile {
   std::vector<std::string> args;    // the program's arguments beyond the study's fixed ones
   std::vector<std::string> census;  // options naming the units it must hold (none: the paper levels)
   std::vector<std::string> coarse;  // options naming the cheap units recomputed by the check
+  // The set-up readings whose rows it holds, named as PublishedRates::identified_slice names
+  // them (a heat file: its one reading; Table 4.4: both h rules of one volume choice); none
+  // for a file of another jitter realization.  The per-reading figures find their file here.
+  std::vector<std::string> readings = {};
+};
+
+// A figure of the document drawn from a study's data: figures/<name>.gp reads the study's
+// (first) data file and its published rates.  make draws it from the run's data
+// (figures/out/<name>.svg) and from the store (store_<name>.svg); a per-reading figure is
+// drawn from the store twice, in the identified reading and in the printed one
+// (figures/store_reading.sh; store_printed_<name>.svg).
+struct StudyFigure {
+  std::string name;                  // thesis_fig4_8
+  std::vector<std::string> scripts;  // further gnuplot files it loads
+  bool per_reading = false;
 };
 
 // A slice of a stored file: rows of one set-up (reading of h, volumes, seed, …).
@@ -87,6 +102,7 @@ struct RegisteredStudy {
   std::vector<StudyFile> files;      // what a make run writes
   std::vector<StoreFile> store_files;  // what the committed store holds of it
   std::optional<PublishedRates> published;
+  std::vector<StudyFigure> figures;
   // Appends the units of the profile (pricer.paper()) to pricer.units().
   std::function<void(UnitPricer& pricer)> plan;
   // What the data file `file` recorded per (variant, level): seconds and work.
@@ -99,6 +115,10 @@ struct RegisteredStudy {
   std::vector<std::string> header() const;
   // The program's arguments for one of its files: the fixed ones, then the file's.
   std::vector<std::string> command_args(const std::vector<std::string>& file_args) const;
+  // The store file holding the rows of a set-up reading (a HeatReading name: h10,
+  // h15_cell_exact, …; Table 4.4 ignores the time step); InputError if the reading is unknown
+  // or the study stores none of it.
+  const StoreFile& store_file_of(const std::string& reading) const;
 };
 
 class StudyRegistry {
