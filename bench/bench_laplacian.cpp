@@ -127,7 +127,7 @@ int body(int argc, char** argv) {
 
   // One loop over the resolutions: build both forms, time products per thread count.
   for (double dx : dxs) {
-    const double h = gpm::pde_h("h10", dx);
+    const double h = gpm::pde_h(gpm::HRule::h10, dx);
     const gpm::Particles p = gpm::jittered_grid(dx, seed);
     const std::vector<double> V(p.size(), gpm::Domain{}.area_H() / static_cast<double>(p.size()));
 

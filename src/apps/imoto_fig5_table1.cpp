@@ -140,8 +140,7 @@ int body(int argc, char** argv) {
       : jitter == 0  ? "none: the plain grid (iΔx, jΔx)"
                      : "|eta| < " + fmt(jitter) + ", counter-based hash of (seed,i,j), mirrored at the edge";
   const long long printed_max = args.integer("printed-max-level", 3, 13);
-  const std::string volumes = args.str("volumes");
-  pde_volumes_description(volumes);  // InputError naming an unknown choice
+  const PdeVolumes volumes = parse_pde_volumes(args.str("volumes"));
 
   // The data file's parameters: a stored row is reused only if all of these agree.
   const Domain dom;
@@ -151,7 +150,7 @@ int body(int argc, char** argv) {
       {"seed", fmt(static_cast<long long>(seed))},
       {"function", "sin(2 pi (x+y))"},
       // The default's header text is kept as it was, so stored rows stay comparable.
-      {"volumes", volumes == "lattice" ? "V_i = |Omega_H|/N" : "V_i = dx^2 (the delta-free reading)"},
+      {"volumes", volumes == PdeVolumes::lattice ? "V_i = |Omega_H|/N" : "V_i = dx^2 (the delta-free reading)"},
       {"h", "h_N = 2.6 * 2^(5/m-5) * dx^(1/m)"},
       {"H", fmt(dom.H)},
       {"jitter", jitter_text},

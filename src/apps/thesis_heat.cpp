@@ -72,7 +72,7 @@ void write_rates_input(LevelCache& cache, const std::string& path) {
 }
 
 // A path with "{reading}" replaced by the reading's store suffix.
-std::string reading_path(const std::string& pattern, const HeatReading& r) {
+std::string reading_path(const std::string& pattern, const PdeSetup& r) {
   std::string s = pattern;
   const std::string mark = "{reading}";
   if (auto at = s.find(mark); at != std::string::npos) s.replace(at, mark.size(), r.file_suffix());
@@ -82,14 +82,14 @@ std::string reading_path(const std::string& pattern, const HeatReading& r) {
 // The data file's header for one reading.
 std::vector<std::pair<std::string, std::string>> heat_params(const HeatTable& ts, const StudyRunner& run,
                                                              const HeatSetting& hs, bool guarded,
-                                                             const HeatReading& r) {
-  const bool fit = r.dt_rule == "fit";
+                                                             const PdeSetup& r) {
+  const bool fit = r.dt_rule == DtRule::fit;
   return {{"program", "thesis_heat"}, {"table", ts.table}, {"profile", profile_name(run.profile())},
           {"seed", fmt(static_cast<long long>(run.seed()))}, {"kappa", fmt(kHeatKappa)}, {"T", fmt(kHeatT)},
           {"dt_nominal", ts.dt_rule}, {"steps", fit ? "K = ceil(T/dt_nominal), dt = T/K"
                               : "dt = dt_nominal, K = ceil(T/dt_nominal) (last step at K dt >= T)"},
           {"tol", fmt(hs.tol)}, {"blowup", guarded ? fmt(hs.blowup_factor) : "off"},
-          {"h_rule", r.h_rule},
+          {"h_rule", h_rule_name(r.h_rule)},
           {"h", pde_h_formula(r.h_rule)}, {"volumes", pde_volumes_description(r.volumes)},
           {"error", "(4.2): max_k ||u-U||_l2(Omega_H) / max_k ||u||_l2(Omega_H)"}};
 }
@@ -122,9 +122,13 @@ int body(int argc, char** argv) {
   run.parse(argc, argv);
   const HeatTable& ts = heat_table(a.str("table"));
   // The readings: every combination of the listed choices (InputError naming a bad one).
-  const std::vector<std::string> h_rules = a.list("h-rule"), volume_choices = a.list("volumes");
-  const std::vector<HeatReading> readings =
-      heat_reading_matrix(h_rules, volume_choices, a.list("dt-rule"));
+  std::vector<HRule> h_rules;
+  std::vector<PdeVolumes> volume_choices;
+  std::vector<DtRule> dt_rules;
+  for (auto& s : a.list("h-rule")) h_rules.push_back(parse_h_rule(s));
+  for (auto& s : a.list("volumes")) volume_choices.push_back(parse_pde_volumes(s));
+  for (auto& s : a.list("dt-rule")) dt_rules.push_back(parse_dt_rule(s));
+  const std::vector<PdeSetup> readings = pde_setup_matrix(h_rules, volume_choices, dt_rules);
   HeatSetting hs;
   hs.kappa = kHeatKappa;
   hs.T = kHeatT;
@@ -155,15 +159,15 @@ int body(int argc, char** argv) {
   const double max_bytes = a.positive("max-gb") * 1e9;
   // Levels: --levels, else the profile's (with the paper profile's trim of the h rule; with
   // both h rules, the union: a level trimmed for h15 is still run for h10).
-  std::map<std::string, std::vector<int>> rule_levels;
+  std::map<HRule, std::vector<int>> rule_levels;
   std::vector<int> levels;
-  for (auto& hr : h_rules) {
+  for (HRule hr : h_rules) {
     rule_levels[hr] = run.levels(ts.quick, heat_levels(ts, true, hr));
     for (int k : rule_levels[hr])
       if (std::find(levels.begin(), levels.end(), k) == levels.end()) levels.push_back(k);
   }
   std::sort(levels.begin(), levels.end());
-  auto runs_level = [&](const std::string& hr, int k) {
+  auto runs_level = [&](HRule hr, int k) {
     return std::find(rule_levels[hr].begin(), rule_levels[hr].end(), k) != rule_levels[hr].end();
   };
   require_pde_levels_fit_memory(levels, h_rules, storage, max_bytes);
@@ -185,9 +189,9 @@ int body(int argc, char** argv) {
     // The level: particles and the volumes of each choice.
     const double dx = std::ldexp(1.0, -k);
     const Particles p = jittered_grid(dx, run.seed());
-    std::map<std::string, std::vector<double>> V;
-    for (auto& vc : volume_choices) V[vc] = pde_volumes(vc, p, dx, dom);
-    for (const auto& h_rule : h_rules) {
+    std::map<PdeVolumes, std::vector<double>> V;
+    for (PdeVolumes vc : volume_choices) V[vc] = pde_volumes(vc, p, dx, dom);
+    for (HRule h_rule : h_rules) {
       if (!runs_level(h_rule, k)) continue;
       // h and the nominal step Δt₀ of the table.
       const double h = pde_h(h_rule, dx);
@@ -218,20 +222,20 @@ int body(int argc, char** argv) {
         const WeightFunction& w = weight(wname);
         std::vector<bool> done(todo.size(), false);
         while (std::find(done.begin(), done.end(), false) != done.end()) {
-          const std::string& own =
+          const PdeVolumes own =
               readings[todo[std::find(done.begin(), done.end(), false) - done.begin()].reading].volumes;
           const DiscreteLaplacian L(p, V[own], w, h, storage, max_bytes);
           const bool shares = L.assembled() && storage != LaplacianStorage::full;
-          std::map<std::string, DiscreteLaplacian::Volumes> other;
+          std::map<PdeVolumes, DiscreteLaplacian::Volumes> other;
           std::vector<std::size_t> here;
           std::vector<HeatSetting> settings;
           for (std::size_t u = 0; u < todo.size(); ++u) {
-            const HeatReading& r = readings[todo[u].reading];
+            const PdeSetup& r = readings[todo[u].reading];
             if (done[u] || (r.volumes != own && !shares)) continue;
             HeatSetting s = hs;
             s.theta = todo[u].theta;
             s.dt_nominal = dt0;
-            s.fit_T = r.dt_rule == "fit";
+            s.fit_T = r.dt_rule == DtRule::fit;
             if (r.volumes != own) {
               if (!other.count(r.volumes)) other.emplace(r.volumes, L.volumes_for(p, w, V[r.volumes]));
               s.volumes = &other.at(r.volumes);
@@ -242,7 +246,7 @@ int body(int argc, char** argv) {
           for (std::size_t i = 0; i < here.size(); ++i) {
             const Todo& t = todo[here[i]];
             const HeatResult& res = rs[i];
-            const HeatReading& r = readings[t.reading];
+            const PdeSetup& r = readings[t.reading];
             // The row, by column name (heat_columns()); a blown-up series has no error.
             const std::string na = "NA";
             TsvRow row = run.row();

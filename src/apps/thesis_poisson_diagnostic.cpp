@@ -49,12 +49,12 @@ struct Variant {
   std::string name;
   uint64_t seed;
   double jitter;
-  std::string volumes;
+  PdeVolumes volumes;
 };
 const std::vector<Variant> kVariants = {
-    {"seed1", 1, 0.25, "lattice"},     {"seed2", 2, 0.25, "lattice"},
-    {"seed3", 3, 0.25, "lattice"},     {"plain", 1, 0.0, "lattice"},
-    {"seed1_cell", 1, 0.25, "cell"},   {"plain_cell", 1, 0.0, "cell"}};
+    {"seed1", 1, 0.25, PdeVolumes::lattice},   {"seed2", 2, 0.25, PdeVolumes::lattice},
+    {"seed3", 3, 0.25, PdeVolumes::lattice},   {"plain", 1, 0.0, PdeVolumes::lattice},
+    {"seed1_cell", 1, 0.25, PdeVolumes::cell}, {"plain_cell", 1, 0.0, PdeVolumes::cell}};
 
 // The measured consistency of Δ_h on u over Ω: the signed projection of τ = Δ_h u − Δu on Δu,
 // and the max-norm ratio.
@@ -105,7 +105,7 @@ int body(int argc, char** argv) {
   LevelCache& cache = run.open(
       {{"program", "thesis_poisson_diagnostic"}, {"profile", profile_name(run.profile())},
        {"tol", fmt(tol)}, {"function", "sin2pi"}, {"volumes", "uniform |Omega_H|/N"},
-       {"h10", pde_h_formula("h10")}, {"h15", pde_h_formula("h15")},
+       {"h10", pde_h_formula(HRule::h10)}, {"h15", pde_h_formula(HRule::h15)},
        {"variants", "seed1, seed2, seed3: jitter 1/4 dx; plain: jitter 0; "
                     "_cell: V_i = dx^2 instead of |Omega_H|/N"},
        {"rel_error_inner", "max over particles at least h from the boundary of Omega"},
@@ -129,8 +129,9 @@ int body(int argc, char** argv) {
       const auto V = pde_volumes(var.volumes, p, dx, dom);
       const double mismatch = V.front() / (dx * dx) - 1;
       const PoissonData d = poisson_data(p, u);
-      for (const auto& rule : pde_h_rules()) {
-        const double h = pde_h(rule, dx);
+      for (HRule rule_id : pde_h_rules()) {
+        const double h = pde_h(rule_id, dx);
+        const std::string rule = h_rule_name(rule_id);  // the data file's h_rule
         for (const auto& w : weights) {
           if (cache.has({rule, w, fmt(k), var.name}) || !run.claim()) continue;
           const auto t0 = std::chrono::steady_clock::now();

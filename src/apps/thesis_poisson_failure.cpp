@@ -295,11 +295,12 @@ int body(int argc, char** argv) {
     const auto [f, g, umax] = poisson_data(p, u);
     std::vector<double> zero(p.size(), 0.0), f_src(p.size(), 0.0);
     f_src[nearest(p, 0.5, 0.5, true)] = -1;
-    for (const auto& rule : pde_h_rules())
+    for (HRule rule_id : pde_h_rules())
       for (const auto& wname : kWeights) {
+        const std::string rule = h_rule_name(rule_id);  // the data file's h_rule
         if (ca.has({rule, wname, fmt(k)}) || !run.claim()) continue;
         const auto t0 = std::chrono::steady_clock::now();
-        const double h = pde_h(rule, dx);
+        const double h = pde_h(rule_id, dx);
         const DiscreteLaplacian L(p, V, weight(wname), h, LaplacianStorage::assembled);
         std::vector<double> g_bnd(p.size(), 0.0);
         g_bnd[most_negative_boundary_particle(L)] = -1;

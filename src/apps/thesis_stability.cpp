@@ -87,7 +87,7 @@ int body(int argc, char** argv) {
                     fmt(kBelow) + " and " + fmt(kAbove) + " x limit_dt"},
        {"steps", fmt(static_cast<long long>(steps))}, {"stop_growth", fmt(stop_growth)},
        {"cg_tol", "1e-10"}, {"delta", "1 (bound (3.3) at its most permissive)"},
-       {"h10", pde_h_formula("h10")}, {"h15", pde_h_formula("h15")},
+       {"h10", pde_h_formula(HRule::h10)}, {"h15", pde_h_formula(HRule::h15)},
        {"volumes", "uniform |Omega_H|/N"},
        {"limit", "2/((1-2 theta) kappa lambda_max)"},
        {"table46_dt", "T/ceil(T/(0.5 h^2)), T = 0.1"}},
@@ -105,8 +105,9 @@ int body(int argc, char** argv) {
     bool built = false;
     Particles p;
     std::vector<double> V;
-    for (const std::string& rule : pde_h_rules()) {
-      const double h = pde_h(rule, dx);
+    for (HRule rule_id : pde_h_rules()) {
+      const double h = pde_h(rule_id, dx);
+      const std::string rule = h_rule_name(rule_id);  // the data file's h_rule
       for (const auto& wname : kWeights) {
         if (cache.has({wname, rule, fmt(k)}) || !run.claim(predicted_pairs(dx, h))) continue;
         if (!built) p = jittered_grid(dx, seed), V = uniform_volumes(p, dom), built = true;

@@ -51,8 +51,7 @@ int body(int argc, char** argv) {
       .opt("volumes", "lattice", "lattice: V_i = |Omega_H|/N (thesis (A.10)); cell: V_i = dx^2\n"
                                  "  (the other reading of the volumes; the store's _cellvol file)");
   run.parse(argc, argv);
-  const std::string volumes = run.args().str("volumes");
-  const std::string volumes_text = pde_volumes_description(volumes);  // InputError if unknown
+  const PdeVolumes volumes = parse_pde_volumes(run.args().str("volumes"));
   const double tol = run.args().tolerance("tol");
   const auto storage = parse_laplacian_storage(run.args().str("storage"));
   const double max_bytes = run.args().positive("max-gb") * 1e9;
@@ -63,9 +62,9 @@ int body(int argc, char** argv) {
   LevelCache& cache = run.open(
       {{"program", "thesis_table4_4"}, {"profile", profile_name(run.profile())},
        {"seed", fmt(static_cast<long long>(run.seed()))}, {"tol", fmt(tol)},
-       {"function", "sin2pi"}, {"volumes", volumes_text},
+       {"function", "sin2pi"}, {"volumes", pde_volumes_description(volumes)},
        {"error", "max_Omega|u-U| / max_Omega|u|"},
-       {"h10", pde_h_formula("h10")}, {"h15", pde_h_formula("h15")}},
+       {"h10", pde_h_formula(HRule::h10)}, {"h15", pde_h_formula(HRule::h15)}},
       3);
   const TestFunction& u = test_function("sin2pi");
   const Domain dom;
@@ -75,8 +74,9 @@ int body(int argc, char** argv) {
     const Particles p = jittered_grid(dx, run.seed());
     const auto V = pde_volumes(volumes, p, dx, dom);
     const PoissonData d = poisson_data(p, u);  // f = −Δu, g = u at every particle
-    for (const auto& rule : pde_h_rules()) {
-      const double h = pde_h(rule, dx);
+    for (HRule rule_id : pde_h_rules()) {
+      const double h = pde_h(rule_id, dx);
+      const std::string rule = h_rule_name(rule_id);  // the data file's h_rule
       for (const auto& wname : pde_weights()) {
         if (cache.has({rule, wname, fmt(k)}) || !run.claim(poisson_unit_work(dx, h))) continue;
         // Assemble −Δ_h (or keep it matrix-free), solve by CG, measure the error in Ω.

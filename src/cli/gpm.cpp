@@ -287,7 +287,8 @@ Args& add_pde_options(Args& a) {
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free");
 }
 
-struct PdeSetup {
+struct PdeOptions {
+  PdeVolumes volumes = PdeVolumes::lattice;
   double dx = 0, h = 0;
   std::string h_opt;  // the option h came from, for the messages
   const WeightFunction* w = nullptr;
@@ -295,12 +296,12 @@ struct PdeSetup {
 };
 
 // Reads and checks the options of add_pde_options (InputError naming the bad one).
-PdeSetup read_pde_options(const Args& a) {
-  pde_volumes_description(a.str("volumes"));  // InputError naming an unknown choice
-  PdeSetup s;
+PdeOptions read_pde_options(const Args& a) {
+  PdeOptions s;
+  s.volumes = parse_pde_volumes(a.str("volumes"));
   s.dx = a.positive("dx");
   s.h_opt = a.str("h").empty() ? "h-rule" : "h";
-  s.h = a.str("h").empty() ? pde_h(a.str("h-rule"), s.dx) : a.positive("h");
+  s.h = a.str("h").empty() ? pde_h(parse_h_rule(a.str("h-rule")), s.dx) : a.positive("h");
   require_local_h(s.h, a, s.h_opt);
   const double jitter = a.num("jitter");
   if (jitter < 0 || jitter >= 0.5) throw InputError("--jitter: " + a.str("jitter") + " is not in [0, 0.5)");
@@ -319,11 +320,11 @@ struct PdeProblem {
   Particles p;
   std::vector<double> V;
 };
-PdeProblem make_pde_problem(const Args& a, const PdeSetup& s) {
+PdeProblem make_pde_problem(const Args& a, const PdeOptions& s) {
   require_grid_fits_memory(s.dx, pde_bytes_per_particle(s.h, s.dx, s.storage, 8e9), "--dx");
   PdeProblem pr;
   pr.p = jittered_grid(s.dx, a.seed(), a.num("jitter"));
-  pr.V = pde_volumes(a.str("volumes"), pr.p, s.dx);
+  pr.V = pde_volumes(s.volumes, pr.p, s.dx);
   return pr;
 }
 
@@ -332,7 +333,7 @@ int cmd_poisson(int argc, char** argv) {
                         "relative l-inf error over Omega, where the maximum sits, CG counts.");
   add_pde_options(a).opt("tol", "1e-10", "CG relative residual");
   a.parse(argc, argv, 2);
-  const PdeSetup su = read_pde_options(a);
+  const PdeOptions su = read_pde_options(a);
   const double dx = su.dx, h = su.h;
   const double tol = a.tolerance("tol");
   const auto [p, V] = make_pde_problem(a, su);
@@ -344,7 +345,7 @@ int cmd_poisson(int argc, char** argv) {
   TsvTable t = header_from(a, "poisson");
   t.set("h_used", h);
   t.set("rel_error_inner", "over the particles at least h from the boundary of Omega");
-  t.set("volumes", pde_volumes_description(a.str("volumes")));
+  t.set("volumes", pde_volumes_description(su.volumes));
   t.set("volume_mismatch", "V_i/dx^2 - 1");
   t.columns = {"dx", "h", "h_over_H", "N", "N_omega", "volume_mismatch", "nnz", "rel_error", "max_x", "max_y",
                "max_distance_over_h", "rel_error_inner", "cg_iterations", "rel_residual", "solve_s"};
@@ -374,7 +375,7 @@ int cmd_heat(int argc, char** argv) {
       .opt("steps", "fit", "fit: K = ceil(T/dt0), dt = T/K; exact: dt = dt0, K = ceil(T/dt0)")
       .opt("tol", "1e-10", "CG relative residual per implicit step");
   a.parse(argc, argv, 2);
-  const PdeSetup su = read_pde_options(a);
+  const PdeOptions su = read_pde_options(a);
   const double dx = su.dx, h = su.h;
   HeatSetting hs;
   hs.theta = a.num("theta");
@@ -382,9 +383,7 @@ int cmd_heat(int argc, char** argv) {
   hs.dt_nominal = a.str("dt").empty() ? a.positive("dt-c") * std::pow(h, a.num("dt-p")) : a.positive("dt");
   if (!(hs.dt_nominal > 0 && std::isfinite(hs.dt_nominal)))
     throw InputError("--dt-c/--dt-p give dt0 = " + fmt(hs.dt_nominal) + ": not a positive number");
-  if (a.str("steps") != "fit" && a.str("steps") != "exact")
-    throw InputError("--steps: '" + a.str("steps") + "' is not fit or exact");
-  hs.fit_T = a.str("steps") == "fit";
+  hs.fit_T = parse_dt_rule(a.str("steps"), "--steps") == DtRule::fit;
   hs.tol = a.tolerance("tol");
   if (hs.T / hs.dt_nominal > 1e7)
     throw InputError("dt0 = " + fmt(hs.dt_nominal) + " needs more than 1e7 steps to reach T = " + fmt(hs.T));
@@ -397,7 +396,7 @@ int cmd_heat(int argc, char** argv) {
   t.set("h_used", h);
   t.set("kappa", hs.kappa);
   t.set("T", hs.T);
-  t.set("volumes", pde_volumes_description(a.str("volumes")));
+  t.set("volumes", pde_volumes_description(su.volumes));
   t.set("error", "(4.2): max_k ||u-U||_l2(Omega_H) / max_k ||u||_l2(Omega_H)");
   t.columns = {"dx", "h", "N", "N_omega", "volume_mismatch", "theta", "dt", "K", "steps_done",
                "blew_up", "rel_error", "rel_error_max", "growth_max", "cg_mean_iterations", "seconds"};
@@ -746,10 +745,10 @@ int cmd_study(int argc, char** argv) {
     t.set("program", "gpm study --readings");
     add_provenance(t);
     t.columns = {"reading", "h_rule", "volumes", "dt_rule", "file_suffix"};
-    for (auto& r : heat_reading_matrix({"h10", "h15"}, {"lattice", "cell"}, {"fit", "exact"})) {
+    for (const PdeSetup& r : pde_setups()) {
       TsvRow row = t.named_row();
-      row["reading"] = r.name(), row["h_rule"] = r.h_rule, row["volumes"] = r.volumes;
-      row["dt_rule"] = r.dt_rule, row["file_suffix"] = r.file_suffix();
+      row["reading"] = r.name(), row["h_rule"] = h_rule_name(r.h_rule), row["volumes"] = pde_volumes_name(r.volumes);
+      row["dt_rule"] = dt_rule_name(r.dt_rule), row["file_suffix"] = r.file_suffix();
       t.add_row(row);
     }
     print(t);

@@ -32,7 +32,7 @@ using namespace gpm;
 
 namespace {
 
-double printed_h(int k) { return pde_h("h10", std::ldexp(1.0, -k)); }
+double printed_h(int k) { return pde_h(HRule::h10, std::ldexp(1.0, -k)); }
 
 struct PoissonRun {
   double h, err;
@@ -267,14 +267,14 @@ TEST_CASE("Heat: the product-sharing step equals the textbook θ-step", "[quick]
 TEST_CASE("Heat catalog: the paper profile trims h15 at the finest level of Tables 4.5 and 4.6 only",
           "[quick][pde]") {
   for (const auto& t : heat_tables()) {
-    const auto h10 = heat_levels(t, true, "h10"), h15 = heat_levels(t, true, "h15");
+    const auto h10 = heat_levels(t, true, HRule::h10), h15 = heat_levels(t, true, HRule::h15);
     CHECK(h10 == t.paper);  // the printed reading runs every level of the thesis
     if (t.table == "4.7") CHECK(h15 == t.paper);
     else {
       REQUIRE(h15.size() + 1 == t.paper.size());
       CHECK(h15.back() + 1 == t.paper.back());
     }
-    CHECK(heat_levels(t, false, "h15") == t.quick);  // the quick profile is not trimmed
+    CHECK(heat_levels(t, false, HRule::h15) == t.quick);  // the quick profile is not trimmed
   }
   CHECK_THROWS_AS(heat_table("4.8"), InputError);
 }

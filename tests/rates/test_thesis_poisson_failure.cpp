@@ -50,8 +50,8 @@ namespace {
 
 const double kDx = 1.0 / 32;  // Δx = 2^-5, N = 1,521
 
-double h15(double dx) { return pde_h("h15", dx); }
-double h10(double dx) { return pde_h("h10", dx); }
+double h15(double dx) { return pde_h(HRule::h15, dx); }
+double h10(double dx) { return pde_h(HRule::h10, dx); }
 
 // The program's boundary probe: f = 0, g̃ = −1 at the particle outside Ω that Ω sees most
 // negatively (poisson_probes.hpp), 0 elsewhere.  The maximum principle promises U ≤ 0 in Ω.

@@ -31,7 +31,7 @@ using namespace gpm;
 namespace {
 
 double thesis_h(int k, int exponent) {
-  return pde_h(exponent == -10 ? "h10" : "h15", std::ldexp(1.0, -k));
+  return pde_h(exponent == -10 ? HRule::h10 : HRule::h15, std::ldexp(1.0, -k));
 }
 
 const char* kHeatWeights[] = {"quartic_polynomial", "piecewise_cubic_polynomial",

@@ -24,7 +24,7 @@ double counted_pairs(const Particles& p, double h) {
   const FusedKernel k(p, V, h, {{weight("Pi2"), kInterp}});
   return static_cast<double>(k.count_pairs(omega_targets(p)).accepted);
 }
-double h10(double dx) { return pde_h("h10", dx); }
+double h10(double dx) { return pde_h(HRule::h10, dx); }
 }  // namespace
 
 TEST_CASE("mean disc area: pi h^2 inside, boundary cut above H", "[cost_model]") {

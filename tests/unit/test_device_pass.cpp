@@ -115,7 +115,7 @@ TEST_CASE("device hook: a heat run with the matrix-free Laplacian on the emulate
   WithEmulatedDevice dev;
   const Particles p = jittered_grid(std::ldexp(1.0, -5), 1);
   const std::vector<double> V(p.size(), Domain{}.area_H() / static_cast<double>(p.size()));
-  const double h = pde_h("h10", std::ldexp(1.0, -5));
+  const double h = pde_h(HRule::h10, std::ldexp(1.0, -5));
   HeatSetting s;
   s.theta = 1;
   s.dt_nominal = 0.5 * h * h;

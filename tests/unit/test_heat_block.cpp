@@ -37,7 +37,7 @@ void check_same(const HeatResult& a, const HeatResult& b) {
 
 TEST_CASE("heat series advanced together equal each series alone", "[heat][block]") {
   for (int level : {5, 6}) {
-    const double dx = std::ldexp(1.0, -level), h = pde_h("h10", dx);
+    const double dx = std::ldexp(1.0, -level), h = pde_h(HRule::h10, dx);
     const Particles p = jittered_grid(dx, 1);
     std::vector<double> V;
     for (std::size_t i = 0; i < p.size(); ++i)
@@ -75,7 +75,7 @@ TEST_CASE("heat series advanced together equal each series alone", "[heat][block
 // (2^-6, quartic): Δt₀ = 0.0025h², 3 → 2.0 iterations per step, errors 1e-7 apart
 // (relative); Δt₀ = 0.5h², 14.1 → 13.5 (θ = ½) and 18 → 16.6 (θ = 1), 1e-11 apart.
 TEST_CASE("heat: extrapolated CG starts save iterations, same errors", "[heat][block]") {
-  const double dx = std::ldexp(1.0, -6), h = pde_h("h10", dx);
+  const double dx = std::ldexp(1.0, -6), h = pde_h(HRule::h10, dx);
   const Particles p = jittered_grid(dx, 1);
   const std::vector<double> V(p.size(), Domain{}.area_H() / static_cast<double>(p.size()));
   const DiscreteLaplacian L(p, V, weight("quartic_polynomial"), h);
@@ -105,7 +105,7 @@ TEST_CASE("heat: extrapolated CG starts save iterations, same errors", "[heat][b
 TEST_CASE("heat series with other volumes on one Laplacian equal their own Laplacian's",
           "[heat][block]") {
   const int level = 5;
-  const double dx = std::ldexp(1.0, -level), h = pde_h("h15", dx);
+  const double dx = std::ldexp(1.0, -level), h = pde_h(HRule::h15, dx);
   const Particles p = jittered_grid(dx, 1);
   const WeightFunction& w = weight("quartic_polynomial");
   const std::vector<double> lattice(p.size(), Domain{}.area_H() / static_cast<double>(p.size()));

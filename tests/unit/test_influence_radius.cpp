@@ -19,15 +19,18 @@ TEST_CASE("influence radius rules", "[unit][radius]") {
   CHECK(thesis_h(HReading::scaled, 4, 4, dx5) == Approx(3.1 / 32).epsilon(1e-14));
   // thesis §4.2–4.3: h15 = 2.6·2^-5 at 2^-5; h10 = 2^(5/4)·h15 at every Δx (h10 > H = 0.1
   // at 2^-5 … 2^-8, below it from 2^-9 on).
-  CHECK(pde_h("h15", dx5) == Approx(2.6 / 32).epsilon(1e-14));
+  CHECK(pde_h(HRule::h15, dx5) == Approx(2.6 / 32).epsilon(1e-14));
   for (int k = 5; k <= 12; ++k) {
     const double dx = std::ldexp(1.0, -k);
-    CHECK(pde_h("h10", dx) == Approx(std::pow(2.0, 1.25) * pde_h("h15", dx)).epsilon(1e-14));
-    CHECK((pde_h("h10", dx) > 0.1) == (k <= 8));
+    CHECK(pde_h(HRule::h10, dx) == Approx(std::pow(2.0, 1.25) * pde_h(HRule::h15, dx)).epsilon(1e-14));
+    CHECK((pde_h(HRule::h10, dx) > 0.1) == (k <= 8));
   }
-  CHECK(pde_h_formula("h10") == "(2.6^4 2^-10 dx)^(1/4)");
-  REQUIRE_THROWS_AS(pde_h("h12", 1e-3), InputError);
-  REQUIRE_THROWS_AS(pde_h("h10", -1), InputError);
+  CHECK(pde_h_formula(HRule::h10) == "(2.6^4 2^-10 dx)^(1/4)");
+  // The rule's name, both ways: what options and data files say.
+  for (HRule r : pde_h_rules()) CHECK(parse_h_rule(h_rule_name(r)) == r);
+  CHECK(h_rule_name(HRule::h15) == "h15");
+  REQUIRE_THROWS_WITH(parse_h_rule("h12"), "--h-rule: 'h12' is not h10 or h15");
+  REQUIRE_THROWS_AS(pde_h(HRule::h10, -1), InputError);
 }
 
 #include "gpm/theory/smoothing.hpp"
@@ -47,7 +50,7 @@ TEST_CASE("Laplacian smoothing error: small-kh limit and the quartic at the thes
   const double c = std::numbers::pi / 8 * m3;
   CHECK(laplacian_smoothing_error(w, 1e-2) / 1e-4 == Approx(c).epsilon(1e-3));
   // Rate 2 asymptotically; still ≈ 2 between the h10 radii of 2^-8 and 2^-9.
-  const double h8 = pde_h("h10", std::ldexp(1.0, -8)), h9 = pde_h("h10", std::ldexp(1.0, -9));
+  const double h8 = pde_h(HRule::h10, std::ldexp(1.0, -8)), h9 = pde_h(HRule::h10, std::ldexp(1.0, -9));
   const double k = 2 * std::numbers::pi * std::sqrt(2.0);
   const double rate = std::log(laplacian_smoothing_error(w, k * h8) / laplacian_smoothing_error(w, k * h9)) /
                       std::log(h8 / h9);

@@ -86,12 +86,7 @@ TEST_CASE("registry: a set-up reading's store file", "[unit][registry]") {
     const RegisteredStudy& s = r.study("thesis_table" + std::string(1, hp.table[0]) + "_" + hp.table.substr(2));
     for (const StoreFile& f : s.store_files) {
       REQUIRE(f.readings.size() == 1);
-      const HeatReading reading = [&] {
-        for (auto& x : heat_reading_matrix({"h10", "h15"}, {"lattice", "cell"}, {"fit", "exact"}))
-          if (x.name() == f.readings.front()) return x;
-        FAIL("no reading named " << f.readings.front());
-        return HeatReading{};
-      }();
+      const PdeSetup reading = PdeSetup::named(f.readings.front());
       CHECK(f.name == s.name + reading.file_suffix());
       CHECK(s.store_file_of(reading.name()).name == f.name);
       ++heat_files;

@@ -28,26 +28,29 @@ double thesis_h(HReading r, int c, int p, double dx) {
   return 3.1 * std::pow(2.0, 5.0 / p - 5.0) * std::pow(dx, 1.0 / p);
 }
 
-namespace {
-int pde_exponent(const std::string& rule) {
-  if (rule == "h10") return -10;
-  if (rule == "h15") return -15;
-  throw InputError("unknown h rule '" + rule + "'; valid: h10, h15");
+std::string h_rule_name(HRule r) { return r == HRule::h10 ? "h10" : "h15"; }
+
+HRule parse_h_rule(const std::string& s, const std::string& option) {
+  for (HRule r : pde_h_rules())
+    if (h_rule_name(r) == s) return r;
+  throw InputError(option + ": '" + s + "' is not h10 or h15");
 }
+
+namespace {
+int pde_exponent(HRule rule) { return rule == HRule::h10 ? -10 : -15; }
 }  // namespace
 
-double pde_h(const std::string& rule, double dx) {
-  const int e = pde_exponent(rule);
+double pde_h(HRule rule, double dx) {
   require_positive(dx, "dx");
-  return std::pow(std::pow(2.6, 4) * std::ldexp(1.0, e) * dx, 0.25);
+  return std::pow(std::pow(2.6, 4) * std::ldexp(1.0, pde_exponent(rule)) * dx, 0.25);
 }
 
-std::string pde_h_formula(const std::string& rule) {
+std::string pde_h_formula(HRule rule) {
   return "(2.6^4 2^" + std::to_string(pde_exponent(rule)) + " dx)^(1/4)";
 }
 
-const std::vector<std::string>& pde_h_rules() {
-  static const std::vector<std::string> r = {"h10", "h15"};
+const std::vector<HRule>& pde_h_rules() {
+  static const std::vector<HRule> r = {HRule::h10, HRule::h15};
   return r;
 }
 

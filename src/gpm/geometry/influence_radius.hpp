@@ -25,9 +25,14 @@ HReading parse_h_reading(const std::string& s);  // InputError listing the valid
 // thesis §4.1 in the given reading.
 double thesis_h(HReading r, int c, int p, double dx);
 
-// thesis §4.2–4.3: rule "h10" or "h15" (InputError listing them otherwise).
-double pde_h(const std::string& rule, double dx);
-std::string pde_h_formula(const std::string& rule);  // "(2.6^4 2^-10 dx)^(1/4)"
-const std::vector<std::string>& pde_h_rules();        // {"h10", "h15"}
+// thesis §4.2–4.3 in the given rule.  Its name (h10, h15) is what data files, options and
+// the set-up readings say.
+enum class HRule { h10, h15 };
+std::string h_rule_name(HRule r);
+// InputError "OPTION: 'x' is not h10 or h15".
+HRule parse_h_rule(const std::string& s, const std::string& option = "--h-rule");
+double pde_h(HRule rule, double dx);
+std::string pde_h_formula(HRule rule);  // "(2.6^4 2^-10 dx)^(1/4)"
+const std::vector<HRule>& pde_h_rules();  // h10, h15
 
 }  // namespace gpm

@@ -20,16 +20,21 @@ double volume_mismatch(double n_particles, double dx, const Domain& dom) {
   return dom.area_H() / (n_particles * dx * dx) - 1;
 }
 
-std::string pde_volumes_description(const std::string& choice) {
-  if (choice == "lattice") return "uniform |Omega_H|/N";  // the text older files carry
-  if (choice == "cell") return "cell dx^2 (diagnostic; sum over Omega_H is N dx^2, not |Omega_H|)";
-  throw InputError("--volumes: '" + choice + "' is not lattice (|Omega_H|/N, thesis (A.10)) or cell (dx^2)");
+std::string pde_volumes_name(PdeVolumes v) { return v == PdeVolumes::lattice ? "lattice" : "cell"; }
+
+PdeVolumes parse_pde_volumes(const std::string& s) {
+  for (PdeVolumes v : {PdeVolumes::lattice, PdeVolumes::cell})
+    if (pde_volumes_name(v) == s) return v;
+  throw InputError("--volumes: '" + s + "' is not lattice (|Omega_H|/N, thesis (A.10)) or cell (dx^2)");
 }
 
-std::vector<double> pde_volumes(const std::string& choice, const Particles& p, double dx,
-                                const Domain& dom) {
-  pde_volumes_description(choice);  // InputError for an unknown choice
-  return choice == "cell" ? cell_volumes(p, dx) : uniform_volumes(p, dom);
+std::string pde_volumes_description(PdeVolumes choice) {
+  if (choice == PdeVolumes::lattice) return "uniform |Omega_H|/N";  // the text older files carry
+  return "cell dx^2 (diagnostic; sum over Omega_H is N dx^2, not |Omega_H|)";
+}
+
+std::vector<double> pde_volumes(PdeVolumes choice, const Particles& p, double dx, const Domain& dom) {
+  return choice == PdeVolumes::cell ? cell_volumes(p, dx) : uniform_volumes(p, dom);
 }
 
 }  // namespace gpm

@@ -21,10 +21,15 @@ double volume_mismatch(const Particles& p, double dx, const Domain& dom = Domain
 // The same from the particle count alone (a data file's N column).
 double volume_mismatch(double n_particles, double dx, const Domain& dom = Domain{});
 
-// The volume choices of the PDE studies, by name: "lattice" = (A.10), "cell" = Δx².
-std::vector<double> pde_volumes(const std::string& choice, const Particles& p, double dx,
+// The volume choices of the PDE studies: lattice = (A.10)'s |Ω_H|/N, cell = Δx².  Their
+// names are what options, data files and the set-up readings say.
+enum class PdeVolumes { lattice, cell };
+std::string pde_volumes_name(PdeVolumes v);
+// InputError "--volumes: 'x' is not lattice (…) or cell (…)".
+PdeVolumes parse_pde_volumes(const std::string& s);
+std::vector<double> pde_volumes(PdeVolumes choice, const Particles& p, double dx,
                                 const Domain& dom = Domain{});
-// What a data file's header says of a choice (InputError naming an unknown one).
-std::string pde_volumes_description(const std::string& choice);
+// What a data file's header says of a choice.
+std::string pde_volumes_description(PdeVolumes choice);
 
 }  // namespace gpm

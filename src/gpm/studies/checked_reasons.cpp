@@ -257,7 +257,7 @@ TsvTable checked_reasons(const std::string& store, const std::string& published_
     std::string name = "thesis_table" + t.table;
     std::replace(name.begin(), name.end(), '.', '_');
     std::optional<TsvTable> pub;  // read once a reading of the table is stored
-    for (const HeatReading& r : heat_reading_matrix({"h10"}, {"lattice"}, {"fit", "exact"})) {
+    for (const PdeSetup& r : pde_setup_matrix({HRule::h10}, {PdeVolumes::lattice}, {DtRule::fit, DtRule::exact})) {
       const std::string file = name + r.file_suffix() + ".tsv";
       if (!stored(file)) continue;
       const TsvTable data = load(file);
@@ -265,7 +265,7 @@ TsvTable checked_reasons(const std::string& store, const std::string& published_
       // The V_i = dx^2 run counts only under the same time-step rule as the data it is set
       // against (the files' `steps` lines agree; the later of the two candidates where both do).
       std::string cell;
-      for (const HeatReading& c : heat_reading_matrix({"h10"}, {"cell"}, {"fit", "exact"})) {
+      for (const PdeSetup& c : pde_setup_matrix({HRule::h10}, {PdeVolumes::cell}, {DtRule::fit, DtRule::exact})) {
         const std::string candidate = name + c.file_suffix() + ".tsv";
         if (stored(candidate) && TsvTable::load(store + "/" + candidate, false).get("steps") == data.get("steps"))
           cell = candidate;

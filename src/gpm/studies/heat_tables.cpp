@@ -25,50 +25,58 @@ const HeatTable& heat_table(const std::string& table) {
   throw InputError("unknown --table '" + table + "'; valid: 4.5, 4.6, 4.7");
 }
 
-std::vector<int> heat_levels(const HeatTable& t, bool paper, const std::string& h_rule) {
+std::vector<int> heat_levels(const HeatTable& t, bool paper, HRule h_rule) {
   if (!paper) return t.quick;
   std::vector<int> lv;
   for (int k : t.paper)
-    if (h_rule != "h15" || k <= t.paper_h15_max_level) lv.push_back(k);
+    if (h_rule != HRule::h15 || k <= t.paper_h15_max_level) lv.push_back(k);
   return lv;
 }
 
-std::string HeatReading::name() const {
-  return h_rule + (volumes == "cell" ? "_cell" : "") + (dt_rule == "exact" ? "_exact" : "");
+std::string dt_rule_name(DtRule r) { return r == DtRule::fit ? "fit" : "exact"; }
+
+DtRule parse_dt_rule(const std::string& s, const std::string& option) {
+  for (DtRule r : {DtRule::fit, DtRule::exact})
+    if (dt_rule_name(r) == s) return r;
+  throw InputError(option + ": '" + s + "' is not fit or exact");
 }
 
-std::string HeatReading::file_suffix() const {
-  return std::string(h_rule == "h15" ? "_h15" : "") + (dt_rule == "exact" ? "_dtexact" : "") +
-         (volumes == "cell" ? "_cellvol" : "");
+std::string PdeSetup::name() const {
+  return h_rule_name(h_rule) + (volumes == PdeVolumes::cell ? "_cell" : "") + (dt_rule == DtRule::exact ? "_exact" : "");
 }
 
-std::vector<HeatReading> heat_reading_matrix(const std::vector<std::string>& h_rules,
-                                             const std::vector<std::string>& volumes,
-                                             const std::vector<std::string>& dt_rules) {
-  auto check = [](const std::vector<std::string>& given, const char* option,
-                  std::initializer_list<const char*> valid) {
-    if (given.empty()) throw InputError(std::string("--") + option + ": no choice given");
-    for (auto& g : given) {
-      bool ok = false;
-      for (const char* v : valid) ok = ok || g == v;
-      std::string names;
-      for (const char* v : valid) names += (names.empty() ? "" : ", ") + std::string(v);
-      if (!ok) throw InputError(std::string("--") + option + ": '" + g + "' is not one of " + names);
-    }
-  };
-  check(h_rules, "h-rule", {"h10", "h15"});
-  check(volumes, "volumes", {"lattice", "cell"});
-  check(dt_rules, "dt-rule", {"fit", "exact"});
-  std::vector<HeatReading> m;
-  for (auto& h : h_rules)
-    for (auto& v : volumes)
-      for (auto& d : dt_rules) {
-        HeatReading r{h, v, d};
+std::string PdeSetup::file_suffix() const {
+  return std::string(h_rule == HRule::h15 ? "_h15" : "") + (dt_rule == DtRule::exact ? "_dtexact" : "") +
+         (volumes == PdeVolumes::cell ? "_cellvol" : "");
+}
+
+PdeSetup PdeSetup::named(const std::string& name) {
+  for (const PdeSetup& r : pde_setups())
+    if (r.name() == name) return r;
+  throw InputError("unknown set-up reading '" + name + "'");
+}
+
+std::vector<PdeSetup> pde_setup_matrix(const std::vector<HRule>& h_rules, const std::vector<PdeVolumes>& volumes,
+                                       const std::vector<DtRule>& dt_rules) {
+  if (h_rules.empty()) throw InputError("--h-rule: no choice given");
+  if (volumes.empty()) throw InputError("--volumes: no choice given");
+  if (dt_rules.empty()) throw InputError("--dt-rule: no choice given");
+  std::vector<PdeSetup> m;
+  for (HRule h : h_rules)
+    for (PdeVolumes v : volumes)
+      for (DtRule d : dt_rules) {
+        const PdeSetup r{h, v, d};
         for (auto& o : m)
           if (o.name() == r.name()) throw InputError("reading " + r.name() + " given twice");
         m.push_back(r);
       }
   return m;
+}
+
+const std::vector<PdeSetup>& pde_setups() {
+  static const std::vector<PdeSetup> all =
+      pde_setup_matrix({HRule::h10, HRule::h15}, {PdeVolumes::lattice, PdeVolumes::cell}, {DtRule::fit, DtRule::exact});
+  return all;
 }
 
 const std::vector<std::string>& heat_columns() {

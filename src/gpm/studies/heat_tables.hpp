@@ -16,6 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "gpm/geometry/influence_radius.hpp"
+#include "gpm/geometry/volumes.hpp"
+
 namespace gpm {
 
 struct HeatTable {
@@ -33,27 +36,39 @@ const std::vector<HeatTable>& heat_tables();
 const HeatTable& heat_table(const std::string& table);  // InputError naming the valid ones
 
 // The levels of a table for a profile and h rule (the paper profile's h15 trim applied).
-std::vector<int> heat_levels(const HeatTable& t, bool paper, const std::string& h_rule);
+std::vector<int> heat_levels(const HeatTable& t, bool paper, HRule h_rule);
 
 constexpr double kHeatKappa = 0.5, kHeatT = 0.1;
 
-// One reading of the heat tables' set-up (paper/04-setup-rule.md): the h rule (h10 as
-// printed, h15), the volumes (lattice: (A.10)'s |Ω_H|/N as printed, cell: Δx²) and the time
-// step (fit: Δt = T/K as printed, exact: Δt = Δt₀).  The one map from a reading to its name
-// in the rate tables and to its store file (the registry's store files carry these names).
-struct HeatReading {
-  std::string h_rule = "h10", volumes = "lattice", dt_rule = "fit";
+// The time-step rule: fit, Δt = T/K with K = ⌈T/Δt₀⌉ (the thesis' Δt = T/K, as printed), or
+// exact, Δt = Δt₀.  Its name is what options and the set-up readings say.
+enum class DtRule { fit, exact };
+std::string dt_rule_name(DtRule r);
+// InputError "OPTION: 'x' is not fit or exact".
+DtRule parse_dt_rule(const std::string& s, const std::string& option = "--dt-rule");
+
+// One reading of Chapter 4's PDE set-up (paper/04-setup-rule.md): the h rule (h10 as printed,
+// h15), the volumes (lattice: (A.10)'s |Ω_H|/N as printed, cell: Δx²) and the time step (fit
+// as printed, exact).  The one map from a reading to its name in the rate tables and to its
+// store file (the registry's store files carry these names).
+struct PdeSetup {
+  HRule h_rule = HRule::h10;
+  PdeVolumes volumes = PdeVolumes::lattice;
+  DtRule dt_rule = DtRule::fit;
   // h10, h15_cell, h10_exact, h15_cell_exact, …
   std::string name() const;
   // The store file's suffix after "thesis_table4_6": "" for the printed reading, else
   // _h15, _dtexact, _cellvol in that order.
   std::string file_suffix() const;
+  // The reading of that name; InputError if none.
+  static PdeSetup named(const std::string& name);
 };
 // Every combination of the given choices, h rule outermost, then volumes, then time step;
-// InputError naming an unknown choice.
-std::vector<HeatReading> heat_reading_matrix(const std::vector<std::string>& h_rules,
-                                             const std::vector<std::string>& volumes,
-                                             const std::vector<std::string>& dt_rules);
+// InputError for an empty choice or a reading given twice.
+std::vector<PdeSetup> pde_setup_matrix(const std::vector<HRule>& h_rules, const std::vector<PdeVolumes>& volumes,
+                                       const std::vector<DtRule>& dt_rules);
+// The eight readings (h10, h10_exact, h10_cell, …).
+const std::vector<PdeSetup>& pde_setups();
 
 // The columns of a heat data file; the first three (weight, θ, level) are the unit's key.
 const std::vector<std::string>& heat_columns();

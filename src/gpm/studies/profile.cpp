@@ -99,7 +99,7 @@ double pde_bytes_per_particle(double h, double dx, LaplacianStorage storage, dou
   return 400 + matrix_bytes;
 }
 
-void require_pde_levels_fit_memory(const std::vector<int>& levels, const std::vector<std::string>& h_rules,
+void require_pde_levels_fit_memory(const std::vector<int>& levels, const std::vector<HRule>& h_rules,
                                    LaplacianStorage storage, double max_bytes) {
   for (int k : levels)
     for (const auto& rule : h_rules) {

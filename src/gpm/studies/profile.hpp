@@ -4,6 +4,7 @@
 #pragma once
 #include <string>
 
+#include "gpm/geometry/influence_radius.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include <vector>
 
@@ -51,7 +52,7 @@ void require_grid_fits_memory(double dx, double bytes_per_particle, const std::s
 double pde_bytes_per_particle(double h, double dx, LaplacianStorage storage, double max_bytes);
 // Before a PDE study runs: every level's grid and Laplacian, under each h rule, within the
 // machine's memory (InputError naming the level, as --levels gave it).
-void require_pde_levels_fit_memory(const std::vector<int>& levels, const std::vector<std::string>& h_rules,
+void require_pde_levels_fit_memory(const std::vector<int>& levels, const std::vector<HRule>& h_rules,
                                    LaplacianStorage storage, double max_bytes);
 
 }  // namespace gpm

@@ -183,17 +183,18 @@ RegisteredStudy poisson() {
                    {"thesis_table4_4_seed2", "seed2", {"--seed", "2"}, {"--levels", "5,6,8,9"}, coarse},
                    {"thesis_table4_4_seed3", "seed3", {"--seed", "3"}, {"--levels", "5,6,8,9"}, coarse}};
   s.published = PublishedRates{"thesis_table4_4", "thesis_table4_4_long.tsv", {"h_rule", "weight"}, "h10",
-                               [](const HeatReading& r) { return r.h_rule + (r.volumes == "cell" ? "_cell" : ""); },
+                               [](const PdeSetup& r) { return h_rule_name(r.h_rule) + (r.volumes == PdeVolumes::cell ? "_cell" : ""); },
                                false, {}};
   s.figures = {{"thesis_fig4_8", {}, /*per_reading=*/true}};
   s.plan = [](UnitPricer& p) {
     const Calibration& c = p.cal();
     for (int k : p.paper() ? poisson_table().levels.paper : poisson_table().levels.quick)
-      for (const char* rule : {"h10", "h15"})
+      for (HRule rule : pde_h_rules())
         for (auto& w : pde_weights()) {
-          PlanUnit u = p.base("thesis_table4_4", std::string(rule) + "/" + w, k, pde_h(rule, dx_of(k)));
+          const std::string var = h_rule_name(rule) + "/" + w;
+          PlanUnit u = p.base("thesis_table4_4", var, k, pde_h(rule, dx_of(k)));
           const bool as = p.is_assembled(u);
-          const double its = c.poisson_its.at(std::string(rule) + "/" + w) * pde_h(rule, dx_of(5)) / u.h;
+          const double its = c.poisson_its.at(var) * pde_h(rule, dx_of(5)) / u.h;
           u.products = its + 2;
           u.method = as ? "assembled" : "matrix_free";
           const double setup = p.laplacian_setup_s(u, as);
@@ -214,8 +215,8 @@ RegisteredStudy poisson() {
 }
 
 // The data file of a heat table under an h rule (the catalog's two readings).
-std::string heat_file(const HeatTable& hp, const char* rule) {
-  std::string name = "thesis_table" + hp.table + (std::string(rule) == "h15" ? "_h15" : "");
+std::string heat_file(const HeatTable& hp, HRule rule) {
+  std::string name = "thesis_table" + hp.table + (rule == HRule::h15 ? "_h15" : "");
   std::replace(name.begin(), name.end(), '.', '_');
   return name;
 }
@@ -248,46 +249,40 @@ std::vector<HeatStoreReading> heat_store_readings(const std::string& table) {
   throw InputError("heat_store_readings: unknown table '" + table + "'");
 }
 
-HeatReading heat_reading_named(const std::string& name) {
-  for (const HeatReading& r : heat_reading_matrix({"h10", "h15"}, {"lattice", "cell"}, {"fit", "exact"}))
-    if (r.name() == name) return r;
-  throw InputError("unknown heat reading '" + name + "'");
-}
-
 // Tables 4.5–4.7 under both h rules: K = ⌈T/Δt₀⌉ steps, one product per step (M·U^k, which
 // also serves the CG's initial and true residuals) plus (θ > 0) the CG iterations; the
 // Laplacian's set-up once per (level, weight), not in the per-row seconds.
 RegisteredStudy heat(const HeatTable& hp) {
-  const std::string name = heat_file(hp, "h10");
+  const std::string name = heat_file(hp, HRule::h10);
   RegisteredStudy s = identity(name, "thesis Table " + hp.table, "heat", {hp.quick, hp.paper}, heat_columns(), {5});
   s.program = "thesis_heat", s.fixed_args = {"--table", hp.table};
   // Each run also writes the rows of the series that never blew up (…_finite), which is what
   // its rate table reads; the h10 reading is the one the thesis prints.
-  for (const char* rule : {"h10", "h15"}) {
+  for (HRule rule : pde_h_rules()) {
     const std::string f = heat_file(hp, rule);
-    s.files.push_back({f, rule == std::string("h15") ? std::vector<std::string>{"--h-rule", "h15"} : std::vector<std::string>{},
+    s.files.push_back({f, rule == HRule::h15 ? std::vector<std::string>{"--h-rule", "h15"} : std::vector<std::string>{},
                        {{"--rates-input", f + "_finite"}},
-                       {{f + "_rates", f + "_finite", {}, /*scored=*/rule == std::string("h10")}}});
+                       {{f + "_rates", f + "_finite", {}, /*scored=*/rule == HRule::h10}}});
   }
   // One store file per set-up reading stored (h rule x volumes x time step), a slice each.
   for (const HeatStoreReading& r : heat_store_readings(hp.table)) {
-    const HeatReading reading = heat_reading_named(r.reading);
+    const PdeSetup reading = PdeSetup::named(r.reading);
     std::vector<std::string> args;
-    if (reading.h_rule != "h10") args.insert(args.end(), {"--h-rule", reading.h_rule});
-    if (reading.dt_rule != "fit") args.insert(args.end(), {"--dt-rule", reading.dt_rule});
-    if (reading.volumes != "lattice") args.insert(args.end(), {"--volumes", reading.volumes});
+    if (reading.h_rule != HRule::h10) args.insert(args.end(), {"--h-rule", h_rule_name(reading.h_rule)});
+    if (reading.dt_rule != DtRule::fit) args.insert(args.end(), {"--dt-rule", dt_rule_name(reading.dt_rule)});
+    if (reading.volumes != PdeVolumes::lattice) args.insert(args.end(), {"--volumes", pde_volumes_name(reading.volumes)});
     args.insert(args.end(), r.args.begin(), r.args.end());
     s.store_files.push_back({name + reading.file_suffix(), reading.name(), args,
                              r.census.empty() ? std::vector<std::string>{} : std::vector<std::string>{"--levels", r.census},
                              {"--levels", "5"}, {reading.name()}});
   }
   s.published = PublishedRates{name, name + "_long.tsv", {"weight", "theta"}, "h10",
-                               [](const HeatReading& r) { return r.name(); }, /*finite_series=*/true, {}};
+                               [](const PdeSetup& r) { return r.name(); }, /*finite_series=*/true, {}};
   // The document's figure of the table (Figures 4.9–4.11), drawn in each reading.
   const std::map<std::string, std::string> figure = {{"4.5", "thesis_fig4_9"}, {"4.6", "thesis_fig4_10"}, {"4.7", "thesis_fig4_11"}};
   s.figures = {{figure.at(hp.table), {"figures/thesis_heat.gp"}, /*per_reading=*/true}};
   s.plan = [&hp](UnitPricer& p) {
-    for (const char* rule : {"h10", "h15"}) {
+    for (HRule rule : pde_h_rules()) {
       const std::string study = heat_file(hp, rule);
       const std::vector<int> run = heat_levels(hp, p.paper(), rule);
       for (int k : p.paper() ? hp.paper : hp.quick)
@@ -373,7 +368,7 @@ std::vector<std::string> RegisteredStudy::header() const {
 }
 
 const StoreFile& RegisteredStudy::store_file_of(const std::string& reading) const {
-  const HeatReading r = heat_reading_named(reading);
+  const PdeSetup r = PdeSetup::named(reading);
   if (!published || !published->identified_slice)
     throw InputError("study '" + name + "' keeps no set-up readings in the store");
   const std::string slice = published->identified_slice(r);

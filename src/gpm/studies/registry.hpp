@@ -82,7 +82,7 @@ struct PublishedRates {
   std::string printed_slice;      // the slice of the reading the document prints
   // The slice the set-up rule's identified reading selects (setup_identification.hpp);
   // unset: the printed one.
-  std::function<std::string(const HeatReading&)> identified_slice;
+  std::function<std::string(const PdeSetup&)> identified_slice;
   bool finite_series = false;     // rates from the series that never blew up (heat)
   // How a stored file is cut into slices (one file holding several set-ups); unset: the
   // file is one slice, its StoreFile::slice.
@@ -115,7 +115,7 @@ struct RegisteredStudy {
   std::vector<std::string> header() const;
   // The program's arguments for one of its files: the fixed ones, then the file's.
   std::vector<std::string> command_args(const std::vector<std::string>& file_args) const;
-  // The store file holding the rows of a set-up reading (a HeatReading name: h10,
+  // The store file holding the rows of a set-up reading (a PdeSetup name: h10,
   // h15_cell_exact, …; Table 4.4 ignores the time step); InputError if the reading is unknown
   // or the study stores none of it.
   const StoreFile& store_file_of(const std::string& reading) const;

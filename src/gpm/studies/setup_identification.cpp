@@ -14,19 +14,20 @@ namespace gpm {
 
 namespace {
 
-// One reading of the set-up (h rule, volumes, time step): HeatReading (heat_tables.hpp),
+// One reading of the set-up (h rule, volumes, time step): PdeSetup (heat_tables.hpp),
 // whose file_suffix() names its store file.
-using Reading = HeatReading;
+using Reading = PdeSetup;
 std::string reading_file(const Reading& r, const std::string& table) {
   return "thesis_table" + table + r.file_suffix() + ".tsv";
 }
 
-// The details in the order they are decided, each with its printed value first.
+// The details in the order they are decided, each with its printed value first, by name:
+// the rule compares values of any detail alike.
 const std::vector<std::pair<std::string, std::vector<std::string>>> kDetails = {
     {"h_rule", {"h10", "h15"}}, {"volumes", {"lattice", "cell"}}, {"dt_rule", {"fit", "exact"}}};
 
-const std::string& detail(const Reading& r, const std::string& d) {
-  return d == "h_rule" ? r.h_rule : d == "volumes" ? r.volumes : r.dt_rule;
+std::string detail(const Reading& r, const std::string& d) {
+  return d == "h_rule" ? h_rule_name(r.h_rule) : d == "volumes" ? pde_volumes_name(r.volumes) : dt_rule_name(r.dt_rule);
 }
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -60,8 +61,8 @@ SetupIdentification identify_setup(const std::string& store, const TsvTable& pub
   if (published.empty()) throw InputError(pub.source + ": no theta = 0 rate");
 
   // --- Every reading: its θ = 0 rates and distance. -----------------------------------------
-  const std::vector<Reading> readings =
-      heat_reading_matrix(kDetails[0].second, kDetails[1].second, kDetails[2].second);
+  // The eight readings, the printed one (h10, lattice, fit) first.
+  const std::vector<Reading>& readings = pde_setups();
   SetupIdentification id;
   TsvTable& t = id.table;
   t.set("program", "setup_identification");
@@ -77,7 +78,8 @@ SetupIdentification identify_setup(const std::string& store, const TsvTable& pub
   std::map<std::string, double> distance;
   for (const Reading& r : readings) {
     const std::string path = store + "/" + reading_file(r, "4_6");
-    std::vector<std::string> row = {r.name(), r.h_rule, r.volumes, r.dt_rule, reading_file(r, "4_6")};
+    std::vector<std::string> row = {r.name(), detail(r, "h_rule"), detail(r, "volumes"), detail(r, "dt_rule"),
+                                    reading_file(r, "4_6")};
     double sum = 0;
     const bool present = std::filesystem::exists(path);
     const TsvTable data = present ? TsvTable::load(path) : TsvTable{};

@@ -31,7 +31,7 @@ struct SetupIdentification {
   // detail with its reason, `identified` (a reading's name, or NA) and `printed`.  No
   // provenance: the caller adds it when it writes the table.
   TsvTable table;
-  std::optional<HeatReading> identified;  // none while a reading has no θ = 0 rate yet
+  std::optional<PdeSetup> identified;  // none while a reading has no θ = 0 rate yet
   std::vector<std::string> incomplete;    // the readings without a θ = 0 rate for some weight
   std::string decisions;                  // "h_rule = h15, volumes = cell, dt_rule = exact"
 };

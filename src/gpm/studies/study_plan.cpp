@@ -162,7 +162,7 @@ Calibration calibrate() {
   // The Laplacian: a Poisson solve at Δx = 2^-6 (printed h), piecewise cubic polynomial.
   const TestFunction& u = test_function("sin2pi");
   {
-    const double dx = dx_of(6), h = pde_h("h10", dx);
+    const double dx = dx_of(6), h = pde_h(HRule::h10, dx);
     const Particles p = jittered_grid(dx, 1);
     const auto V = uniform_volumes(p, dom);
     const PoissonData d = poisson_data(p, u);
@@ -183,7 +183,7 @@ Calibration calibrate() {
   // caches, as at the paper's levels; at 2^-6 it nearly fits and the rate came out ~1.2x
   // too fast for Table 4.5 at 2^-8), the half and the full storage.
   {
-    const double dx = dx_of(7), h = pde_h("h10", dx);
+    const double dx = dx_of(7), h = pde_h(HRule::h10, dx);
     const Particles p = jittered_grid(dx, 1);
     const auto V = uniform_volumes(p, dom);
     for (auto storage : {LaplacianStorage::assembled, LaplacianStorage::full}) {
@@ -240,11 +240,11 @@ Calibration calibrate() {
     const Particles p = jittered_grid(dx, 1);
     const auto V = uniform_volumes(p, dom);
     const PoissonData d = poisson_data(p, u);
-    for (const char* rule : {"h10", "h15"})
+    for (HRule rule : pde_h_rules())
       for (auto& w : pde_weights()) {
         const double h = pde_h(rule, dx);
         const DiscreteLaplacian L(p, V, weight(w), h);
-        c.poisson_its[std::string(rule) + "/" + w] = solve_poisson(p, L, d.f, d.g, 1e-10).cg.iterations;
+        c.poisson_its[h_rule_name(rule) + "/" + w] = solve_poisson(p, L, d.f, d.g, 1e-10).cg.iterations;
         for (auto& hp : heat_tables())
           for (double th : hp.thetas) {
             if (th == 0) continue;
@@ -253,7 +253,7 @@ Calibration calibrate() {
             hs.theta = th;
             hs.dt_nominal = hp.c * std::pow(h, hp.p);
             hs.T = std::min(kHeatT, 40 * hs.dt_nominal);
-            c.heat_its[hp.table + "/" + rule + "/" + w + "/" + fmt(th)] =
+            c.heat_its[hp.table + "/" + h_rule_name(rule) + "/" + w + "/" + fmt(th)] =
                 solve_heat(p, L, hs).mean_cg_iterations;
           }
       }
@@ -393,14 +393,14 @@ double UnitPricer::heat_steps(const std::string& table, double h) const {
   return std::ceil(kHeatT / (hp.c * std::pow(h, hp.p)) - 1e-9);
 }
 
-double UnitPricer::heat_cg_its(const std::string& table, const std::string& rule,
+double UnitPricer::heat_cg_its(const std::string& table, HRule rule,
                                const std::string& weight, double theta, double h) const {
   if (theta == 0) return 0;
   const HeatTable& hp = heat_table(table);
   const double h5 = pde_h(rule, dx_of(5));
   const double r5 = hp.c * std::pow(h5, hp.p) / (h5 * h5);
   const double dt0 = hp.c * std::pow(h, hp.p);
-  return c_.heat_its.at(table + "/" + rule + "/" + weight + "/" + fmt(theta)) * std::sqrt((dt0 / (h * h)) / r5);
+  return c_.heat_its.at(table + "/" + h_rule_name(rule) + "/" + weight + "/" + fmt(theta)) * std::sqrt((dt0 / (h * h)) / r5);
 }
 
 std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
@@ -456,7 +456,7 @@ std::vector<HeatMatrixCost> heat_matrix_costs(Profile profile, const Calibration
     HeatMatrixCost m;
     m.table = hp.table;
     m.series = 2 * n_readings_per_h * static_cast<int>(hp.thetas.size()) * static_cast<int>(pde_weights().size());
-    for (const char* rule : {"h10", "h15"}) {
+    for (HRule rule : pde_h_rules()) {
       for (int k : pricer.paper() ? hp.paper : hp.quick) {
         const PlanUnit u = pricer.base("", "", k, pde_h(rule, dx_of(k)));
         const bool assembled = pricer.is_assembled(u);

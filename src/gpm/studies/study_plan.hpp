@@ -123,7 +123,7 @@ class UnitPricer {
   // K = ⌈T/Δt₀⌉ and its CG iterations per step, carried from the calibration's 2^-5 as
   // √(Δt₀/h²) (0 for θ = 0).
   double heat_steps(const std::string& table, double h) const;
-  double heat_cg_its(const std::string& table, const std::string& rule, const std::string& weight,
+  double heat_cg_its(const std::string& table, HRule rule, const std::string& weight,
                      double theta, double h) const;
 
  private:

@@ -57,7 +57,7 @@ std::vector<std::pair<std::string, std::string>> printed_slices(const StudyRegis
 
 // The slice of each table on the identified board: a table whose slice follows the set-up
 // reading (Chapter 4's PDE tables) takes the identified one; the rest as printed.
-std::map<std::string, std::string> identified_slices(const std::optional<HeatReading>& identified,
+std::map<std::string, std::string> identified_slices(const std::optional<PdeSetup>& identified,
                                                      const StudyRegistry& registry) {
   const auto printed = printed_slices(registry);
   std::map<std::string, std::string> s(printed.begin(), printed.end());
@@ -285,7 +285,7 @@ CheckedReasons passed_reasons(const TsvTable& checked) {
 
 std::vector<JudgedRate> judge_rates(const std::vector<StoreRate>& rates, const UnstableSeries& unstable,
                                     const CheckedReasons& checked, double tolerance,
-                                    const std::optional<HeatReading>& identified, const StudyRegistry& registry) {
+                                    const std::optional<PdeSetup>& identified, const StudyRegistry& registry) {
   const std::map<RateKey, SeedBand> bands = seed_bands(rates);
   const auto printed_list = printed_slices(registry);
   const std::map<std::string, std::string> printed(printed_list.begin(), printed_list.end());

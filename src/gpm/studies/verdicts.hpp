@@ -147,7 +147,7 @@ CheckedReasons passed_reasons(const TsvTable& checked);
 // the printed one).
 std::vector<JudgedRate> judge_rates(const std::vector<StoreRate>& rates, const UnstableSeries& unstable,
                                     const CheckedReasons& checked, double tolerance,
-                                    const std::optional<HeatReading>& identified,
+                                    const std::optional<PdeSetup>& identified,
                                     const StudyRegistry& registry = study_registry());
 
 // The rates file: columns table, slice, setup, key, published, reproduced, levels, status,
