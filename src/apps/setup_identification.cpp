@@ -26,7 +26,8 @@ int body(int argc, char** argv) {
       .output("out", "", "output TSV (required)");
   a.parse(argc, argv);
   const std::string out = a.required("out");
-  SetupIdentification id = identify_setup(a.str("store"), TsvTable::load(a.str("published")));
+  SetupIdentification id =
+      identify_setup(a.str("store"), fingerprint_study(study_registry()), TsvTable::load(a.str("published")));
   add_provenance(id.table);
   id.table.save(out);
   if (!id.identified)

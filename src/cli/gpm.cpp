@@ -558,7 +558,8 @@ int cmd_store_rates(int argc, char** argv) {
       a.str("checked").empty() ? CheckedReasons{} : passed_reasons(TsvTable::load(a.str("checked")));
 
   // The reading of Chapter 4 that Table 4.6's theta = 0 rates identify (paper/04-setup-rule.md).
-  SetupIdentification ident = identify_setup(store, TsvTable::load(published_file(pub, "thesis_table4_6")));
+  const RegisteredStudy& fp = fingerprint_study(study_registry());
+  SetupIdentification ident = identify_setup(store, fp, TsvTable::load(published_file(pub, fp.published->table)));
   const std::vector<JudgedRate> judged = judge_rates(store_rates(store, pub, kRateTolerance),
                                                      store_unstable_series(store, pub), checked,
                                                      kRateTolerance, ident.identified);

@@ -179,12 +179,12 @@ RegisteredStudy poisson() {
   // V_i = dx^2; seeds 2, 3 at the coarse and the rate levels.
   const std::vector<std::string> coarse = {"--levels", "5,6"};
   s.store_files = {{"thesis_table4_4", "all", {}, {}, coarse, {"h10", "h15"}},
-                   {"thesis_table4_4_cellvol", "cellvol", {"--volumes", "cell"}, {}, coarse, {"h10_cell", "h15_cell"}},
+                   {"thesis_table4_4_cellvol", "cell", {"--volumes", "cell"}, {}, coarse, {"h10_cell", "h15_cell"}},
                    {"thesis_table4_4_seed2", "seed2", {"--seed", "2"}, {"--levels", "5,6,8,9"}, coarse},
                    {"thesis_table4_4_seed3", "seed3", {"--seed", "3"}, {"--levels", "5,6,8,9"}, coarse}};
   s.published = PublishedRates{"thesis_table4_4", "thesis_table4_4_long.tsv", {"h_rule", "weight"}, "h10",
                                [](const PdeSetup& r) { return h_rule_name(r.h_rule) + (r.volumes == PdeVolumes::cell ? "_cell" : ""); },
-                               false, {}};
+                               false, {}, /*split_by=*/"h_rule"};
   s.figures = {{"thesis_fig4_8", {}, /*per_reading=*/true}};
   s.plan = [](UnitPricer& p) {
     const Calibration& c = p.cal();
@@ -278,6 +278,9 @@ RegisteredStudy heat(const HeatTable& hp) {
   }
   s.published = PublishedRates{name, name + "_long.tsv", {"weight", "theta"}, "h10",
                                [](const PdeSetup& r) { return r.name(); }, /*finite_series=*/true, {}};
+  // Table 4.6's explicit (theta = 0) rates fix the number of steps, so h: the set-up rule's
+  // fingerprint (paper/04-setup-rule.md).
+  if (hp.table == "4.6") s.published->fingerprint = {"theta", "0"};
   // The document's figure of the table (Figures 4.9–4.11), drawn in each reading.
   const std::map<std::string, std::string> figure = {{"4.5", "thesis_fig4_9"}, {"4.6", "thesis_fig4_10"}, {"4.7", "thesis_fig4_11"}};
   s.figures = {{figure.at(hp.table), {"figures/thesis_heat.gp"}, /*per_reading=*/true}};
@@ -431,6 +434,17 @@ const StudyRegistry& study_registry() {
     return v;
   }();
   return r;
+}
+
+const RegisteredStudy& fingerprint_study(const StudyRegistry& registry) {
+  const RegisteredStudy* found = nullptr;
+  for (auto& s : registry)
+    if (s.published && !s.published->fingerprint.first.empty()) {
+      if (found) throw InputError("two studies carry the set-up fingerprint: " + found->name + ", " + s.name);
+      found = &s;
+    }
+  if (!found) throw InputError("no registered study carries the set-up fingerprint");
+  return *found;
 }
 
 const RegisteredStudy& registered_study_of_file(const std::string& file) {

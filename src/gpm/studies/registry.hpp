@@ -87,6 +87,14 @@ struct PublishedRates {
   // How a stored file is cut into slices (one file holding several set-ups); unset: the
   // file is one slice, its StoreFile::slice.
   std::function<std::vector<StoreSlice>(const StoreFile& file, const TsvTable& data)> cut;
+  // A key column whose value leads the name of a rate's slice (Table 4.4: h_rule, so h10,
+  // h15_seed2, h10_cell, …: the file's slice follows unless it is "all"); the rate's key is
+  // then the others.  "": none.
+  std::string split_by = "";
+  // The published rates that are the set-up rule's fingerprint (Table 4.6: theta = 0): a key
+  // column and its value.  On the identified board they identify the reading and are not
+  // judged (setup_identification.hpp).  Empty: none.
+  std::pair<std::string, std::string> fingerprint = {};
 };
 
 struct RegisteredStudy {
@@ -143,6 +151,9 @@ TsvTable store_file_table(const StudyRegistry& registry);
 
 // The package's studies, in plan order.
 const StudyRegistry& study_registry();
+// The one study whose published rates carry the set-up rule's fingerprint; InputError if
+// none or several.
+const RegisteredStudy& fingerprint_study(const StudyRegistry& registry);
 // The entry that writes data file `file`; InputError if none.
 const RegisteredStudy& registered_study_of_file(const std::string& file);
 

@@ -14,12 +14,8 @@ namespace gpm {
 
 namespace {
 
-// One reading of the set-up (h rule, volumes, time step): PdeSetup (heat_tables.hpp),
-// whose file_suffix() names its store file.
+// One reading of the set-up (h rule, volumes, time step): PdeSetup (heat_tables.hpp).
 using Reading = PdeSetup;
-std::string reading_file(const Reading& r, const std::string& table) {
-  return "thesis_table" + table + r.file_suffix() + ".tsv";
-}
 
 // The details in the order they are decided, each with its printed value first, by name:
 // the rule compares values of any detail alike.
@@ -32,12 +28,13 @@ std::string detail(const Reading& r, const std::string& d) {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The θ = 0 rate of `weight` between the levels of `levels`, NaN where a level is missing or
-// an error is not a positive finite number.
-double theta0_rate(const TsvTable& t, const std::string& weight, int l1, int l2) {
+// The fingerprint rate of `weight` (rows where column = value: θ = 0) between the levels l1,
+// l2, NaN where a level is missing or an error is not a positive finite number.
+double fingerprint_rate(const TsvTable& t, const std::pair<std::string, std::string>& fp, const std::string& weight,
+                        int l1, int l2) {
   double h[2] = {NAN, NAN}, e[2] = {NAN, NAN};
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
-    if (t.text(i, "weight") != weight || t.text(i, "theta") != "0") continue;
+    if (t.text(i, "weight") != weight || t.text(i, fp.first) != fp.second) continue;
     const long long k = t.integer(i, t.require_column("level"));
     const int slot = k == l1 ? 0 : k == l2 ? 1 : -1;
     if (slot < 0 || t.text(i, "rel_error") == "NA") continue;
@@ -50,15 +47,18 @@ double theta0_rate(const TsvTable& t, const std::string& weight, int l1, int l2)
 
 }  // namespace
 
-SetupIdentification identify_setup(const std::string& store, const TsvTable& pub) {
+SetupIdentification identify_setup(const std::string& store, const RegisteredStudy& study, const TsvTable& pub) {
+  if (!study.published || study.published->fingerprint.first.empty())
+    throw InputError("study '" + study.name + "' carries no set-up fingerprint");
+  const auto& fp = study.published->fingerprint;
   const auto levels_text = pub.get("rate_levels").value_or("");
   int l1 = 0, l2 = 0;
   if (std::sscanf(levels_text.c_str(), "%d,%d", &l1, &l2) != 2)
     throw InputError(pub.source + ": no '# rate_levels = A,B' line");
   std::map<std::string, double> published;
   for (std::size_t i = 0; i < pub.rows.size(); ++i)
-    if (pub.text(i, "theta") == "0") published[pub.text(i, "weight")] = pub.number(i, pub.require_column("numerical"));
-  if (published.empty()) throw InputError(pub.source + ": no theta = 0 rate");
+    if (pub.text(i, fp.first) == fp.second) published[pub.text(i, "weight")] = pub.number(i, pub.require_column("numerical"));
+  if (published.empty()) throw InputError(pub.source + ": no " + fp.first + " = " + fp.second + " rate");
 
   // --- Every reading: its θ = 0 rates and distance. -----------------------------------------
   // The eight readings, the printed one (h10, lattice, fit) first.
@@ -69,7 +69,9 @@ SetupIdentification identify_setup(const std::string& store, const TsvTable& pub
   t.set("rule", "paper/04-setup-rule.md: details decided in the order h_rule, volumes, dt_rule; a value "
                 "is identified when its closest reading is closer by a factor of two than every other "
                 "value's; otherwise as printed (h10, lattice, fit)");
-  t.set("fingerprint", "Table 4.6, theta = 0, rates in h between levels " + levels_text);
+  // "Table 4.6, theta = 0": the study's document item without the document's name.
+  const std::string item = study.item.substr(study.item.find("Table"));
+  t.set("fingerprint", item + ", " + fp.first + " = " + fp.second + ", rates in h between levels " + levels_text);
   t.set("distance", "mean over the weights of |ln(rate/published)|; inf: a rate missing or of the other sign");
   t.set("store", store);
   t.columns = {"reading", "h_rule", "volumes", "dt_rule", "file"};
@@ -77,14 +79,14 @@ SetupIdentification identify_setup(const std::string& store, const TsvTable& pub
   t.columns.push_back("distance");
   std::map<std::string, double> distance;
   for (const Reading& r : readings) {
-    const std::string path = store + "/" + reading_file(r, "4_6");
-    std::vector<std::string> row = {r.name(), detail(r, "h_rule"), detail(r, "volumes"), detail(r, "dt_rule"),
-                                    reading_file(r, "4_6")};
+    const std::string file = study.store_file_of(r.name()).name + ".tsv";
+    const std::string path = store + "/" + file;
+    std::vector<std::string> row = {r.name(), detail(r, "h_rule"), detail(r, "volumes"), detail(r, "dt_rule"), file};
     double sum = 0;
     const bool present = std::filesystem::exists(path);
     const TsvTable data = present ? TsvTable::load(path) : TsvTable{};
     for (auto& [w, p] : published) {
-      const double rate = present ? theta0_rate(data, w, l1, l2) : NAN;
+      const double rate = present ? fingerprint_rate(data, fp, w, l1, l2) : NAN;
       row.push_back(std::isnan(rate) ? "NA" : fmt(rate));
       if (std::isnan(rate) && (id.incomplete.empty() || id.incomplete.back() != r.name()))
         id.incomplete.push_back(r.name());
@@ -99,7 +101,7 @@ SetupIdentification identify_setup(const std::string& store, const TsvTable& pub
   if (!id.incomplete.empty()) {
     t.set("identified", "NA");
     t.set("printed", readings.front().name());
-    t.set("incomplete", "no theta = 0 rate yet for " + join(id.incomplete, ", ") +
+    t.set("incomplete", "no " + fp.first + " = " + fp.second + " rate yet for " + join(id.incomplete, ", ") +
                             ": nothing is identified until every reading has one");
     return id;
   }

@@ -9,7 +9,10 @@
 // K = ⌈T/Δt₀⌉ and so fixes h (and, through g, Δt and the volumes slightly).  These rates do
 // not measure the convergence the other tables judge.
 //
-// For each of the eight readings stored (thesis_table4_6{,_h15}{,_dtexact}{,_cellvol}.tsv):
+// The study and its key column come from the registry (fingerprint_study: the one whose
+// PublishedRates::fingerprint is set, Table 4.6's theta = 0).  For each of the eight
+// readings, its store file (RegisteredStudy::store_file_of: thesis_table4_6{,_h15}{,_dtexact}
+// {,_cellvol}.tsv):
 // the θ = 0 rate of each weight at the published rate levels, and the distance to the
 // published rates, the mean over the weights of |ln(r/r_published)| (a rate of the other sign
 // or none: infinitely far).  Then the details are decided one at a time (h rule, volumes,
@@ -23,6 +26,7 @@
 
 #include "gpm/io/tsv.hpp"
 #include "gpm/studies/heat_tables.hpp"
+#include "gpm/studies/registry.hpp"
 
 namespace gpm {
 
@@ -39,6 +43,7 @@ struct SetupIdentification {
 // From the store's Table 4.6 files and the published rates (their rate_levels, their θ = 0
 // rows).  InputError for a published file without rate_levels or θ = 0 rates, or a store file
 // that cannot be read.
-SetupIdentification identify_setup(const std::string& store, const TsvTable& published);
+// `study`: the fingerprint's study (its published file is `published`).
+SetupIdentification identify_setup(const std::string& store, const RegisteredStudy& study, const TsvTable& published);
 
 }  // namespace gpm

@@ -8,6 +8,7 @@
 #include <ctime>
 #include <filesystem>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 
 #include "gpm/error.hpp"
@@ -209,18 +210,15 @@ std::string slice_setup(const std::string& table, const std::string& slice) {
 
 std::vector<StoreRate> store_rates_of(const std::string& table, const std::string& slice,
                                       const TsvTable& joined, const std::vector<std::string>& keys,
-                                      bool claims_theoretical) {
-  const std::string setup = slice_setup(table, slice), seed = seed_of(slice);
+                                      bool claims_theoretical, const std::string& split_by) {
+  const std::string setup = slice_setup(table, slice);
   std::vector<StoreRate> out;
   for (std::size_t i = 0; i < joined.rows.size(); ++i) {
     StoreRate r;
     r.table = table, r.slice = slice, r.setup = setup;
-    for (std::size_t k = 0; k < keys.size(); ++k) r.key += (k ? " " : "") + joined.text(i, keys[k]);
-    if (table == "thesis_table4_4") {
-      r.slice = joined.text(i, "h_rule") + (seed.empty() ? "" : "_" + seed) +
-                (slice == "cellvol" ? "_cell" : "");
-      r.key = joined.text(i, "weight");
-    }
+    for (auto& k : keys)
+      if (k != split_by) r.key += (r.key.empty() ? "" : " ") + joined.text(i, k);
+    if (!split_by.empty()) r.slice = joined.text(i, split_by) + (slice == "all" ? "" : "_" + slice);
     r.published = joined.text(i, "published");
     r.reproduced = joined.text(i, "reproduced");
     r.levels = joined.text(i, "levels");
@@ -283,6 +281,23 @@ CheckedReasons passed_reasons(const TsvTable& checked) {
   return out;
 }
 
+// Whether a rate is one of the set-up rule's fingerprint rates (its study's
+// PublishedRates::fingerprint: the key column's value in the rate's key).
+bool is_fingerprint(const StoreRate& r, const StudyRegistry& registry) {
+  for (auto& s : registry) {
+    if (!s.published || s.published->table != r.table || s.published->fingerprint.first.empty()) continue;
+    const auto& [column, value] = s.published->fingerprint;
+    std::vector<std::string> key;
+    for (auto& k : s.published->key)
+      if (k != s.published->split_by) key.push_back(k);
+    std::istringstream cells(r.key);  // the key's cells, space-separated, in key order
+    std::string cell;
+    for (std::size_t k = 0; k < key.size() && cells >> cell; ++k)
+      if (key[k] == column) return cell == value;
+  }
+  return false;
+}
+
 std::vector<JudgedRate> judge_rates(const std::vector<StoreRate>& rates, const UnstableSeries& unstable,
                                     const CheckedReasons& checked, double tolerance,
                                     const std::optional<PdeSetup>& identified, const StudyRegistry& registry) {
@@ -306,8 +321,7 @@ std::vector<JudgedRate> judge_rates(const std::vector<StoreRate>& rates, const U
     j.printed = on_board(printed, r);
     j.identified = on_board(ident, r);
     // The fingerprint rates identified the reading: on that board they are evidence, not results.
-    const bool fingerprint = j.identified && identified && r.table == "thesis_table4_6" &&
-                             r.key.size() >= 2 && r.key.compare(r.key.size() - 2, 2, " 0") == 0;
+    const bool fingerprint = j.identified && identified && is_fingerprint(r, registry);
     j.verdict_identified = fingerprint ? Verdict::fingerprint : j.verdict;
     out.push_back(j);
   }
@@ -460,7 +474,7 @@ std::vector<StoreRate> store_rates(const std::string& store, const std::string& 
       join_rates(p.finite_series ? finite_series(slice.data) : slice.data, pub, join, joined);
       // A slice's name stays unique: a second one would replace the first, as a file would.
       slices[p.table + "." + slice.slice + ".tsv"] =
-          store_rates_of(p.table, slice.slice, joined, p.key, pub.column("theoretical") >= 0);
+          store_rates_of(p.table, slice.slice, joined, p.key, pub.column("theoretical") >= 0, p.split_by);
     }
   }
   std::vector<StoreRate> out;

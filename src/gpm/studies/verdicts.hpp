@@ -127,12 +127,13 @@ using CheckedReasons = std::map<RateKey, CheckedReason>;
 // The setup of a slice of `table` (see above).
 std::string slice_setup(const std::string& table, const std::string& slice);
 // The rows of `joined` (join_rates' output for `table`'s slice `slice`, keyed by `keys`) as
-// StoreRates; `claims_theoretical`: the published file has a theoretical column.  Table 4.4
-// prints one rate per weight for both readings of h: its rows go to one slice per reading
-// (h10, h15_seed2, h10_cell, …), keyed by the weight alone.
+// StoreRates; `claims_theoretical`: the published file has a theoretical column.  With
+// `split_by` (PublishedRates::split_by: Table 4.4 prints one rate per weight for both readings
+// of h), a row's slice is led by that key column's value (h10, h15_seed2, h10_cell, …) and
+// its key is the other columns.
 std::vector<StoreRate> store_rates_of(const std::string& table, const std::string& slice,
                                       const TsvTable& joined, const std::vector<std::string>& keys,
-                                      bool claims_theoretical);
+                                      bool claims_theoretical, const std::string& split_by = "");
 // The rows of the heat series (weight, theta) that never blew up: what a rate can come from.
 TsvTable finite_series(const TsvTable& heat);
 // The series of one heat slice (`heat`: a store file of thesis_heat) unstable at both of the
