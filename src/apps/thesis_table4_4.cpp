@@ -66,45 +66,50 @@ int body(int argc, char** argv) {
        {"error", "max_Omega|u-U| / max_Omega|u|"},
        {"h10", pde_h_formula(HRule::h10)}, {"h15", pde_h_formula(HRule::h15)}},
       3);
+  // --- The units: the registry's (one per level, reading of h and weight, in that order).
+  // A level's particles, volumes and data are shared by its units, made for the first one
+  // still to compute.
   const TestFunction& u = test_function("sin2pi");
   const Domain dom;
-  for (int k : levels) {
-    const double dx = std::ldexp(1.0, -k);
-    // Particles, volumes, data: shared by every weight and reading of h at this level.
-    const Particles p = jittered_grid(dx, run.seed());
-    const auto V = pde_volumes(volumes, p, dx, dom);
-    const PoissonData d = poisson_data(p, u);  // f = −Δu, g = u at every particle
-    for (HRule rule_id : pde_h_rules()) {
-      const double h = pde_h(rule_id, dx);
-      const std::string rule = h_rule_name(rule_id);  // the data file's h_rule
-      for (const auto& wname : pde_weights()) {
-        if (cache.has({rule, wname, fmt(k)}) || !run.claim(poisson_unit_work(dx, h))) continue;
-        // Assemble −Δ_h (or keep it matrix-free), solve by CG, measure the error in Ω.
-        const auto t0 = std::chrono::steady_clock::now();
-        const DiscreteLaplacian L(p, V, weight(wname), h, storage, max_bytes);
-        const PoissonResult r = solve_poisson(p, L, d.f, d.g, tol);
-        double err = 0;
-        for (std::size_t i = 0; i < p.size(); ++i)
-          if (p.in_omega[i]) err = std::max(err, std::fabs(d.g[i] - r.U[i]));
-        const double secs =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        TsvRow row = run.row();  // the entry's columns (poisson_table().columns), by name
-        row["h_rule"] = rule, row["weight"] = wname, row["level"] = fmt(k), row["dx"] = fmt(dx);
-        row["h"] = fmt(h), row["N"] = fmt(p.size()), row["N_omega"] = fmt(L.n_unknowns());
-        row["nnz"] = fmt(static_cast<long long>(L.nnz()));
-        row["storage"] = L.assembled() ? "assembled" : "matrix_free";
-        row["rel_error"] = fmt(err / d.umax), row["cg_iterations"] = fmt(r.cg.iterations);
-        row["rel_residual"] = fmt(r.cg.rel_residual), row["assembly_s"] = fmt(L.assembly_seconds());
-        row["solve_s"] = fmt(r.solve_seconds), row["seconds"] = fmt(secs);
-        run.add(row);
-        run.unit_done(0, line_printf("%s %-28s dx=2^-%d h=%.4f N=%zu nnz=%.3g %s  err=%.4e  "
-                                     "CG %d it (res %.1e)  %.1f s",
-                                     rule.c_str(), wname.c_str(), k, h, p.size(),
-                                     static_cast<double>(L.nnz()),
-                                     L.assembled() ? "assembled" : "matrix-free", err / d.umax,
-                                     r.cg.iterations, r.cg.rel_residual, secs));
-      }
+  int level = 0;
+  Particles p;
+  std::vector<double> V;
+  PoissonData d;
+  for (const StudyUnit& unit : run.units()) {
+    const int k = unit.level;
+    const double dx = std::ldexp(1.0, -k), h = unit.h;
+    const std::string &rule = unit.key[0], &wname = unit.key[1];  // the data file's h_rule, weight
+    if (cache.has(unit.key) || !run.claim(poisson_unit_work(dx, h))) continue;
+    if (k != level) {
+      p = jittered_grid(dx, run.seed());
+      V = pde_volumes(volumes, p, dx, dom);
+      d = poisson_data(p, u);  // f = −Δu, g = u at every particle
+      level = k;
     }
+    // Assemble −Δ_h (or keep it matrix-free), solve by CG, measure the error in Ω.
+    const auto t0 = std::chrono::steady_clock::now();
+    const DiscreteLaplacian L(p, V, weight(wname), h, storage, max_bytes);
+    const PoissonResult r = solve_poisson(p, L, d.f, d.g, tol);
+    double err = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.in_omega[i]) err = std::max(err, std::fabs(d.g[i] - r.U[i]));
+    const double secs =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    TsvRow row = run.row();  // the entry's columns (poisson_table().columns), by name
+    row["h_rule"] = rule, row["weight"] = wname, row["level"] = fmt(k), row["dx"] = fmt(dx);
+    row["h"] = fmt(h), row["N"] = fmt(p.size()), row["N_omega"] = fmt(L.n_unknowns());
+    row["nnz"] = fmt(static_cast<long long>(L.nnz()));
+    row["storage"] = L.assembled() ? "assembled" : "matrix_free";
+    row["rel_error"] = fmt(err / d.umax), row["cg_iterations"] = fmt(r.cg.iterations);
+    row["rel_residual"] = fmt(r.cg.rel_residual), row["assembly_s"] = fmt(L.assembly_seconds());
+    row["solve_s"] = fmt(r.solve_seconds), row["seconds"] = fmt(secs);
+    run.add(row);
+    run.unit_done(0, line_printf("%s %-28s dx=2^-%d h=%.4f N=%zu nnz=%.3g %s  err=%.4e  "
+                                 "CG %d it (res %.1e)  %.1f s",
+                                 rule.c_str(), wname.c_str(), k, h, p.size(),
+                                 static_cast<double>(L.nnz()),
+                                 L.assembled() ? "assembled" : "matrix-free", err / d.umax,
+                                 r.cg.iterations, r.cg.rel_residual, secs));
   }
   run.finish();
   return 0;

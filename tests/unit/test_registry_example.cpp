@@ -42,9 +42,14 @@ RegisteredStudy example_study() {
   s.store_files = {{"example_interpolant", "all", {}, {}, {"--levels", "4"}}};
   s.published = PublishedRates{"example_table", "example_table.tsv", {"weight"}, "all", {}, false, {}};
   s.figures = {{"example_fig", {}, false}};
-  s.plan = [](UnitPricer& p) {
-    for (int k : p.paper() ? std::vector<int>{4, 5, 6} : std::vector<int>{4, 5})
-      p.add_fused("example_interpolant", "quartic", k, example_h(k), "imoto9");
+  // Its units: one fused pass per level, which the program runs and the plan prices.
+  s.units = [](const std::vector<int>& levels) {
+    std::vector<StudyUnit> u;
+    for (int k : levels) u.push_back({k, example_h(k), {"quartic_polynomial", fmt(k)}, "quartic"});
+    return u;
+  };
+  s.price = [](UnitPricer& p, const StudyUnit& u) {
+    p.add_fused("example_interpolant", u.variant, u.level, u.h, "imoto9");
   };
   s.recorded = [](const std::string&, const TsvTable& d, const PlannedPairs&, RecordedUnits& out) {
     for (std::size_t i = 0; i < d.rows.size(); ++i)
@@ -61,18 +66,17 @@ void run_example(const RegisteredStudy& s, const std::vector<std::string>& argv_
   StudyRunner run(s, "Example study: the interpolant's error on the plain grid.");
   run.parse(static_cast<int>(argv.size()), argv.data());
   LevelCache& cache = run.open({{"program", s.program}, {"seed", "1"}}, 2);
-  for (int k : run.levels()) {
-    if (cache.has({"quartic_polynomial", fmt(k)}) || !run.claim()) continue;
-    const double dx = std::ldexp(1.0, -k);
+  for (const StudyUnit& u : run.units()) {
+    if (cache.has(u.key) || !run.claim()) continue;
+    const double dx = std::ldexp(1.0, -u.level);
     const Particles p = jittered_grid(dx, 1, 0.0);
-    const FusedErrors e = fused_errors(p, uniform_volumes(p), example_h(k),
-                                       {{"quartic_polynomial", Operator::interp}}, {"sin2pi"});
+    const FusedErrors e = fused_errors(p, uniform_volumes(p), u.h, {{"quartic_polynomial", Operator::interp}}, {"sin2pi"});
     TsvRow row = run.row();
-    row["weight"] = "quartic_polynomial", row["level"] = fmt(k), row["h"] = fmt(example_h(k));
+    row["weight"] = "quartic_polynomial", row["level"] = fmt(u.level), row["h"] = fmt(u.h);
     row["rel_error"] = fmt(e.errors.at(0).rel_error), row["pairs"] = fmt(e.pairs);
     row["time_s"] = fmt(e.kernel_seconds);
     run.add(row);
-    run.unit_done(0, "level " + fmt(k));
+    run.unit_done(0, "level " + fmt(u.level));
   }
   run.finish();
 }
@@ -147,9 +151,12 @@ TEST_CASE("registry example: the plan prices it and make gets its rules", "[unit
   only.add(example_study());
   const auto units = plan_units(Profile::paper, c, only);
   REQUIRE(units.size() == 3);
-  for (auto& u : units) {
-    CHECK(u.study == "example_interpolant");
-    CHECK(u.time_s > 0);
+  // The plan prices the units the program runs: the entry's, level by level.
+  for (std::size_t i = 0; i < units.size(); ++i) {
+    CHECK(units[i].study == "example_interpolant");
+    CHECK(units[i].level == 4 + static_cast<int>(i));
+    CHECK(units[i].h == example_h(units[i].level));
+    CHECK(units[i].time_s > 0);
   }
   const std::string mk = make_rules(reg);
   CHECK(mk.find("STUDIES_example := example_interpolant\n") != std::string::npos);

@@ -186,24 +186,28 @@ RegisteredStudy poisson() {
                                [](const PdeSetup& r) { return h_rule_name(r.h_rule) + (r.volumes == PdeVolumes::cell ? "_cell" : ""); },
                                false, {}, /*split_by=*/"h_rule"};
   s.figures = {{"thesis_fig4_8", {}, /*per_reading=*/true}};
-  s.plan = [](UnitPricer& p) {
-    const Calibration& c = p.cal();
-    for (int k : p.paper() ? poisson_table().levels.paper : poisson_table().levels.quick)
+  // A unit: one Laplacian and CG solve per (level, h rule, weight), the particles shared by
+  // a level's units.
+  s.units = [](const std::vector<int>& levels) {
+    std::vector<StudyUnit> out;
+    for (int k : levels)
       for (HRule rule : pde_h_rules())
-        for (auto& w : pde_weights()) {
-          const std::string var = h_rule_name(rule) + "/" + w;
-          PlanUnit u = p.base("thesis_table4_4", var, k, pde_h(rule, dx_of(k)));
-          const bool as = p.is_assembled(u);
-          const double its = c.poisson_its.at(var) * pde_h(rule, dx_of(5)) / u.h;
-          u.products = its + 2;
-          u.method = as ? "assembled" : "matrix_free";
-          const double setup = p.laplacian_setup_s(u, as);
-          u.time_s = setup + u.products * p.product_s(u, as);
-          u.time_before_s = setup + u.products * p.product_before_s(u);
-          u.mem_mib = p.pde_mib(u, as);
-          u.basis = "setup + (CG its " + fmt(std::round(its)) + " + 2) products";
-          p.units().push_back(u);
-        }
+        for (auto& w : pde_weights())
+          out.push_back({k, pde_h(rule, dx_of(k)), {h_rule_name(rule), w, fmt(k)}, h_rule_name(rule) + "/" + w});
+    return out;
+  };
+  s.price = [](UnitPricer& p, const StudyUnit& su) {
+    PlanUnit u = p.base("thesis_table4_4", su.variant, su.level, su.h);
+    const bool as = p.is_assembled(u);
+    const double its = p.cal().poisson_its.at(su.variant) * pde_h(parse_h_rule(su.key[0]), dx_of(5)) / u.h;
+    u.products = its + 2;
+    u.method = as ? "assembled" : "matrix_free";
+    const double setup = p.laplacian_setup_s(u, as);
+    u.time_s = setup + u.products * p.product_s(u, as);
+    u.time_before_s = setup + u.products * p.product_before_s(u);
+    u.mem_mib = p.pde_mib(u, as);
+    u.basis = "setup + (CG its " + fmt(std::round(its)) + " + 2) products";
+    p.units().push_back(u);
   };
   s.recorded = [](const std::string&, const TsvTable& d, const PlannedPairs&, RecordedUnits& out) {
     const Rows rows{d, out};

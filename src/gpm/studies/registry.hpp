@@ -97,6 +97,17 @@ struct PublishedRates {
   std::pair<std::string, std::string> fingerprint = {};
 };
 
+// One unit of a study: what its program computes at once and caches, the rows keyed by
+// `key` (the data file's first columns), at a level and h.  An entry that lists its units
+// (RegisteredStudy::units) has one loop for both its program (StudyRunner::units(), in this
+// order) and the plan (RegisteredStudy::price, one unit at a time).
+struct StudyUnit {
+  int level = 0;
+  double h = 0;
+  std::vector<std::string> key;
+  std::string variant;  // the plan's name of it within the level (h10/quartic_polynomial)
+};
+
 struct RegisteredStudy {
   std::string name;     // the catalog's name (gpm study NAME)
   std::string program;  // the executable that runs it
@@ -111,7 +122,11 @@ struct RegisteredStudy {
   std::vector<StoreFile> store_files;  // what the committed store holds of it
   std::optional<PublishedRates> published;
   std::vector<StudyFigure> figures;
-  // Appends the units of the profile (pricer.paper()) to pricer.units().
+  // The units at the given levels, in the order the program computes them; with `price`,
+  // which appends one unit's cost to pricer.units(), the plan prices exactly these.  Unset:
+  // `plan` appends the units of the profile (pricer.paper()) itself.
+  std::function<std::vector<StudyUnit>(const std::vector<int>& levels)> units;
+  std::function<void(UnitPricer& pricer, const StudyUnit& unit)> price;
   std::function<void(UnitPricer& pricer)> plan;
   // What the data file `file` recorded per (variant, level): seconds and work.
   std::function<void(const std::string& file, const TsvTable& data, const PlannedPairs& planned,

@@ -109,6 +109,11 @@ std::vector<int> StudyRunner::levels() const {
   return levels(study_->levels.quick, study_->levels.paper);
 }
 
+std::vector<StudyUnit> StudyRunner::units() const {
+  if (!study_ || !study_->units) throw std::logic_error("StudyRunner::units(): the study lists no units");
+  return study_->units(levels());
+}
+
 LevelCache& StudyRunner::open(std::vector<std::pair<std::string, std::string>> params, int key_columns) {
   if (!study_) throw std::logic_error("StudyRunner::open(params, key): not made from a registered study");
   return open(std::move(params), study_->columns, key_columns);

@@ -409,7 +409,14 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
 
 std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c, const StudyRegistry& registry) {
   UnitPricer pricer(profile, c);
-  for (auto& study : registry) study.plan(pricer);
+  for (auto& study : registry) {
+    if (study.units) {  // the program's own units, priced one by one
+      for (const StudyUnit& u : study.units(pricer.paper() ? study.levels.paper : study.levels.quick))
+        study.price(pricer, u);
+    } else {
+      study.plan(pricer);
+    }
+  }
   return pricer.units();
 }
 
