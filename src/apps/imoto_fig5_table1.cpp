@@ -162,57 +162,57 @@ int body(int argc, char** argv) {
   LevelCache& cache = run.open(params, 2);
   cache.table().set("profile", profile_name(profile));
 
-  // Work still to do, for the overall ETA: the plan's pair estimate (cost_model.hpp).
+  // The units: the registry's, one per (level, m), level by level.  Work still to do, for
+  // the overall ETA: the plan's pair estimate (cost_model.hpp).
+  const std::vector<StudyUnit> units = run.units();
   const std::size_t nw = kStudy.weights.size();
   double total = 0;
-  for (int k : levels) {
-    const double dx = std::ldexp(1.0, -k);
-    for (double m : kStudy.orders)
-      if (!cache.has({fmt(k), fmt(m)}, nw)) total += predicted_pairs(dx, imoto_h(m, dx));
-  }
+  for (const StudyUnit& u : units)
+    if (!cache.has(u.key, nw)) total += predicted_pairs(std::ldexp(1.0, -u.level), u.h);
   run.expect(total, "pairs");
 
   const std::vector<ErrorRequest> requests = kStudy.requests();
 
-  // The loop over resolutions: one particle set per level, shared by the three m.
-  for (int level : levels) {
-    // The orders m of this level still to do (on a cluster every rank takes a share of each).
-    std::vector<double> orders;
-    for (double m : kStudy.orders)
-      if (!cache.has({fmt(level), fmt(m)}, nw) && run.claim_shared()) orders.push_back(m);
-    if (orders.empty()) continue;
-    const double dx = std::ldexp(1.0, -level);
-    const Particles p = jittered_grid(dx, seed, jitter, dom);
-    const std::vector<double> V = pde_volumes(volumes, p, dx, dom);
-    for (double m : orders) {
-      // All nine weights in one pass over the particle pairs within h_N.
-      const auto t0 = std::chrono::steady_clock::now();
-      const double h = imoto_h(m, dx);
-      const ErrorMaxima maxima = run.shared_pass("level" + fmt(level) + "_m" + fmt(m), [&](TargetShare s) {
-        return fused_error_maxima(p, V, h, requests, {kStudy.function}, true, s);
-      });
-      const FusedErrors e = relative_errors(maxima, requests, {kStudy.function});
-      const double secs =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      for (std::size_t r = 0; r < nw; ++r) {
-        const ImotoWeight& w = kStudy.weights[r];
-        TsvRow row = run.row();  // the catalog's columns (imoto_study().columns), by name
-        row["level"] = fmt(level), row["m"] = fmt(m), row["operator"] = w.op_label;
-        row["weight"] = w.weight, row["dx"] = fmt(dx), row["h"] = fmt(h), row["N"] = fmt(p.size());
-        row["N_in_omega"] = fmt(p.count_in_omega()), row["pairs"] = fmt(e.pairs);
-        row["rel_error"] = fmt(e.errors[r].rel_error);
-        // The smoothing part is known in closed form for the interpolant only.
-        row["smoothing_part"] = w.op == Operator::interp ? fmt(interp_smoothing_error(w.weight, h)) : "NA";
-        row["time_s"] = fmt(secs), row["kernel_s"] = fmt(e.kernel_seconds);
-        run.add(row);
-      }
-      run.unit_done(predicted_pairs(dx, h),
-                    line_printf("level %d m=%g N=%zu h=%.4g pairs=%.3g %.2fs (%.3g pairs/s)  "
-                                "Pi1 %.3g Grad1 %.3g Lap1 %.3g",
-                                level, m, p.size(), h, e.pairs, secs, e.pairs / e.kernel_seconds,
-                                e.errors[0].rel_error, e.errors[3].rel_error,
-                                e.errors[6].rel_error));
+  // The loop over the units (on a cluster every rank takes a share of each): one particle
+  // set per level, made for its first unit still to do and shared by its m.
+  int built = 0;
+  Particles p;
+  std::vector<double> V;
+  for (const StudyUnit& u : units) {
+    if (cache.has(u.key, nw) || !run.claim_shared()) continue;
+    const int level = u.level;
+    const double dx = std::ldexp(1.0, -level), m = parse_number(u.key[1], "m"), h = u.h;
+    if (built != level) {
+      p = jittered_grid(dx, seed, jitter, dom);
+      V = pde_volumes(volumes, p, dx, dom);
+      built = level;
     }
+    // All nine weights in one pass over the particle pairs within h_N.
+    const auto t0 = std::chrono::steady_clock::now();
+    const ErrorMaxima maxima = run.shared_pass("level" + fmt(level) + "_m" + fmt(m), [&](TargetShare s) {
+      return fused_error_maxima(p, V, h, requests, {kStudy.function}, true, s);
+    });
+    const FusedErrors e = relative_errors(maxima, requests, {kStudy.function});
+    const double secs =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    for (std::size_t r = 0; r < nw; ++r) {
+      const ImotoWeight& w = kStudy.weights[r];
+      TsvRow row = run.row();  // the catalog's columns (imoto_study().columns), by name
+      row["level"] = fmt(level), row["m"] = fmt(m), row["operator"] = w.op_label;
+      row["weight"] = w.weight, row["dx"] = fmt(dx), row["h"] = fmt(h), row["N"] = fmt(p.size());
+      row["N_in_omega"] = fmt(p.count_in_omega()), row["pairs"] = fmt(e.pairs);
+      row["rel_error"] = fmt(e.errors[r].rel_error);
+      // The smoothing part is known in closed form for the interpolant only.
+      row["smoothing_part"] = w.op == Operator::interp ? fmt(interp_smoothing_error(w.weight, h)) : "NA";
+      row["time_s"] = fmt(secs), row["kernel_s"] = fmt(e.kernel_seconds);
+      run.add(row);
+    }
+    run.unit_done(predicted_pairs(dx, h),
+                  line_printf("level %d m=%g N=%zu h=%.4g pairs=%.3g %.2fs (%.3g pairs/s)  "
+                              "Pi1 %.3g Grad1 %.3g Lap1 %.3g",
+                              level, m, p.size(), h, e.pairs, secs, e.pairs / e.kernel_seconds,
+                              e.errors[0].rel_error, e.errors[3].rel_error,
+                              e.errors[6].rel_error));
   }
   if (!run.finish()) return 0;
 

@@ -77,11 +77,15 @@ RegisteredStudy imoto() {
                    {"imoto_fig5_table1_cellvol", "cellvol", {"--volumes", "cell"}, {}, coarse}};
   s.published = PublishedRates{"imoto_table1", "imoto_table1.tsv", {"operator", "weight", "m"}, "all", {}, false, {}};
   s.figures = {{"imoto_fig5", {}, false}};
-  s.plan = [](UnitPricer& p) {
-    for (int k : p.paper() ? imoto_study().levels.paper : imoto_study().levels.quick)
-      for (double m : imoto_study().orders)
-        p.add_fused("imoto_fig5_table1", "m=" + fmt(m), k, imoto_h(m, dx_of(k)), "imoto9");
+  // A unit: one fused pass of the nine weights per (level, m), the particles shared by a
+  // level's units.
+  s.units = [](const std::vector<int>& levels) {
+    std::vector<StudyUnit> out;
+    for (int k : levels)
+      for (double m : imoto_study().orders) out.push_back({k, imoto_h(m, dx_of(k)), {fmt(k), fmt(m)}, "m=" + fmt(m)});
+    return out;
   };
+  s.price = [](UnitPricer& p, const StudyUnit& u) { p.add_fused("imoto_fig5_table1", u.variant, u.level, u.h, "imoto9"); };
   s.recorded = [](const std::string&, const TsvTable& d, const PlannedPairs&, RecordedUnits& out) {
     const Rows rows{d, out};
     for (auto& r : d.rows) rows.put("m=" + rows.text(r, "m"), rows.level(r), rows.v(r, "time_s"), rows.v(r, "pairs"));
