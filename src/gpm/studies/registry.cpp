@@ -146,11 +146,8 @@ RegisteredStudy thesis_truncation(const ThesisTableSpec& t) {
       all.insert(all.end(), lv.begin(), lv.end());
       for (int k : lv)
         for (const char* vol : {"voronoi", "uniform"})
-          if (!(p.paper() && std::string(vol) == "uniform" && k > t.paper_uniform_max_level)) {
+          if (!(p.paper() && std::string(vol) == "uniform" && k > t.paper_uniform_max_level))
             p.add_fused(t.program, h_reading_name(r) + "/" + vol, k, thesis_h(r, t.c, t.p, dx_of(k)), t.mix());
-            if (p.paper() && r == HReading::printed && k > t.paper_printed_max_level)
-              p.units().back().trimmed = "printed reading stops at 2^-" + fmt(t.paper_printed_max_level);
-          }
     }
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());

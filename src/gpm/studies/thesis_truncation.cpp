@@ -61,12 +61,9 @@ const std::vector<ThesisTableSpec>& thesis_table_specs() {
     t2.quick_scaled = {5, 6, 7, 8, 9};
     t2.paper_levels = {5, 6, 7, 8, 9, 10, 11, 12};
     t2.rate_levels = "11,12";
-    // Trim: the printed h = (3.1³·2^-10·Δx)^{1/5} falls so slowly that its pass at 2^-12
-    // has ~6.5x the pairs of the scaled one (h = 0.093 against 0.037) and costs most of the
-    // table (make plan PROFILE=paper).  The printed reading stops at 2^-11: its rates at
-    // 2^-10/2^-11 and the scaled reading at the documents' 2^-11/2^-12 decide the reading
-    // (report: decisions), and the skipped pass is listed with its predicted cost.
-    t2.paper_printed_max_level = 11;
+    // The printed h = (3.1³·2^-10·Δx)^{1/5} falls so slowly that its pass at 2^-12 has ~6.5x
+    // the pairs of the scaled one (h = 0.093 against 0.037) and costs most of the table (make
+    // plan PROFILE=paper): the store's was run in 32 saved parts (--parts 32, results/paper).
 
     ThesisTableSpec& t3 = v[2];
     t3.program = "thesis_table4_3";
@@ -168,11 +165,8 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
                       : profile == Profile::paper
                           ? spec.paper_levels
                           : (r == HReading::printed ? spec.quick_printed : spec.quick_scaled);
-    const int trim = !given && profile == Profile::paper && r == HReading::printed
-                         ? spec.paper_printed_max_level
-                         : 99;
     for (int k : src)
-      if (k <= max_level && k <= trim) lv.push_back(k);
+      if (k <= max_level) lv.push_back(k);
     return lv;
   };
 
@@ -197,8 +191,6 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
   const std::size_t rows_per_unit = spec.requests.size() * thesis_cases().size();
   cache.table().set("profile", profile_name(profile));
   cache.table().set("paper_uniform_max_level", fmt(spec.paper_uniform_max_level));
-  if (spec.paper_printed_max_level < 99)
-    cache.table().set("paper_printed_max_level", fmt(spec.paper_printed_max_level));
   cache.table().set("time_s", "wall time of the fused pass (all weights, operators, cases)");
   cache.table().set("voronoi_s", "wall time of the Voronoi volumes of the level (0: uniform)");
 

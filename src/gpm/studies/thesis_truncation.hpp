@@ -38,9 +38,6 @@ struct ThesisTableSpec {
   // in the paper profile they run up to this level only, where their (different) behaviour
   // is already plain, instead of doubling the cost of the thesis' finest levels.
   int paper_uniform_max_level = 10;
-  // The printed reading's last level in the paper profile (a trim, see thesis_truncation.cpp
-  // for Table 4.2's reason; `--levels` still runs any level).
-  int paper_printed_max_level = 99;
 };
 
 // The columns of the tables' data files; the first three (h reading, volumes, level) are
