@@ -468,7 +468,7 @@ std::string call_levels(const std::vector<int>& k) {
 
 // The rules of a study's figures: from the run's data (the pattern rule's gnuplot call) and
 // from the store (mk/05's store_% rule), a per-reading one twice (figures/store_reading.sh:
-// the identified reading, then h10, the one printed).  STORE must be set before this file is
+// the identified reading, then the printed one, PublishedRates::printed_slice).  STORE must be set before this file is
 // read (the Makefile), since make expands prerequisites as it reads them.
 void figure_rules(std::ostringstream& m, const RegisteredStudy& s) {
   if (s.figures.empty()) return;
@@ -487,8 +487,8 @@ void figure_rules(std::ostringstream& m, const RegisteredStudy& s) {
     for (auto& sf : s.store_files)
       if (!sf.readings.empty()) stored.push_back("$(STORE)/" + sf.name + ".tsv");
     m << "FIGFILES += $(FIGOUT)/store_printed_" << f.name << ".svg\n";
-    for (const char* reading : {"identified", "h10"}) {
-      const std::string out = std::string(reading) == "h10" ? "store_printed_" : "store_";
+    for (const std::string& reading : {std::string("identified"), s.published->printed_slice}) {
+      const std::string out = reading == "identified" ? "store_" : "store_printed_";
       m << "$(FIGOUT)/" << out << f.name << ".svg: " << inputs << " figures/store_reading.sh $(BUILD)/gpm "
         << "$(DATA)/setup_identification.tsv $(wildcard " << join(stored, " ") << ") " << pub << "\n";
       m << "\tbash figures/store_reading.sh $(BUILD)/gpm $< " << s.name << " " << reading
