@@ -43,9 +43,9 @@ RegisteredStudy example_study() {
   s.published = PublishedRates{"example_table", "example_table.tsv", {"weight"}, "all", {}, false, {}};
   s.figures = {{"example_fig", {}, false}};
   // Its units: one fused pass per level, which the program runs and the plan prices.
-  s.units = [](const std::vector<int>& levels) {
+  s.units = [](const UnitScope& scope) {
     std::vector<StudyUnit> u;
-    for (int k : levels) u.push_back({k, example_h(k), {"quartic_polynomial", fmt(k)}, "quartic"});
+    for (int k : scope.levels) u.push_back({k, example_h(k), {"quartic_polynomial", fmt(k)}, "quartic"});
     return u;
   };
   s.price = [](UnitPricer& p, const StudyUnit& u) {

@@ -79,9 +79,9 @@ RegisteredStudy imoto() {
   s.figures = {{"imoto_fig5", {}, false}};
   // A unit: one fused pass of the nine weights per (level, m), the particles shared by a
   // level's units.
-  s.units = [](const std::vector<int>& levels) {
+  s.units = [](const UnitScope& scope) {
     std::vector<StudyUnit> out;
-    for (int k : levels)
+    for (int k : scope.levels)
       for (double m : imoto_study().orders) out.push_back({k, imoto_h(m, dx_of(k)), {fmt(k), fmt(m)}, "m=" + fmt(m)});
     return out;
   };
@@ -139,19 +139,36 @@ RegisteredStudy thesis_truncation(const ThesisTableSpec& t) {
       {"thesis_table4_1", {"thesis_fig4_3"}}, {"thesis_table4_2", {"thesis_fig4_5"}},
       {"thesis_table4_3", {"thesis_fig4_6", "thesis_fig4_7"}}};
   for (const std::string& f : figures.at(t.program)) s.figures.push_back({f, {"figures/thesis_errors.gp"}, false});
-  s.plan = [&t](UnitPricer& p) {
+  // A unit: one fused pass per (level, h reading, volumes), keyed as the data file's rows.
+  // Without --levels each reading runs at the profile's levels of its own (the quick profile
+  // gives the printed and the scaled h different ones), and the paper profile stops the
+  // uniform volumes at paper_uniform_max_level; with --levels every unit runs at them.
+  s.units = [&t](const UnitScope& scope) {
+    auto levels_of = [&](HReading r) -> const std::vector<int>& {
+      if (scope.levels_given) return scope.levels;
+      return scope.paper ? t.paper_levels : r == HReading::printed ? t.quick_printed : t.quick_scaled;
+    };
     std::vector<int> all;
-    for (HReading r : t.readings) {
-      const auto& lv = p.paper() ? t.paper_levels : (r == HReading::printed ? t.quick_printed : t.quick_scaled);
-      all.insert(all.end(), lv.begin(), lv.end());
-      for (int k : lv)
-        for (const char* vol : {"voronoi", "uniform"})
-          if (!(p.paper() && std::string(vol) == "uniform" && k > t.paper_uniform_max_level))
-            p.add_fused(t.program, h_reading_name(r) + "/" + vol, k, thesis_h(r, t.c, t.p, dx_of(k)), t.mix());
-    }
+    for (HReading r : t.readings) all.insert(all.end(), levels_of(r).begin(), levels_of(r).end());
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
-    for (int k : all) p.add_voronoi(t.program, "voronoi", k);
+    std::vector<StudyUnit> out;
+    for (int k : all)
+      for (HReading r : t.readings)
+        for (Volumes v : {Volumes::voronoi, Volumes::uniform}) {
+          const auto& lv = levels_of(r);
+          const bool trimmed = scope.paper && !scope.levels_given && v == Volumes::uniform && k > t.paper_uniform_max_level;
+          if (trimmed || std::find(lv.begin(), lv.end(), k) == lv.end()) continue;
+          out.push_back({k, thesis_h(r, t.c, t.p, dx_of(k)), {h_reading_name(r), volumes_name(v), fmt(k)},
+                         h_reading_name(r) + "/" + volumes_name(v)});
+        }
+    return out;
+  };
+  // The level's Voronoi volumes are computed once, for its first pass that uses them.
+  s.price = [&t](UnitPricer& p, const StudyUnit& u) {
+    if (u.key[1] == volumes_name(Volumes::voronoi) && !p.priced(t.program, "voronoi", u.level))
+      p.add_voronoi(t.program, "voronoi", u.level);
+    p.add_fused(t.program, u.variant, u.level, u.h, t.mix());
   };
   s.recorded = [](const std::string&, const TsvTable& d, const PlannedPairs&, RecordedUnits& out) {
     const Rows rows{d, out};
@@ -189,9 +206,9 @@ RegisteredStudy poisson() {
   s.figures = {{"thesis_fig4_8", {}, /*per_reading=*/true}};
   // A unit: one Laplacian and CG solve per (level, h rule, weight), the particles shared by
   // a level's units.
-  s.units = [](const std::vector<int>& levels) {
+  s.units = [](const UnitScope& scope) {
     std::vector<StudyUnit> out;
-    for (int k : levels)
+    for (int k : scope.levels)
       for (HRule rule : pde_h_rules())
         for (auto& w : pde_weights())
           out.push_back({k, pde_h(rule, dx_of(k)), {h_rule_name(rule), w, fmt(k)}, h_rule_name(rule) + "/" + w});

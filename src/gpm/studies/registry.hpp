@@ -108,6 +108,15 @@ struct StudyUnit {
   std::string variant;  // the plan's name of it within the level (h10/quartic_polynomial)
 };
 
+// Which units a run asks for: the profile and the levels, --levels where given (then every
+// part of the study runs at them), else the profile's (a study may trim some of its units
+// there, or give its parts levels of their own).
+struct UnitScope {
+  bool paper = false;
+  std::vector<int> levels;
+  bool levels_given = false;
+};
+
 struct RegisteredStudy {
   std::string name;     // the catalog's name (gpm study NAME)
   std::string program;  // the executable that runs it
@@ -122,10 +131,10 @@ struct RegisteredStudy {
   std::vector<StoreFile> store_files;  // what the committed store holds of it
   std::optional<PublishedRates> published;
   std::vector<StudyFigure> figures;
-  // The units at the given levels, in the order the program computes them; with `price`,
-  // which appends one unit's cost to pricer.units(), the plan prices exactly these.  Unset:
-  // `plan` appends the units of the profile (pricer.paper()) itself.
-  std::function<std::vector<StudyUnit>(const std::vector<int>& levels)> units;
+  // The units of a scope, in the order the program computes them; with `price`, which
+  // appends one unit's cost to pricer.units(), the plan prices exactly these (the profile's
+  // levels).  Unset: `plan` appends the units of the profile (pricer.paper()) itself.
+  std::function<std::vector<StudyUnit>(const UnitScope& scope)> units;
   std::function<void(UnitPricer& pricer, const StudyUnit& unit)> price;
   std::function<void(UnitPricer& pricer)> plan;
   // What the data file `file` recorded per (variant, level): seconds and work.

@@ -111,7 +111,7 @@ std::vector<int> StudyRunner::levels() const {
 
 std::vector<StudyUnit> StudyRunner::units() const {
   if (!study_ || !study_->units) throw std::logic_error("StudyRunner::units(): the study lists no units");
-  return study_->units(levels());
+  return study_->units({profile_ == Profile::paper, levels(), levels_given()});
 }
 
 LevelCache& StudyRunner::open(std::vector<std::pair<std::string, std::string>> params, int key_columns) {

@@ -90,7 +90,8 @@ class StudyRunner {
                           int lo = 3, int hi = 13) const;
   // The registered study's levels (--levels, else its profile's).
   std::vector<int> levels() const;
-  // The registered study's units at those levels, in its order (RegisteredStudy::units).
+  // The registered study's units of this run's scope (profile, levels), in its order
+  // (RegisteredStudy::units).
   std::vector<StudyUnit> units() const;
 
   // The data file: rows are reused only where `params` agree with its header; `columns` are

@@ -355,6 +355,11 @@ void UnitPricer::add_voronoi(const std::string& study, const std::string& varian
   out_.push_back(u);
 }
 
+bool UnitPricer::priced(const std::string& study, const std::string& variant, int k) const {
+  return std::any_of(out_.begin(), out_.end(),
+                     [&](const PlanUnit& u) { return u.study == study && u.variant == variant && u.level == k; });
+}
+
 // The Laplacian: assembled (kAssembledBytesPerNonzero) unless over the programs' memory
 // budget, then matrix-free.  `pairs` is the non-zero count (self included = diagonal).
 bool UnitPricer::is_assembled(const PlanUnit& u) const {
@@ -411,7 +416,7 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c, const St
   UnitPricer pricer(profile, c);
   for (auto& study : registry) {
     if (study.units) {  // the program's own units, priced one by one
-      for (const StudyUnit& u : study.units(pricer.paper() ? study.levels.paper : study.levels.quick))
+      for (const StudyUnit& u : study.units({pricer.paper(), pricer.paper() ? study.levels.paper : study.levels.quick, false}))
         study.price(pricer, u);
     } else {
       study.plan(pricer);

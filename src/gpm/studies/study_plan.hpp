@@ -110,6 +110,9 @@ class UnitPricer {
                  const std::string& mix_name);
   // Appends one Voronoi decomposition of the level's particles.
   void add_voronoi(const std::string& study, const std::string& variant, int k);
+  // Whether a unit of `study` and `variant` at level k is priced already (a set-up its
+  // level's units share, priced with the first of them).
+  bool priced(const std::string& study, const std::string& variant, int k) const;
   // The Laplacian of a unit (`pairs` = its non-zeros): assembled unless over the programs'
   // memory budget; one product (assembled or matrix-free); one product with the full matrix
   // where it fit (the storage before the symmetric half); the unit's peak memory.

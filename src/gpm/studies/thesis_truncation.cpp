@@ -14,6 +14,7 @@
 #include "gpm/geometry/voronoi.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/studies/cost_model.hpp"  // predicted_pairs: the progress line's work
+#include "gpm/studies/registry.hpp"
 #include "gpm/studies/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -102,6 +103,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 // Particles of a level and, computed only when a pass needs them, their Voronoi volumes.
 struct LevelData {
+  int level = 0;
   Particles p;
   std::optional<std::vector<double>> voronoi;
   double voronoi_s = 0;
@@ -135,7 +137,8 @@ const std::vector<std::string>& thesis_table_columns() {
 }
 
 int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
-  StudyRunner run(spec.program, spec.summary, "quick or paper (the thesis' levels)");
+  // Its levels, units and columns are the registry's entry (registry.cpp).
+  StudyRunner run(study_registry().study(spec.program), spec.summary);
   Args& args = run.args();
   args.opt("readings", "", "comma-separated h readings: printed, scaled (default: the table's)")
       .opt("volumes", "voronoi,uniform", "comma-separated volume choices: voronoi, uniform")
@@ -143,32 +146,28 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
   run.parse(argc, argv);
   const Profile profile = run.profile();
   const uint64_t seed = run.seed();
-  std::vector<HReading> readings = spec.readings;
+  std::vector<std::string> readings;
+  for (HReading r : spec.readings) readings.push_back(h_reading_name(r));
   if (!args.str("readings").empty()) {
     readings.clear();
-    for (auto& s : args.list("readings")) readings.push_back(parse_h_reading(s));
+    for (auto& s : args.list("readings")) readings.push_back(h_reading_name(parse_h_reading(s)));
   }
-  std::vector<Volumes> volumes;
-  for (auto& s : args.list("volumes")) volumes.push_back(parse_volumes(s));
+  std::vector<std::string> volumes;
+  for (auto& s : args.list("volumes")) volumes.push_back(volumes_name(parse_volumes(s)));
   if (readings.empty() || volumes.empty())
     throw InputError("--readings and --volumes must name at least one choice each");
   int max_level = 99;
   if (!args.str("max-level").empty()) {
     max_level = static_cast<int>(args.integer("max-level", 2, 13));
   }
-  // --levels applies to every reading; by default each reading has the profile's own.
-  const bool given = run.levels_given();
-  const std::vector<int> given_levels = given ? run.levels({}, {}) : std::vector<int>{};
-  auto levels_of = [&](HReading r) {
-    std::vector<int> lv;
-    const auto& src = given ? given_levels
-                      : profile == Profile::paper
-                          ? spec.paper_levels
-                          : (r == HReading::printed ? spec.quick_printed : spec.quick_scaled);
-    for (int k : src)
-      if (k <= max_level) lv.push_back(k);
-    return lv;
+  // The entry's units of this run (each reading at its profile levels, or all at --levels),
+  // less the readings, volumes and levels the options leave out.
+  auto chosen = [](const std::vector<std::string>& list, const std::string& v) {
+    return std::find(list.begin(), list.end(), v) != list.end();
   };
+  std::vector<StudyUnit> units;
+  for (const StudyUnit& u : run.units())
+    if (chosen(readings, u.key[0]) && chosen(volumes, u.key[1]) && u.level <= max_level) units.push_back(u);
 
   // The data file: its parameters decide whether an earlier run's rows are reused.
   const Domain dom;
@@ -195,82 +194,63 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
   cache.table().set("voronoi_s", "wall time of the Voronoi volumes of the level (0: uniform)");
 
   // What is left to do, for the progress line's ETA.
-  std::vector<int> all_levels;
-  for (HReading r : readings)
-    for (int k : levels_of(r)) all_levels.push_back(k);
-  std::sort(all_levels.begin(), all_levels.end());
-  all_levels.erase(std::unique(all_levels.begin(), all_levels.end()), all_levels.end());
-  auto todo = [&](HReading r, Volumes v, int k) {
-    const auto lv = levels_of(r);
-    if (profile == Profile::paper && v == Volumes::uniform && !given &&
-        k > spec.paper_uniform_max_level)
-      return false;
-    return std::find(lv.begin(), lv.end(), k) != lv.end() &&
-           !cache.has({h_reading_name(r), volumes_name(v), fmt(k)}, rows_per_unit);
-  };
   double total = 0;
-  for (int k : all_levels)
-    for (HReading r : readings)
-      for (Volumes v : volumes)
-        if (todo(r, v, k)) {
-          const double dx = std::ldexp(1.0, -k);
-          total += predicted_pairs(dx, thesis_h(r, spec.c, spec.p, dx));
-        }
+  for (const StudyUnit& u : units)
+    if (!cache.has(u.key, rows_per_unit)) total += predicted_pairs(std::ldexp(1.0, -u.level), u.h);
   run.expect(total, "pairs");
 
   std::vector<std::string> functions;
   for (auto& c : thesis_cases()) functions.push_back(c.function);
-  for (int k : all_levels) {
-    const double dx = std::ldexp(1.0, -k);
-    std::unique_ptr<LevelData> level;  // built on the first pass of this level that runs
-    for (HReading r : readings)
-      for (Volumes v : volumes) {
-        if (!todo(r, v, k) || !run.claim_shared()) continue;
-        if (!level) {
-          level = std::make_unique<LevelData>();
-          level->p = jittered_grid(dx, seed, 0.25, dom);
-        }
-        const Particles& p = level->p;
-        const double h = thesis_h(r, spec.c, spec.p, dx);
-        std::vector<double> uniform;
-        double vor_s = 0;
-        const std::vector<double>* V = nullptr;
-        if (v == Volumes::voronoi) {
-          V = &level->voronoi_volumes(dom);
-          vor_s = level->voronoi_s;
-        } else {
-          uniform = uniform_volumes(p, dom);
-          V = &uniform;
-        }
-        const auto t0 = std::chrono::steady_clock::now();
-        // One pass (on a cluster: this rank's share of the targets, then all shares merged;
-        // with --parts: part by part, each saved, so a long pass resumes).
-        const ErrorMaxima maxima = run.shared_pass(
-            h_reading_name(r) + "_" + volumes_name(v) + "_level" + fmt(k),
-            [&](TargetShare s) { return fused_error_maxima(p, *V, h, spec.requests, functions, true, s); });
-        const FusedErrors e = relative_errors(maxima, spec.requests, functions);
-        const double pass_s = seconds_since(t0);
-        const double rss = peak_rss_mib();
-        for (auto& er : e.errors) {
-          std::string label;
-          for (auto& c : thesis_cases())
-            if (c.function == er.function) label = c.label;
-          TsvRow row = run.row();  // thesis_table_columns(), by name
-          row["h_reading"] = h_reading_name(r), row["volumes"] = volumes_name(v), row["level"] = fmt(k);
-          row["weight"] = er.weight, row["operator"] = operator_name(er.op), row["function"] = label;
-          row["dx"] = fmt(dx), row["h"] = fmt(h), row["h_over_H"] = fmt(h / dom.H);
-          row["N"] = fmt(p.size()), row["N_omega"] = fmt(p.count_in_omega()), row["pairs"] = fmt(e.pairs);
-          row["rel_error"] = fmt(er.rel_error), row["time_s"] = fmt(pass_s), row["voronoi_s"] = fmt(vor_s);
-          row["peak_rss_mib"] = fmt(rss);
-          run.add(row);
-        }
-        run.unit_done(predicted_pairs(dx, h),
-                      line_printf("level %d %s/%s h=%.5g%s N=%zu pairs=%.3g pass %.2fs "
-                                  "voronoi %.2fs peak %.0f MiB",
-                                  k, h_reading_name(r).c_str(), volumes_name(v).c_str(), h,
-                                  h > dom.H ? " (h > H)" : "", p.size(), e.pairs, pass_s, vor_s,
-                                  rss));
-      }
+  std::unique_ptr<LevelData> level;  // built on the first pass of a level that runs
+  for (const StudyUnit& u : units) {
+    if (cache.has(u.key, rows_per_unit) || !run.claim_shared()) continue;
+    const int k = u.level;
+    const double dx = std::ldexp(1.0, -k), h = u.h;
+    const HReading r = parse_h_reading(u.key[0]);
+    const Volumes v = parse_volumes(u.key[1]);
+    if (!level || level->level != k) {
+      level = std::make_unique<LevelData>();
+      level->level = k;
+      level->p = jittered_grid(dx, seed, 0.25, dom);
+    }
+    const Particles& p = level->p;
+    std::vector<double> uniform;
+    double vor_s = 0;
+    const std::vector<double>* V = nullptr;
+    if (v == Volumes::voronoi) {
+      V = &level->voronoi_volumes(dom);
+      vor_s = level->voronoi_s;
+    } else {
+      uniform = uniform_volumes(p, dom);
+      V = &uniform;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    // One pass (on a cluster: this rank's share of the targets, then all shares merged;
+    // with --parts: part by part, each saved, so a long pass resumes).
+    const ErrorMaxima maxima = run.shared_pass(
+        h_reading_name(r) + "_" + volumes_name(v) + "_level" + fmt(k),
+        [&](TargetShare s) { return fused_error_maxima(p, *V, h, spec.requests, functions, true, s); });
+    const FusedErrors e = relative_errors(maxima, spec.requests, functions);
+    const double pass_s = seconds_since(t0);
+    const double rss = peak_rss_mib();
+    for (auto& er : e.errors) {
+      std::string label;
+      for (auto& c : thesis_cases())
+        if (c.function == er.function) label = c.label;
+      TsvRow row = run.row();  // thesis_table_columns(), by name
+      row["h_reading"] = h_reading_name(r), row["volumes"] = volumes_name(v), row["level"] = fmt(k);
+      row["weight"] = er.weight, row["operator"] = operator_name(er.op), row["function"] = label;
+      row["dx"] = fmt(dx), row["h"] = fmt(h), row["h_over_H"] = fmt(h / dom.H);
+      row["N"] = fmt(p.size()), row["N_omega"] = fmt(p.count_in_omega()), row["pairs"] = fmt(e.pairs);
+      row["rel_error"] = fmt(er.rel_error), row["time_s"] = fmt(pass_s), row["voronoi_s"] = fmt(vor_s);
+      row["peak_rss_mib"] = fmt(rss);
+      run.add(row);
+    }
+    run.unit_done(predicted_pairs(dx, h),
+                  line_printf("level %d %s/%s h=%.5g%s N=%zu pairs=%.3g pass %.2fs "
+                              "voronoi %.2fs peak %.0f MiB",
+                              k, h_reading_name(r).c_str(), volumes_name(v).c_str(), h,
+                              h > dom.H ? " (h > H)" : "", p.size(), e.pairs, pass_s, vor_s, rss));
   }
   run.finish();
   return 0;
