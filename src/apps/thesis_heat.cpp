@@ -40,6 +40,7 @@
 #include "gpm/studies/heat_tables.hpp"
 #include "gpm/studies/cost_model.hpp"
 #include "gpm/studies/profile.hpp"
+#include "gpm/studies/registry.hpp"
 #include "gpm/studies/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -157,19 +158,19 @@ int body(int argc, char** argv) {
   }
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
-  // Levels: --levels, else the profile's (with the paper profile's trim of the h rule; with
-  // both h rules, the union: a level trimmed for h15 is still run for h10).
-  std::map<HRule, std::vector<int>> rule_levels;
+  // The table's units (registry.cpp): one series (weight, θ) per level and h rule, in the
+  // order (level, h rule, weight, θ); --levels, else the profile's levels with its trim of the
+  // h rule.  Kept: those of the chosen h rules, weights and θ.
+  const UnitScope scope{run.profile() == Profile::paper, run.levels(ts.quick, ts.paper), run.levels_given()};
+  auto chosen = [](const auto& list, const auto& v) { return std::find(list.begin(), list.end(), v) != list.end(); };
+  std::vector<StudyUnit> units;
   std::vector<int> levels;
-  for (HRule hr : h_rules) {
-    rule_levels[hr] = run.levels(ts.quick, heat_levels(ts, true, hr));
-    for (int k : rule_levels[hr])
-      if (std::find(levels.begin(), levels.end(), k) == levels.end()) levels.push_back(k);
-  }
-  std::sort(levels.begin(), levels.end());
-  auto runs_level = [&](HRule hr, int k) {
-    return std::find(rule_levels[hr].begin(), rule_levels[hr].end(), k) != rule_levels[hr].end();
-  };
+  for (const StudyUnit& u : study_registry().study(heat_study_name(ts)).units(scope))
+    if (u.trimmed.empty() && chosen(h_rules, parse_h_rule(u.part)) && chosen(weights, u.key[0]) &&
+        chosen(thetas, parse_number(u.key[1], "theta"))) {
+      units.push_back(u);
+      if (!chosen(levels, u.level)) levels.push_back(u.level);
+    }
   require_pde_levels_fit_memory(levels, h_rules, storage, max_bytes);
   const std::string out = run.out(), rates_input = a.str("rates-input");
   if (readings.size() > 1 && out.find("{reading}") == std::string::npos)
@@ -185,99 +186,110 @@ int body(int argc, char** argv) {
   for (auto& r : readings) files.push_back({reading_path(out, r), heat_params(ts, run, hs, guarded, r)});
   const std::vector<LevelCache*> caches = run.open_files(files, heat_columns(), 3);
   const Domain dom;
-  for (int k : levels) {
+  Particles p;  // of the level being run, with the volumes of each choice
+  std::map<PdeVolumes, std::vector<double>> V;
+  int p_level = -1;
+  std::vector<std::pair<int, HRule>> checked;  // (level, h rule) whose connectivity is checked
+  for (std::size_t g = 0, next = 0; g < units.size(); g = next) {
+    // A group: the series of one (level, h rule, weight), which share one Laplacian.
+    const StudyUnit& first = units[g];
+    const int k = first.level;
+    const HRule h_rule = parse_h_rule(first.part);
+    const std::string wname = first.key[0];
+    std::vector<double> group_thetas;
+    for (next = g; next < units.size() && units[next].level == k && units[next].part == first.part &&
+                   units[next].key[0] == wname;
+         ++next)
+      group_thetas.push_back(parse_number(units[next].key[1], "theta"));
     // The level: particles and the volumes of each choice.
     const double dx = std::ldexp(1.0, -k);
-    const Particles p = jittered_grid(dx, run.seed());
-    std::map<PdeVolumes, std::vector<double>> V;
-    for (PdeVolumes vc : volume_choices) V[vc] = pde_volumes(vc, p, dx, dom);
-    for (HRule h_rule : h_rules) {
-      if (!runs_level(h_rule, k)) continue;
-      // h and the nominal step Δt₀ of the table.
-      const double h = pde_h(h_rule, dx);
-      const double dt0 = ts.c * std::pow(h, ts.p);
-      bool checked = false;
-      for (const auto& wname : weights) {
-        // The series still to do of this weight: (reading, θ), every reading of this h rule.
-        // They share one Laplacian (on a cluster they go to one rank together).
-        struct Todo {
-          std::size_t reading;
-          double theta;
-        };
-        std::vector<Todo> todo;
-        double work = 0;
-        for (std::size_t r = 0; r < readings.size(); ++r) {
-          if (readings[r].h_rule != h_rule) continue;
-          for (double th : thetas)
-            if (!caches[r]->has({wname, fmt(th), fmt(k)}))
-              todo.push_back({r, th}), work += heat_unit_work(dx, h, dt0, hs.T, th);
+    if (p_level != k) {
+      p = jittered_grid(dx, run.seed());
+      for (PdeVolumes vc : volume_choices) V[vc] = pde_volumes(vc, p, dx, dom);
+      p_level = k;
+    }
+    // h and the nominal step Δt₀ of the table.
+    const double h = first.h;
+    const double dt0 = ts.c * std::pow(h, ts.p);
+    // The series still to do of this weight: (reading, θ), every reading of this h rule.
+    // They share one Laplacian (on a cluster they go to one rank together).
+    struct Todo {
+      std::size_t reading;
+      double theta;
+    };
+    std::vector<Todo> todo;
+    double work = 0;
+    for (std::size_t r = 0; r < readings.size(); ++r) {
+      if (readings[r].h_rule != h_rule) continue;
+      for (double th : group_thetas)
+        if (!caches[r]->has({wname, fmt(th), fmt(k)}))
+          todo.push_back({r, th}), work += heat_unit_work(dx, h, dt0, hs.T, th);
+    }
+    if (todo.empty() || !run.claim_group(static_cast<int>(todo.size()), work)) continue;
+    if (!chosen(checked, std::make_pair(k, h_rule)))
+      require_h_connectivity(p, h), checked.push_back({k, h_rule});
+    // One Laplacian per (level, h rule, weight), built with the first series' volumes;
+    // a series of other volumes runs on it through volumes_for (the stored entries do not
+    // depend on them) where it is assembled as the half, else on a Laplacian of its own.
+    // Every series' numbers are those it gives alone.  (The readings' order keeps each
+    // volumes choice's series together, so the units finish in the order claimed.)
+    const WeightFunction& w = weight(wname);
+    std::vector<bool> done(todo.size(), false);
+    while (std::find(done.begin(), done.end(), false) != done.end()) {
+      const PdeVolumes own =
+          readings[todo[std::find(done.begin(), done.end(), false) - done.begin()].reading].volumes;
+      const DiscreteLaplacian L(p, V[own], w, h, storage, max_bytes);
+      const bool shares = L.assembled() && storage != LaplacianStorage::full;
+      std::map<PdeVolumes, DiscreteLaplacian::Volumes> other;
+      std::vector<std::size_t> here;
+      std::vector<HeatSetting> settings;
+      for (std::size_t u = 0; u < todo.size(); ++u) {
+        const PdeSetup& r = readings[todo[u].reading];
+        if (done[u] || (r.volumes != own && !shares)) continue;
+        HeatSetting s = hs;
+        s.theta = todo[u].theta;
+        s.dt_nominal = dt0;
+        s.fit_T = r.dt_rule == DtRule::fit;
+        if (r.volumes != own) {
+          if (!other.count(r.volumes)) other.emplace(r.volumes, L.volumes_for(p, w, V[r.volumes]));
+          s.volumes = &other.at(r.volumes);
         }
-        if (todo.empty() || !run.claim_group(static_cast<int>(todo.size()), work)) continue;
-        if (!checked) require_h_connectivity(p, h), checked = true;
-        // One Laplacian per (level, h rule, weight), built with the first series' volumes;
-        // a series of other volumes runs on it through volumes_for (the stored entries do not
-        // depend on them) where it is assembled as the half, else on a Laplacian of its own.
-        // Every series' numbers are those it gives alone.  (The readings' order keeps each
-        // volumes choice's series together, so the units finish in the order claimed.)
-        const WeightFunction& w = weight(wname);
-        std::vector<bool> done(todo.size(), false);
-        while (std::find(done.begin(), done.end(), false) != done.end()) {
-          const PdeVolumes own =
-              readings[todo[std::find(done.begin(), done.end(), false) - done.begin()].reading].volumes;
-          const DiscreteLaplacian L(p, V[own], w, h, storage, max_bytes);
-          const bool shares = L.assembled() && storage != LaplacianStorage::full;
-          std::map<PdeVolumes, DiscreteLaplacian::Volumes> other;
-          std::vector<std::size_t> here;
-          std::vector<HeatSetting> settings;
-          for (std::size_t u = 0; u < todo.size(); ++u) {
-            const PdeSetup& r = readings[todo[u].reading];
-            if (done[u] || (r.volumes != own && !shares)) continue;
-            HeatSetting s = hs;
-            s.theta = todo[u].theta;
-            s.dt_nominal = dt0;
-            s.fit_T = r.dt_rule == DtRule::fit;
-            if (r.volumes != own) {
-              if (!other.count(r.volumes)) other.emplace(r.volumes, L.volumes_for(p, w, V[r.volumes]));
-              s.volumes = &other.at(r.volumes);
-            }
-            here.push_back(u), settings.push_back(s), done[u] = true;
-          }
-          const std::vector<HeatResult> rs = solve_heat_block(p, L, settings);
-          for (std::size_t i = 0; i < here.size(); ++i) {
-            const Todo& t = todo[here[i]];
-            const HeatResult& res = rs[i];
-            const PdeSetup& r = readings[t.reading];
-            // The row, by column name (heat_columns()); a blown-up series has no error.
-            const std::string na = "NA";
-            TsvRow row = run.row();
-            row["weight"] = wname, row["theta"] = fmt(t.theta), row["level"] = fmt(k);
-            row["dx"] = fmt(dx), row["h"] = fmt(h), row["N"] = fmt(p.size());
-            row["N_omega"] = fmt(L.n_unknowns()), row["storage"] = L.assembled() ? "assembled" : "matrix_free";
-            row["K"] = fmt(static_cast<long long>(res.K)), row["dt"] = fmt(res.dt);
-            row["rel_error"] = res.blew_up ? na : fmt(res.rel_error);
-            row["rel_error_max"] = res.blew_up ? na : fmt(res.rel_error_max);
-            row["growth_max"] = fmt(res.growth_max), row["blew_up"] = res.blew_up ? "yes" : "no";
-            row["blowup_step"] = res.blew_up ? fmt(static_cast<long long>(res.blowup_step)) : na;
-            row["growth"] = res.blew_up ? fmt(res.growth) : na;
-            row["amplification"] = res.blew_up ? fmt(res.amplification) : na;
-            row["steps_done"] = fmt(static_cast<long long>(res.steps_done));
-            row["cg_mean_iterations"] = fmt(res.mean_cg_iterations);
-            row["max_rel_residual"] = fmt(res.max_rel_residual);
-            row["s_per_step"] = fmt(res.seconds_per_step), row["seconds"] = fmt(res.seconds);
-            run.add(t.reading, row);
-            const std::string head = line_printf(
-                "%s%s%s: %-28s theta=%-3g dx=2^-%d h=%.4f K=%ld ", ts.table.c_str(),
-                readings.size() > 1 ? " " : "", readings.size() > 1 ? r.name().c_str() : "",
-                wname.c_str(), t.theta, k, h, res.K);
-            run.unit_done(0, head + (res.blew_up
-                ? line_printf("BLOW-UP at step %ld: ||U||/||U0|| = %.3g (x%.3g in the last step)  %.2f s",
-                              res.blowup_step, res.growth, res.amplification, res.seconds)
-                : line_printf("err=%.4e CG %.1f it/step  %.3g s/step  %.2f s", res.rel_error,
-                              res.mean_cg_iterations, res.seconds_per_step, res.seconds)));
-            if (caches[t.reading]->writes() && !rates_input.empty())
-              write_rates_input(*caches[t.reading], reading_path(rates_input, r));
-          }
-        }
+        here.push_back(u), settings.push_back(s), done[u] = true;
+      }
+      const std::vector<HeatResult> rs = solve_heat_block(p, L, settings);
+      for (std::size_t i = 0; i < here.size(); ++i) {
+        const Todo& t = todo[here[i]];
+        const HeatResult& res = rs[i];
+        const PdeSetup& r = readings[t.reading];
+        // The row, by column name (heat_columns()); a blown-up series has no error.
+        const std::string na = "NA";
+        TsvRow row = run.row();
+        row["weight"] = wname, row["theta"] = fmt(t.theta), row["level"] = fmt(k);
+        row["dx"] = fmt(dx), row["h"] = fmt(h), row["N"] = fmt(p.size());
+        row["N_omega"] = fmt(L.n_unknowns()), row["storage"] = L.assembled() ? "assembled" : "matrix_free";
+        row["K"] = fmt(static_cast<long long>(res.K)), row["dt"] = fmt(res.dt);
+        row["rel_error"] = res.blew_up ? na : fmt(res.rel_error);
+        row["rel_error_max"] = res.blew_up ? na : fmt(res.rel_error_max);
+        row["growth_max"] = fmt(res.growth_max), row["blew_up"] = res.blew_up ? "yes" : "no";
+        row["blowup_step"] = res.blew_up ? fmt(static_cast<long long>(res.blowup_step)) : na;
+        row["growth"] = res.blew_up ? fmt(res.growth) : na;
+        row["amplification"] = res.blew_up ? fmt(res.amplification) : na;
+        row["steps_done"] = fmt(static_cast<long long>(res.steps_done));
+        row["cg_mean_iterations"] = fmt(res.mean_cg_iterations);
+        row["max_rel_residual"] = fmt(res.max_rel_residual);
+        row["s_per_step"] = fmt(res.seconds_per_step), row["seconds"] = fmt(res.seconds);
+        run.add(t.reading, row);
+        const std::string head = line_printf(
+            "%s%s%s: %-28s theta=%-3g dx=2^-%d h=%.4f K=%ld ", ts.table.c_str(),
+            readings.size() > 1 ? " " : "", readings.size() > 1 ? r.name().c_str() : "",
+            wname.c_str(), t.theta, k, h, res.K);
+        run.unit_done(0, head + (res.blew_up
+            ? line_printf("BLOW-UP at step %ld: ||U||/||U0|| = %.3g (x%.3g in the last step)  %.2f s",
+                          res.blowup_step, res.growth, res.amplification, res.seconds)
+            : line_printf("err=%.4e CG %.1f it/step  %.3g s/step  %.2f s", res.rel_error,
+                          res.mean_cg_iterations, res.seconds_per_step, res.seconds)));
+        if (caches[t.reading]->writes() && !rates_input.empty())
+          write_rates_input(*caches[t.reading], reading_path(rates_input, r));
       }
     }
   }

@@ -1,5 +1,7 @@
 #include "gpm/studies/heat_tables.hpp"
 
+#include <algorithm>
+
 #include "gpm/error.hpp"
 
 namespace gpm {
@@ -23,6 +25,12 @@ const HeatTable& heat_table(const std::string& table) {
   for (auto& t : heat_tables())
     if (t.table == table) return t;
   throw InputError("unknown --table '" + table + "'; valid: 4.5, 4.6, 4.7");
+}
+
+std::string heat_study_name(const HeatTable& t) {
+  std::string name = "thesis_table" + t.table;
+  std::replace(name.begin(), name.end(), '.', '_');
+  return name;
 }
 
 std::vector<int> heat_levels(const HeatTable& t, bool paper, HRule h_rule) {

@@ -34,6 +34,8 @@ struct HeatTable {
 
 const std::vector<HeatTable>& heat_tables();
 const HeatTable& heat_table(const std::string& table);  // InputError naming the valid ones
+// The registry's name of a table's study (the data file of its printed reading): thesis_table4_6.
+std::string heat_study_name(const HeatTable& t);
 
 // The levels of a table for a profile and h rule (the paper profile's h15 trim applied).
 std::vector<int> heat_levels(const HeatTable& t, bool paper, HRule h_rule);

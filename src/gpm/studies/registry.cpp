@@ -238,9 +238,7 @@ RegisteredStudy poisson() {
 
 // The data file of a heat table under an h rule (the catalog's two readings).
 std::string heat_file(const HeatTable& hp, HRule rule) {
-  std::string name = "thesis_table" + hp.table + (rule == HRule::h15 ? "_h15" : "");
-  std::replace(name.begin(), name.end(), '.', '_');
-  return name;
+  return heat_study_name(hp) + (rule == HRule::h15 ? "_h15" : "");
 }
 
 // The readings of a heat table the store holds (a reading's name, heat_tables.hpp), with the
@@ -306,42 +304,52 @@ RegisteredStudy heat(const HeatTable& hp) {
   // The document's figure of the table (Figures 4.9–4.11), drawn in each reading.
   const std::map<std::string, std::string> figure = {{"4.5", "thesis_fig4_9"}, {"4.6", "thesis_fig4_10"}, {"4.7", "thesis_fig4_11"}};
   s.figures = {{figure.at(hp.table), {"figures/thesis_heat.gp"}, /*per_reading=*/true}};
-  s.plan = [&hp](UnitPricer& p) {
-    for (HRule rule : pde_h_rules()) {
-      const std::string study = heat_file(hp, rule);
-      const std::vector<int> run = heat_levels(hp, p.paper(), rule);
-      for (int k : p.paper() ? hp.paper : hp.quick)
-        for (auto& w : pde_weights()) {
-          const std::string trimmed =
-              std::find(run.begin(), run.end(), k) == run.end()
-                  ? "h15 reading stops at 2^-" + fmt(hp.paper_h15_max_level) + " (Table 4.4 settles h10)"
-                  : "";
-          const double h = pde_h(rule, dx_of(k));
-          PlanUnit a = p.base(study, "setup/" + w, k, h);
-          const bool as = p.is_assembled(a);
-          a.method = as ? "assembled" : "matrix_free";
-          a.time_s = p.laplacian_setup_s(a, as);
-          a.time_before_s = a.time_s;
-          a.mem_mib = p.pde_mib(a, as);
-          a.recorded = false;
-          a.basis = "Laplacian set-up (not in the rows' seconds)";
-          a.trimmed = trimmed;
-          p.units().push_back(a);
-          const double K = p.heat_steps(hp.table, h);
+  // A unit: one series (weight, θ) at a level under an h rule (StudyUnit::part: in a make run
+  // each rule writes its own data file), keyed as the data file's rows.  The series of one
+  // (level, h rule, weight) share a Laplacian, set up once for the first of them.  The
+  // paper profile trims h15 above paper_h15_max_level (heat_levels): those units are
+  // priced and marked, not run.
+  s.units = [&hp](const UnitScope& scope) {
+    std::vector<StudyUnit> out;
+    for (int k : scope.levels)
+      for (HRule rule : pde_h_rules()) {
+        const std::vector<int> run = heat_levels(hp, true, rule);
+        const bool trimmed = scope.paper && !scope.levels_given && std::find(run.begin(), run.end(), k) == run.end();
+        for (auto& w : pde_weights())
           for (double th : hp.thetas) {
-            PlanUnit u = p.base(study, w + "/theta=" + fmt(th), k, h);
-            const double its = p.heat_cg_its(hp.table, rule, w, th, h);
-            u.products = K * (1 + its);
-            u.method = a.method;
-            u.time_s = u.products * p.product_s(u, as);
-            u.time_before_s = u.products * p.product_before_s(u);
-            u.mem_mib = a.mem_mib;
-            u.basis = "K=" + fmt(K) + " steps, " + fmt(std::round(its * 10) / 10) + " CG its/step";
-            u.trimmed = trimmed;
-            p.units().push_back(u);
+            StudyUnit u{k, pde_h(rule, dx_of(k)), {w, fmt(th), fmt(k)}, w + "/theta=" + fmt(th)};
+            u.part = h_rule_name(rule);
+            if (trimmed) u.trimmed = "h15 reading stops at 2^-" + fmt(hp.paper_h15_max_level) + " (Table 4.4 settles h10)";
+            out.push_back(std::move(u));
           }
-        }
-    }
+      }
+    return out;
+  };
+  s.price = [&hp](UnitPricer& p, const StudyUnit& su) {
+    const HRule rule = parse_h_rule(su.part);
+    const std::string study = heat_file(hp, rule), w = su.key[0];
+    const int k = su.level;
+    PlanUnit a = p.base(study, "setup/" + w, k, su.h);
+    const bool as = p.is_assembled(a);
+    a.method = as ? "assembled" : "matrix_free";
+    a.time_s = p.laplacian_setup_s(a, as);
+    a.time_before_s = a.time_s;
+    a.mem_mib = p.pde_mib(a, as);
+    a.recorded = false;
+    a.basis = "Laplacian set-up (not in the rows' seconds)";
+    a.trimmed = su.trimmed;
+    if (!p.priced(study, a.variant, k)) p.units().push_back(a);
+    const double th = parse_number(su.key[1], "theta"), K = p.heat_steps(hp.table, su.h);
+    PlanUnit u = p.base(study, su.variant, k, su.h);
+    const double its = p.heat_cg_its(hp.table, rule, w, th, su.h);
+    u.products = K * (1 + its);
+    u.method = a.method;
+    u.time_s = u.products * p.product_s(u, as);
+    u.time_before_s = u.products * p.product_before_s(u);
+    u.mem_mib = a.mem_mib;
+    u.basis = "K=" + fmt(K) + " steps, " + fmt(std::round(its * 10) / 10) + " CG its/step";
+    u.trimmed = su.trimmed;
+    p.units().push_back(u);
   };
   // A heat row does not record its non-zeros: its work is the steps done × products per
   // step (from its mean CG iterations) × the plan's non-zeros.

@@ -106,6 +106,12 @@ struct StudyUnit {
   double h = 0;
   std::vector<std::string> key;
   std::string variant;  // the plan's name of it within the level (h10/quartic_polynomial)
+  // The part of the study it belongs to where a make run writes one data file per part
+  // (heat: the h rule), else empty.
+  std::string part = "";
+  // Why the profile skips it (a trim of the catalog: priced by the plan, never run); empty:
+  // it runs.
+  std::string trimmed = "";
 };
 
 // Which units a run asks for: the profile and the levels, --levels where given (then every

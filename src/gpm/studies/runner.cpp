@@ -111,7 +111,10 @@ std::vector<int> StudyRunner::levels() const {
 
 std::vector<StudyUnit> StudyRunner::units() const {
   if (!study_ || !study_->units) throw std::logic_error("StudyRunner::units(): the study lists no units");
-  return study_->units({profile_ == Profile::paper, levels(), levels_given()});
+  std::vector<StudyUnit> out;
+  for (StudyUnit& u : study_->units({profile_ == Profile::paper, levels(), levels_given()}))
+    if (u.trimmed.empty()) out.push_back(std::move(u));
+  return out;
 }
 
 LevelCache& StudyRunner::open(std::vector<std::pair<std::string, std::string>> params, int key_columns) {

@@ -91,7 +91,7 @@ class StudyRunner {
   // The registered study's levels (--levels, else its profile's).
   std::vector<int> levels() const;
   // The registered study's units of this run's scope (profile, levels), in its order
-  // (RegisteredStudy::units).
+  // (RegisteredStudy::units), less those the profile trims.
   std::vector<StudyUnit> units() const;
 
   // The data file: rows are reused only where `params` agree with its header; `columns` are
