@@ -24,6 +24,7 @@
 #include "gpm/io/tsv.hpp"
 #include "gpm/studies/catalog.hpp"
 #include "gpm/studies/profile.hpp"
+#include "gpm/studies/registry.hpp"
 #include "gpm/studies/runner.hpp"
 
 using namespace gpm;
@@ -70,15 +71,14 @@ Row measure(const Particles& p, const Domain& dom, double dx, bool rss_reset) {
 }
 
 int body(int argc, char** argv) {
-  StudyRunner run("core_voronoi",
+  // Its levels and units are the registry's entry (registry.cpp): a unit is a level.
+  StudyRunner run(study_registry().study("core_voronoi"),
                   "Voronoi cells of Omega_H for the plain and the jittered grid: area sum, covering\n"
-                  "radius r_c vs the grid formula and the documents' claims, time and peak memory.",
-                  kStudy.levels.help() + " (level 12 needs ~4 GB)",
-                  StudyRunner::Kind::whole_table);
+                  "radius r_c vs the grid formula and the documents' claims, time and peak memory\n"
+                  "(level 12 needs ~4 GB).");
   Args& args = run.args();
   args.opt("seeds", kStudy.seeds_option(), "comma-separated jitter seeds (non-negative integers)");
   run.parse(argc, argv);
-  const std::vector<int> levels = run.levels(kStudy.levels.quick, kStudy.levels.paper, 2, 13);
   const std::vector<uint64_t> seeds = args.seeds("seeds");
 
   const Domain dom;
@@ -101,7 +101,8 @@ int body(int argc, char** argv) {
   add_provenance(t);
   t.columns = kStudy.columns;
 
-  for (int level : levels) {
+  for (const StudyUnit& unit : run.units()) {
+    const int level = unit.level;
     const double dx = std::ldexp(1.0, -level);
     const double g_lo = grid_first(dx, dom) * dx - dom.lo();
     const double g_hi = dom.hi() - grid_last(dx, dom) * dx;

@@ -101,3 +101,46 @@ TEST_CASE("registry: a set-up reading's store file", "[unit][registry]") {
   CHECK_THROWS_AS(r.study("thesis_table4_5").store_file_of("h15_exact"), InputError);  // not stored
   CHECK_THROWS_AS(r.study("thesis_table4_1").store_file_of("h10"), InputError);        // no readings
 }
+
+TEST_CASE("registry: a study without its units or their price is refused", "[unit][registry]") {
+  StudyRegistry r;
+  RegisteredStudy s;
+  s.name = s.program = "unpriced";
+  s.units = [](const UnitScope& scope) {
+    std::vector<StudyUnit> out;
+    for (int k : scope.levels) out.push_back({k, 0, {fmt(k)}, "level"});
+    return out;
+  };
+  CHECK_THROWS_AS(r.add(s), InputError);  // units, no price
+  s.price = [](UnitPricer&, const StudyUnit&) {};
+  s.units = nullptr;
+  CHECK_THROWS_AS(r.add(s), InputError);  // price, no units
+  s.units = [](const UnitScope&) { return std::vector<StudyUnit>{}; };
+  r.add(s);
+  CHECK(r.studies().size() == 1);
+}
+
+TEST_CASE("registry: the heat tables' units, their trim and the plan's price of them", "[unit][registry]") {
+  const RegisteredStudy& s = study_registry().study("thesis_table4_5");
+  const HeatTable& t = heat_table("4.5");
+  // The paper profile lists the h15 units above the trim, marked; a run skips them.
+  const auto units = s.units({true, t.paper, false});
+  std::size_t trimmed = 0;
+  for (auto& u : units) {
+    const bool over = u.part == "h15" && u.level > t.paper_h15_max_level;
+    CHECK(u.trimmed.empty() == !over);
+    trimmed += over;
+  }
+  CHECK(units.size() == t.paper.size() * 2 * pde_weights().size() * t.thetas.size());
+  CHECK(trimmed > 0);
+  // With --levels nothing is trimmed.
+  for (auto& u : s.units({true, t.paper, true})) CHECK(u.trimmed.empty());
+  // The plan: a set-up per (level, h rule, weight), then one unit per series.
+  const Calibration c = made_up_calibration();  // the pricer keeps a reference
+  UnitPricer p(Profile::paper, c);
+  for (auto& u : units) s.price(p, u);
+  std::size_t setups = 0;
+  for (auto& u : p.units()) setups += u.variant.rfind("setup/", 0) == 0;
+  CHECK(setups == t.paper.size() * 2 * pde_weights().size());
+  CHECK(p.units().size() == setups + units.size());
+}

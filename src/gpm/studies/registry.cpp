@@ -374,11 +374,16 @@ RegisteredStudy voronoi() {
                                voronoi_study().columns, {});
   s.level_cache = false;  // one table rewritten after each level (StudyRunner::Kind::whole_table)
   s.files = {{"core_voronoi", {}, {}, {}}};
-  s.plan = [](UnitPricer& p) {
-    for (int k : p.paper() ? voronoi_study().levels.paper : voronoi_study().levels.quick) {
-      p.add_voronoi("core_voronoi", "grid", k);
-      for (int seed : voronoi_study().seeds) p.add_voronoi("core_voronoi", "jittered/seed=" + fmt(seed), k);
-    }
+  // A unit: a level (its table is written whole after each), the plain grid and the jittered
+  // grid of every seed (--seeds; the plan prices the default ones, as a make run uses them).
+  s.units = [](const UnitScope& scope) {
+    std::vector<StudyUnit> out;
+    for (int k : scope.levels) out.push_back({k, 0, {fmt(k)}, "level"});
+    return out;
+  };
+  s.price = [](UnitPricer& p, const StudyUnit& u) {
+    p.add_voronoi("core_voronoi", "grid", u.level);
+    for (int seed : voronoi_study().seeds) p.add_voronoi("core_voronoi", "jittered/seed=" + fmt(seed), u.level);
   };
   s.recorded = [](const std::string&, const TsvTable& d, const PlannedPairs&, RecordedUnits& out) {
     const Rows rows{d, out};
@@ -417,6 +422,7 @@ std::vector<std::string> RegisteredStudy::command_args(const std::vector<std::st
 }
 
 void StudyRegistry::add(RegisteredStudy s) {
+  if (!s.units || !s.price) throw InputError("study '" + s.name + "' lists no units or no price for them");
   for (auto& o : studies_) {
     if (o.name == s.name) throw InputError("study '" + s.name + "' is registered twice");
     for (auto& f : s.files)

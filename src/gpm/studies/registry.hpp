@@ -137,12 +137,11 @@ struct RegisteredStudy {
   std::vector<StoreFile> store_files;  // what the committed store holds of it
   std::optional<PublishedRates> published;
   std::vector<StudyFigure> figures;
-  // The units of a scope, in the order the program computes them; with `price`, which
-  // appends one unit's cost to pricer.units(), the plan prices exactly these (the profile's
-  // levels).  Unset: `plan` appends the units of the profile (pricer.paper()) itself.
+  // The units of a scope, in the order the program computes them (StudyRunner::units()), and
+  // `price`, which appends one unit's cost to pricer.units(): the plan prices exactly the
+  // units of the profile's levels (plan_units).  Both required (StudyRegistry::add).
   std::function<std::vector<StudyUnit>(const UnitScope& scope)> units;
   std::function<void(UnitPricer& pricer, const StudyUnit& unit)> price;
-  std::function<void(UnitPricer& pricer)> plan;
   // What the data file `file` recorded per (variant, level): seconds and work.
   std::function<void(const std::string& file, const TsvTable& data, const PlannedPairs& planned,
                      RecordedUnits& out)>
@@ -161,7 +160,8 @@ struct RegisteredStudy {
 
 class StudyRegistry {
  public:
-  // A study added last; InputError if its name or one of its data files is taken.
+  // A study added last; InputError if its name or one of its data files is taken, or it
+  // lacks its units or their price.
   void add(RegisteredStudy s);
   const std::vector<RegisteredStudy>& studies() const { return studies_; }
   auto begin() const { return studies_.begin(); }

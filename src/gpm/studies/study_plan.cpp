@@ -415,12 +415,9 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
 std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c, const StudyRegistry& registry) {
   UnitPricer pricer(profile, c);
   for (auto& study : registry) {
-    if (study.units) {  // the program's own units, priced one by one
-      for (const StudyUnit& u : study.units({pricer.paper(), pricer.paper() ? study.levels.paper : study.levels.quick, false}))
-        study.price(pricer, u);
-    } else {
-      study.plan(pricer);
-    }
+    // The program's own units, priced one by one.
+    for (const StudyUnit& u : study.units({pricer.paper(), pricer.paper() ? study.levels.paper : study.levels.quick, false}))
+      study.price(pricer, u);
   }
   return pricer.units();
 }
