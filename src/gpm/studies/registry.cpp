@@ -398,6 +398,13 @@ RegisteredStudy voronoi() {
 
 }  // namespace
 
+std::vector<std::string> PublishedRates::rate_key() const {
+  std::vector<std::string> out;
+  for (auto& k : key)
+    if (k != split_by) out.push_back(k);
+  return out;
+}
+
 std::vector<std::string> RegisteredStudy::header() const {
   std::vector<std::string> h = columns;
   if (level_cache)

@@ -95,6 +95,9 @@ struct PublishedRates {
   // column and its value.  On the identified board they identify the reading and are not
   // judged (setup_identification.hpp).  Empty: none.
   std::pair<std::string, std::string> fingerprint = {};
+
+  // The columns of a rate's key, in order: `key` less split_by.
+  std::vector<std::string> rate_key() const;
 };
 
 // One unit of a study: what its program computes at once and caches, the rows keyed by

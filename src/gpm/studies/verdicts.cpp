@@ -216,8 +216,7 @@ std::vector<StoreRate> store_rates_of(const std::string& table, const std::strin
   for (std::size_t i = 0; i < joined.rows.size(); ++i) {
     StoreRate r;
     r.table = table, r.slice = slice, r.setup = setup;
-    for (auto& k : keys)
-      if (k != split_by) r.key += (r.key.empty() ? "" : " ") + joined.text(i, k);
+    for (auto& k : keys) r.key += (r.key.empty() ? "" : " ") + joined.text(i, k);
     if (!split_by.empty()) r.slice = joined.text(i, split_by) + (slice == "all" ? "" : "_" + slice);
     r.published = joined.text(i, "published");
     r.reproduced = joined.text(i, "reproduced");
@@ -287,9 +286,7 @@ bool is_fingerprint(const StoreRate& r, const StudyRegistry& registry) {
   for (auto& s : registry) {
     if (!s.published || s.published->table != r.table || s.published->fingerprint.first.empty()) continue;
     const auto& [column, value] = s.published->fingerprint;
-    std::vector<std::string> key;
-    for (auto& k : s.published->key)
-      if (k != s.published->split_by) key.push_back(k);
+    const std::vector<std::string> key = s.published->rate_key();
     std::istringstream cells(r.key);  // the key's cells, space-separated, in key order
     std::string cell;
     for (std::size_t k = 0; k < key.size() && cells >> cell; ++k)
@@ -474,7 +471,7 @@ std::vector<StoreRate> store_rates(const std::string& store, const std::string& 
       join_rates(p.finite_series ? finite_series(slice.data) : slice.data, pub, join, joined);
       // A slice's name stays unique: a second one would replace the first, as a file would.
       slices[p.table + "." + slice.slice + ".tsv"] =
-          store_rates_of(p.table, slice.slice, joined, p.key, pub.column("theoretical") >= 0, p.split_by);
+          store_rates_of(p.table, slice.slice, joined, p.rate_key(), pub.column("theoretical") >= 0, p.split_by);
     }
   }
   std::vector<StoreRate> out;

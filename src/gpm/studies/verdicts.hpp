@@ -126,11 +126,11 @@ using CheckedReasons = std::map<RateKey, CheckedReason>;
 
 // The setup of a slice of `table` (see above).
 std::string slice_setup(const std::string& table, const std::string& slice);
-// The rows of `joined` (join_rates' output for `table`'s slice `slice`, keyed by `keys`) as
-// StoreRates; `claims_theoretical`: the published file has a theoretical column.  With
-// `split_by` (PublishedRates::split_by: Table 4.4 prints one rate per weight for both readings
-// of h), a row's slice is led by that key column's value (h10, h15_seed2, h10_cell, …) and
-// its key is the other columns.
+// The rows of `joined` (join_rates' output for `table`'s slice `slice`) as StoreRates keyed
+// by the columns `keys` (PublishedRates::rate_key()); `claims_theoretical`: the published
+// file has a theoretical column.  With `split_by` (PublishedRates::split_by: Table 4.4 prints
+// one rate per weight for both readings of h), a row's slice is led by that column's value
+// (h10, h15_seed2, h10_cell, …).
 std::vector<StoreRate> store_rates_of(const std::string& table, const std::string& slice,
                                       const TsvTable& joined, const std::vector<std::string>& keys,
                                       bool claims_theoretical, const std::string& split_by = "");
