@@ -15,8 +15,11 @@
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -euo pipefail
 BUILD=${BUILD:-build-mpi}
-studies=(imoto_fig5_table1 thesis_table4_1 thesis_table4_2 thesis_table4_3 thesis_table4_4
-         thesis_table4_5 thesis_table4_6 thesis_table4_7)
+# The registry's studies in its order (gpm study --list, column "study"), core_voronoi aside.
+mapfile -t studies < <("$BUILD/gpm" study --list | awk -F'\t' '
+  /^#/ { next }
+  !seen { for (i = 1; i <= NF; i++) col[$i] = i; seen = 1; next }
+  $col["study"] != "core_voronoi" { print $col["study"] }')
 name=${studies[${SLURM_ARRAY_TASK_ID:-0}]}
 export OMP_NUM_THREADS=${SLURM_CPUS_PER_TASK:-1}
 echo "study $name on ${SLURM_NTASKS:-1} ranks x $OMP_NUM_THREADS threads, $(date -u +%FT%TZ)"
