@@ -48,19 +48,21 @@ fi
 step "bench_cuda (fp64 peak, the studies' passes against the CPU)"
 timeout 300 "$BUILD/bench_cuda" --out "$DEST/cuda.tsv" 2>&1 | tee "$LOGS/device_bench.log" | tail -12
 
-# The catalog studies and their store files (the h10 reading and the documents' volumes:
-# the files the scoreboard counts first).  PDE studies run their Laplacian matrix-free, so
-# that every product is on the device.
-studies=(
-  "imoto_fig5_table1.tsv imoto_fig5_table1"
-  "thesis_table4_1.tsv thesis_table4_1"
-  "thesis_table4_2.tsv thesis_table4_2"
-  "thesis_table4_3.tsv thesis_table4_3"
-  "thesis_table4_4.tsv thesis_table4_4 --storage matrix_free"
-  "thesis_table4_5.tsv thesis_heat --table 4.5 --storage matrix_free"
-  "thesis_table4_6.tsv thesis_heat --table 4.6 --storage matrix_free"
-  "thesis_table4_7.tsv thesis_heat --table 4.7 --storage matrix_free"
-)
+# The registry's studies (gpm study --list: the study, which names its store file, and its
+# program with the fixed arguments), core_voronoi aside (no device pass); the store files
+# read are the h10 reading with the documents' volumes, the ones the scoreboard counts first.
+# A program with --storage (the PDE studies) runs its Laplacian matrix-free, so that every
+# product is on the device.
+studies=()
+while IFS=$'\t' read -r study program; do
+  [ "$study" = core_voronoi ] && continue
+  storage=""
+  "$BUILD/${program%% *}" --help 2>/dev/null | grep -qE '^  --storage( |$)' && storage=" --storage matrix_free"
+  studies+=("$study.tsv $program$storage")
+done < <("$BUILD/gpm" study --list | awk -F'\t' -v OFS='\t' '
+  /^#/ { next }
+  !seen { for (i = 1; i <= NF; i++) col[$i] = i; seen = 1; next }
+  { print $col["study"], $col["program"] }')
 failed=0
 for s in "${studies[@]}"; do
   read -r file prog args <<< "$s"
