@@ -1,0 +1,263 @@
+// gpm fingerprint, store-seal, store-rates, checked-reasons, verdicts, decisions: the
+// committed result store, its provenance and the verdicts read from it.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "gpm/error.hpp"
+#include "gpm/io/provenance.hpp"
+#include "gpm/studies/checked_reasons.hpp"
+#include "gpm/studies/decisions.hpp"
+#include "gpm/studies/page_verdicts.hpp"
+#include "gpm/studies/rates.hpp"
+#include "gpm/studies/registry.hpp"
+#include "gpm/studies/setup_identification.hpp"
+#include "gpm/studies/store.hpp"
+#include "gpm/studies/verdicts.hpp"
+
+namespace gpm::cli {
+
+namespace {
+
+// The folders a store subcommand reads (--store, --published, --data): each must exist.
+void require_directories(const std::vector<std::pair<std::string, std::string>>& options) {
+  for (auto& [option, path] : options)
+    if (!std::filesystem::is_directory(path)) throw InputError("--" + option + " " + path + " is not a directory");
+}
+
+using Lines = std::vector<std::pair<std::string, std::string>>;
+
+// The header every output of the store's verdicts starts with: the program, the git revision
+// and the date, then the lines given; `store_rows`: the table's rows are the store's, so also
+// the store's profile and seed (store_provenance).
+TsvTable verdicts_header(const std::string& program, const std::string& store, bool store_rows, const Lines& lines) {
+  TsvTable h;
+  h.set("program", program);
+  for (auto& [k, v] : store_provenance(store))
+    if (store_rows || k == "git_revision" || k == "written_utc") h.set(k, v);
+  for (auto& [k, v] : lines) h.set(k, v);
+  return h;
+}
+
+// `t` with `header`'s lines ahead of its own (a TsvTable writes its meta in order).
+TsvTable headed(TsvTable t, const TsvTable& header) {
+  t.meta.insert(t.meta.begin(), header.meta.begin(), header.meta.end());
+  return t;
+}
+
+}  // namespace
+
+// The fingerprint of the code that decides each named program's numbers, as the result
+// store's rows carry it (provenance.hpp): a stored row is current when they agree.
+int cmd_fingerprint(int argc, char** argv) {
+  if (argc >= 3 && (std::string(argv[2]) == "--help" || std::string(argv[2]) == "-h")) {
+    std::cout << "usage: gpm fingerprint PROGRAM...\n"
+                 "The code fingerprint of each program: the `code` column of a result-store row\n"
+                 "it computed with the code of this build (results/paper/README.md).\n";
+    return 0;
+  }
+  if (argc < 3) throw InputError("gpm fingerprint: name at least one program (see --help)");
+  const auto known = fingerprinted_programs();
+  for (int i = 2; i < argc; ++i)
+    if (std::find(known.begin(), known.end(), argv[i]) == known.end())
+      throw InputError("gpm fingerprint: '" + std::string(argv[i]) + "' is not a program of this build; valid: " +
+                       join(known, ", "));
+  TsvTable t;
+  t.set("git_revision", git_revision());
+  t.columns = {"program", "code"};  // two columns written on the next line: kept by position
+  for (int i = 2; i < argc; ++i) t.add_row({argv[i], code_fingerprint(argv[i])});
+  print(t);
+  return 0;
+}
+
+// gpm store-seal: the one-time step that gave the result store's rows their seal
+// (store.hpp).  A file written before seals (provenance columns code, made_on, checked) gets
+// the seal column; each row's `checked` chain of re-checks is cut to its last record with the
+// count of earlier ones, the chain itself going to rechecks.log beside the file.  Sealing
+// vouches for nothing but the rows as they are now: their history is git's.
+int cmd_store_seal(int argc, char** argv) {
+  if (argc >= 3 && (std::string(argv[2]) == "--help" || std::string(argv[2]) == "-h")) {
+    std::cout << "usage: gpm store-seal FILE...\n"
+                 "Adds the seal column to result-store files written before seals (once; a sealed\n"
+                 "file is refused) and shortens each row's re-check chain to its last record.\n";
+    return 0;
+  }
+  if (argc < 3) throw InputError("gpm store-seal: name at least one file (see --help)");
+  for (int i = 2; i < argc; ++i) {
+    const std::string path = argv[i];
+    TsvTable t = TsvTable::load(path);
+    const std::vector<std::string> before = {"code", "made_on", "checked"};
+    if (t.columns.size() < 3 || !std::equal(before.begin(), before.end(), t.columns.end() - 3))
+      throw InputError(path + ": not a store file written before seals (its last columns are not "
+                       "code, made_on, checked)");
+    t.columns.push_back("seal");
+    const int cchecked = t.require_column("checked");
+    std::map<std::string, std::size_t> chains;  // each distinct chain once, with its row count
+    for (std::size_t r = 0; r < t.rows.size(); ++r) {
+      auto& row = t.rows[r];
+      if (row.size() + 1 != t.columns.size())
+        throw InputError(path + " line " + std::to_string(t.row_lines[r]) + ": " +
+                         std::to_string(row.size()) + " cells for " + std::to_string(t.columns.size() - 1) +
+                         " columns; mend or recompute it before sealing");
+      std::string& chain = row[cchecked];
+      const auto last = chain.rfind("; ");
+      if (last != std::string::npos) {
+        ++chains[chain];
+        chain = checked_cell(chain.substr(last + 2), recheck_count(chain) - 1);
+      }
+      row.push_back("");
+      row.back() = row_seal(row);
+    }
+    std::ofstream log(std::filesystem::path(path).parent_path() / "rechecks.log", std::ios::app);
+    for (auto& [chain, n] : chains)
+      log << std::filesystem::path(path).filename().string() << "\t" << n << " rows\t" << chain << "\n";
+    t.save(path);
+    std::cout << "sealed " << path << " (" << t.rows.size() << " rows)\n";
+  }
+  return 0;
+}
+
+// gpm store-rates: the documents' rates judged against the committed result store (verdicts.hpp),
+// the report's paper-scale tables.  Every input is read and every output path checked before
+// anything is written; each output is written to a temporary file and renamed (TsvTable::save).
+int cmd_store_rates(int argc, char** argv) {
+  Args a("gpm store-rates",
+         "The documents' rates from the committed result store, with their verdicts and the two\n"
+         "scoreboards (src/gpm/studies/verdicts.hpp defines every verdict); no study is run.");
+  a.opt("store", "results/paper", "the result store")
+      .opt("published", "tables/published", "the published values (imoto_table1.tsv, thesis_table4_N_long.tsv)")
+      .opt("checked", "", "checked reasons for differing rates (gpm checked-reasons --out); default: none")
+      .output("out", "", "the rates with their verdicts and boards (required)")
+      .output("summary", "", "where the stored rows come from, file by file")
+      .output("score", "", "the verdict counts per table and slice, and each board's totals")
+      .output("ident", "", "setup_identification's table: the fingerprint evidence of Chapter 4's reading");
+  a.parse(argc, argv, 2);
+  const std::string out = a.required("out"), store = a.str("store"), pub = a.str("published");
+  require_directories({{"store", store}, {"published", pub}});
+  const CheckedReasons checked =
+      a.str("checked").empty() ? CheckedReasons{} : passed_reasons(TsvTable::load(a.str("checked")));
+
+  // The reading of Chapter 4 that Table 4.6's theta = 0 rates identify (paper/04-setup-rule.md).
+  const RegisteredStudy& fp = fingerprint_study(study_registry());
+  SetupIdentification ident = identify_setup(store, fp, TsvTable::load(published_file(pub, fp.published->table)));
+  const std::vector<JudgedRate> judged = judge_rates(store_rates(store, pub, kRateTolerance),
+                                                     store_unstable_series(store, pub), checked,
+                                                     kRateTolerance, ident.identified);
+  auto with_header = [&](TsvTable t, const std::string& program, const Lines& lines) {
+    return headed(std::move(t), verdicts_header(program, store, /*store_rows=*/true, lines));
+  };
+  // Every table is made before the first is written: a store file that cannot be read leaves
+  // no output half done.
+  std::vector<std::pair<std::string, TsvTable>> outputs;
+  outputs.emplace_back(
+      out, with_header(rates_table(judged), "gpm store-rates",
+                       {{"store", store},
+                        {"checked_reasons", a.str("checked").empty() ? "none (no reason accepted)" : a.str("checked")},
+                        {"note", "rates at the documents' levels from the committed paper-profile rows; status from "
+                                 "rate_table (tolerance " + fmt(kRateTolerance) + "); verdict as listed in "
+                                 "src/gpm/studies/verdicts.hpp"}}));
+  if (!a.str("summary").empty())
+    outputs.emplace_back(
+        a.str("summary"),
+        with_header(store_summary(store), "gpm store-rates (summary)",
+                    {{"store", store},
+                     {"current", "rows whose code column is the fingerprint of this build's program (gpm fingerprint)"}}));
+  if (!a.str("score").empty())
+    outputs.emplace_back(
+        a.str("score"),
+        with_header(score_table(judged, pub), "gpm store-rates (score)",
+                    {{"boards", "printed: every set-up detail as the text prints it; identified: the readings of "
+                                "paper/04-setup-rule.md (fingerprint: a published rate that identified the reading)"}}));
+  if (!a.str("ident").empty()) {
+    ident.table.set("program", "gpm store-rates (setup_identification)");
+    add_provenance(ident.table);
+    outputs.emplace_back(a.str("ident"), ident.table);
+  }
+  for (auto& [path, table] : outputs) table.save(path);
+  return 0;
+}
+
+// gpm checked-reasons: the reasons for differing paper-scale rates, each with the diagnostic
+// that checks it against the committed store (checked_reasons.hpp); gpm store-rates --checked
+// reads the first file.  Both tables are made before either is written (temporary file and
+// rename each): a store file that cannot be read leaves no output half done.
+int cmd_checked_reasons(int argc, char** argv) {
+  Args a("gpm checked-reasons",
+         "Reasons for paper-scale rates that differ from the published ones, each with the\n"
+         "diagnostic that checks it against the committed result store (pass or fail, and whether\n"
+         "a run restores the published rate); src/gpm/studies/checked_reasons.hpp states each rule.");
+  a.opt("store", "results/paper", "the result store")
+      .opt("published", "tables/published", "the published values (thesis_table4_N_long.tsv)")
+      .output("out", "", "one row per checked rate: table, slice, key, reason, evidence, check, restores (required)")
+      .output("by-mechanism", "", "the same reasons, one row per mechanism with the rows it covers");
+  a.parse(argc, argv, 2);
+  const std::string out = a.required("out"), store = a.str("store"), pub = a.str("published");
+  require_directories({{"store", store}, {"published", pub}});
+  TsvTable checked = checked_reasons(store, pub, kRateTolerance);
+  // The header: what the report prints under the table.
+  const std::pair<std::string, std::string> note = {
+      "note", "rules and thresholds in src/gpm/studies/checked_reasons.hpp; published values from " + pub};
+  std::vector<std::pair<std::string, TsvTable>> outputs;
+  outputs.emplace_back(out, headed(checked, verdicts_header("gpm checked-reasons", store, false,
+                                                            {{"store", store}, {"tolerance", fmt(kRateTolerance) + " (rates)"}, note})));
+  if (!a.str("by-mechanism").empty())
+    outputs.emplace_back(a.str("by-mechanism"), headed(reasons_by_mechanism(checked),
+                                                       verdicts_header("gpm checked-reasons (by mechanism)", store, false,
+                                                                       {{"sources", out}, note})));
+  for (auto& [path, table] : outputs) table.save(path);
+  return 0;
+}
+
+// gpm verdicts: page one of the report, a verdict per item of the documents with the number
+// that decides it (page_verdicts.hpp).  Every input is read before the output is written
+// (temporary file and rename).
+int cmd_verdicts(int argc, char** argv) {
+  Args a("gpm verdicts",
+         "Page one of the report: one verdict per figure and table of the documents (the items\n"
+         "file), each with the number that decides it, from the store's score and this run's data\n"
+         "files; src/gpm/studies/page_verdicts.hpp states each rule and how rows are merged.");
+  a.opt("items", "tables/items.tsv", "the documents' items and the rule of each (document, item, shows, rule, section)")
+      .opt("score", "", "the store's verdict counts (gpm store-rates --score; required)")
+      .opt("data", "", "the folder of this run's data files (koba_sato_cor71.tsv, core_voronoi.tsv, ...; required)")
+      .output("out", "", "page one's table: document, item, shows, verdict, evidence, section (required)");
+  a.parse(argc, argv, 2);
+  const std::string out = a.required("out"), score = a.required("score"), data = a.required("data"),
+                    items = a.str("items");
+  require_directories({{"data", data}});
+  TsvTable page = page_verdicts(TsvTable::load(items), TsvTable::load(score), page_data_dir(data));
+  page.meta = verdicts_header("gpm verdicts", "", false,
+                              {{"items", items}, {"score", score + " (paper scale, the result store)"}, {"data", data}})
+                  .meta;
+  page.save(out);
+  return 0;
+}
+
+// gpm decisions: the documents' open set-up questions, each with the evidence the committed
+// store gives (decisions.hpp).  The table is made before it is written (temporary file and
+// rename): a store file that cannot be read leaves no output.
+int cmd_decisions(int argc, char** argv) {
+  Args a("gpm decisions",
+         "The documents' open set-up questions (time step, volumes, smoothing, Omega_H, ...), each\n"
+         "with the evidence the committed result store gives; src/gpm/studies/decisions.hpp lists them.");
+  a.opt("store", "results/paper", "the result store")
+      .opt("published", "tables/published", "the published values (thesis_table4_N_long.tsv, imoto_table1.tsv)")
+      .opt("score", "", "the store's verdict counts (gpm store-rates --score): adds which reading each table ran")
+      .output("out", "", "one row per question: question, evidence, decision (required)");
+  a.parse(argc, argv, 2);
+  const std::string out = a.required("out"), store = a.str("store"), pub = a.str("published");
+  require_directories({{"store", store}, {"published", pub}});
+  std::optional<TsvTable> score;
+  if (!a.str("score").empty()) score = TsvTable::load(a.str("score"));
+  TsvTable table = decisions(store, pub, score);
+  table.meta = verdicts_header("gpm decisions", store, false, {{"store", store}}).meta;
+  table.save(out);
+  return 0;
+}
+
+}  // namespace gpm::cli
