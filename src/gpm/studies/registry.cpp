@@ -461,7 +461,11 @@ TsvTable store_file_table(const StudyRegistry& registry) {
   t.columns = {"study", "file", "program", "args", "census", "coarse", "slice"};
   for (auto& s : registry)
     for (auto& f : s.store_files) {
-      t.add_row({s.name, f.name, s.program, join(s.command_args(f.args), " "), join(f.census, " "), join(f.coarse, " "), f.slice});
+      TsvRow row = t.named_row();
+      row["study"] = s.name, row["file"] = f.name, row["program"] = s.program;
+      row["args"] = join(s.command_args(f.args), " "), row["census"] = join(f.census, " ");
+      row["coarse"] = join(f.coarse, " "), row["slice"] = f.slice;
+      t.add_row(row);
     }
   return t;
 }
