@@ -9,7 +9,7 @@ FIGFILES  += $(FIGOUT)/imoto_fig4.svg $(FIGOUT)/imoto_fig2.svg $(FIGOUT)/imoto_f
 
 # Covering radius over levels and seeds, the counter-example, and d_N by the LP.
 $(DATA)/imoto_regularity_cover.tsv: $(BUILD)/imoto_regularity
-	$< --profile $(PROFILE) --out-cover $@ --out-example $(DATA)/imoto_regularity_example.tsv \
+	$< --profile $(PROFILE) --out $@ --out-example $(DATA)/imoto_regularity_example.tsv \
 	  --out-deviation $(DATA)/imoto_regularity_deviation.tsv
 
 # Figures 1-4 as data (particles, Voronoi edges, Figure 3's two distributions and discs).

@@ -5,7 +5,7 @@
 // and the regularity ratio (r_N + d_N)/h_N^m of Definition 1 for m = 1, 3, 5.
 //
 // Three outputs:
-//  --out-cover    r_N for Δx = 2^-5 … 2^-10 and several seeds (CGAL Voronoi cells), with the
+//  --out          r_N for Δx = 2^-5 … 2^-10 and several seeds (CGAL Voronoi cells), with the
 //                 farthest point of the worst cell — the witness of r_N;
 //  --out-example  one concrete counter-example to the r_N claim: the cell, its particle and
 //                 grid node, the Voronoi vertex y farthest from it, and the brute-force check
@@ -38,6 +38,7 @@
 #include "gpm/io/tsv.hpp"
 #include "gpm/operators/truncation.hpp"
 #include "gpm/studies/profile.hpp"
+#include "gpm/studies/runner.hpp"
 
 using namespace gpm;
 
@@ -170,21 +171,25 @@ LpResult voronoi_deviation(const Particles& p, const VoronoiCells& c,
 }
 
 int body(int argc, char** argv) {
-  Args args("imoto_regularity",
-            "imoto Sec. 3/5 regularity indicators: covering radius r_N over levels and seeds\n"
-            "with a counter-example to r_N <= sqrt(2)(1+1/4)dx/2, and the Voronoi deviation\n"
-            "d_N by the LP of Appendix B (GLPK) with (r_N + d_N)/h^m for m = 1, 3, 5.");
-  args.output("out-cover", "", "covering-radius TSV (required)")
-      .output("out-example", "", "counter-example TSV (required)")
+  // The runner owns the options, the three data files (cache, store checks, header stamp),
+  // the progress lines and the closing lines; --out is the covering radii.
+  StudyRunner run("imoto_regularity",
+                  "imoto Sec. 3/5 regularity indicators: covering radius r_N over levels and seeds\n"
+                  "with a counter-example to r_N <= sqrt(2)(1+1/4)dx/2, and the Voronoi deviation\n"
+                  "d_N by the LP of Appendix B (GLPK) with (r_N + d_N)/h^m for m = 1, 3, 5.",
+                  "quick or paper (both: r_N at 2^-5..2^-10, the LP at 2^-5 and 2^-6)",
+                  StudyRunner::Kind::units_without_seed);
+  Args& args = run.args();
+  args.output("out-example", "", "counter-example TSV (required)")
       .output("out-deviation", "", "Voronoi-deviation TSV (required)")
-      .opt("profile", "quick", "quick or paper (both: LP at 2^-5 and 2^-6; r_N at 2^-5..2^-10)")
       .opt("seeds", "1,2,3,4,5", "comma-separated jitter seeds for r_N")
       .opt("lp-seed", "1", "jitter seed of the LP (the seed of imoto_fig5_table1)")
       .opt("lp-method", "interior", "interior (GLPK interior point) or simplex (slow; a check)")
       .opt("lp-levels", "", "comma-separated LP levels; default: by profile");
-  args.parse(argc, argv);
-  for (const char* o : {"out-cover", "out-example", "out-deviation"}) args.required(o);
-  const Profile profile = parse_profile(args.str("profile"));
+  run.parse(argc, argv);
+  for (const char* o : {"out-example", "out-deviation"}) args.required(o);
+  const Profile profile = run.profile();
+  const std::vector<int> cover_levels = run.levels(kCoverLevels, kCoverLevels, 3, 12);
   const std::vector<uint64_t> seeds = args.seeds("seeds");
   const uint64_t lp_seed = args.seed("lp-seed");
   const std::string method = args.str("lp-method");
@@ -201,30 +206,44 @@ int body(int argc, char** argv) {
     }
   }
   const Domain dom;
-  auto header = [&](TsvTable& t, const char* what) {
-    t.set("program", std::string("imoto_regularity ") + what);
-    for (auto& [k, v] : args.values()) t.set(k, v);
-    t.set("H", dom.H);
-    t.set("jitter", "|eta| < 1/4, counter-based hash of (seed,i,j), mirrored at the edge");
-    t.set("claim_r_over_dx", kClaimR);
-    t.set("claim_d_over_dx", kClaimD);
-    add_provenance(t);
-  };
 
-  // --- covering radius over levels and seeds ------------------------------------------
-  const auto t_start = std::chrono::steady_clock::now();
-  TsvTable cov;
-  header(cov, "--out-cover");
-  cov.columns = {"level", "dx", "seed", "N", "r_N_over_dx", "r_N_omega_over_dx",
-                 "claim_over_dx", "claim_holds", "worst_x", "worst_y", "far_x", "far_y",
-                 "time_s"};
-  TsvTable ex;
-  header(ex, "--out-example");
-  ex.columns = {"case", "level", "seed", "particle", "node_i", "node_j", "eta_1", "eta_2", "x",
-                "y", "vertex_x", "vertex_y", "dist_over_dx", "nearest_over_dx", "claim_over_dx"};
-  for (int level : kCoverLevels) {
+  // --- The data files: rows are reused where a file's parameters agree; every unit is keyed
+  // by its first three columns: (level, dx, seed) of a covering radius and of a level's LP
+  // (all its transport radii), (case, level, seed) of a counter-example row.
+  const std::string jitter = "|eta| < 1/4, counter-based hash of (seed,i,j), mirrored at the edge";
+  const std::vector<LevelCache*> files = run.open_files(
+      {{run.out(), {{"program", "imoto_regularity"}, {"part", "covering radius"}, {"H", fmt(dom.H)},
+                    {"jitter", jitter}, {"claim_r_over_dx", fmt(kClaimR)}},
+        {"level", "dx", "seed", "N", "r_N_over_dx", "r_N_omega_over_dx", "claim_over_dx", "claim_holds",
+         "worst_x", "worst_y", "far_x", "far_y", "time_s"}},
+       {args.str("out-example"), {{"program", "imoto_regularity"}, {"part", "counter-example to the r_N claim"},
+                                  {"H", fmt(dom.H)}, {"jitter", jitter}, {"claim_r_over_dx", fmt(kClaimR)}},
+        {"case", "level", "seed", "particle", "node_i", "node_j", "eta_1", "eta_2", "x", "y", "vertex_x",
+         "vertex_y", "dist_over_dx", "nearest_over_dx", "claim_over_dx"}},
+       {args.str("out-deviation"),
+        {{"program", "imoto_regularity"}, {"part", "Voronoi deviation"}, {"H", fmt(dom.H)}, {"jitter", jitter},
+         {"claim_d_over_dx", fmt(kClaimD)}, {"volumes", "V_i = |Omega_H|/N"},
+         {"lp", "Appendix B; GLPK " + method + "; areas/dx^2, distances/dx; transport restricted to "
+                "|x_i - x_j| < R; converged: same optimum (1e-6 rel.) as the previous R"},
+         {"ratio", "(r_N + d_N)/h^m with h = 2.6 * 2^(5/m-5) * dx^(1/m)"}},
+        {"level", "dx", "seed", "N", "R_over_dx", "variables", "status", "d_N_over_dx", "converged",
+         "r_N_over_dx", "claim_d_over_dx", "ratio_m1", "ratio_m3", "ratio_m5", "time_s"}}},
+      {}, 3);
+  LevelCache& cov = *files[0];
+  LevelCache& ex = *files[1];
+  LevelCache& dev = *files[2];
+
+  // --- Covering radius over levels and seeds; the counter-example from the coarsest level's
+  // first seed (its worst cell overall and in Ω). ------------------------------------------
+  const char* kCases[] = {"worst cell", "worst cell of a particle in Omega"};
+  for (int level : cover_levels) {
     const double dx = std::ldexp(1.0, -level);
     for (uint64_t seed : seeds) {
+      const std::string s = fmt(static_cast<long long>(seed));
+      const bool example = level == cover_levels.front() && seed == seeds.front();
+      const bool todo = !cov.has({fmt(level), fmt(dx), s}) ||
+                        (example && (!ex.has({kCases[0], fmt(level), s}) || !ex.has({kCases[1], fmt(level), s})));
+      if (!todo || !run.claim()) continue;
       const auto t0 = std::chrono::steady_clock::now();
       const Particles p = jittered_grid(dx, seed, 0.25, dom);
       const VoronoiCells c = voronoi_cells(p, dom, true);
@@ -233,70 +252,53 @@ int body(int argc, char** argv) {
         if (p.in_omega[i] && (!p.in_omega[wo] || c.cover[i] > c.cover[wo])) wo = i;
       double fx = 0, fy = 0;
       farthest_vertex(c, p, c.worst, fx, fy);
-      const double secs =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      TsvRow row = cov.named_row();
-      row["level"] = fmt(level), row["dx"] = fmt(dx), row["seed"] = fmt(static_cast<long long>(seed));
+      const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      TsvRow row = run.row(0);
+      row["level"] = fmt(level), row["dx"] = fmt(dx), row["seed"] = s;
       row["N"] = fmt(p.size()), row["r_N_over_dx"] = fmt(c.covering_radius / dx);
       row["r_N_omega_over_dx"] = fmt(c.cover[wo] / dx), row["claim_over_dx"] = fmt(kClaimR);
       row["claim_holds"] = c.covering_radius / dx <= kClaimR ? "1" : "0";
       row["worst_x"] = fmt(p.x[c.worst]), row["worst_y"] = fmt(p.y[c.worst]);
       row["far_x"] = fmt(fx), row["far_y"] = fmt(fy), row["time_s"] = fmt(secs);
-      cov.add_row(row);
-      std::fprintf(stderr, "[imoto_regularity] level %d seed %llu N=%zu r_N/dx=%.4f (Omega %.4f) %.2fs\n",
-                   level, static_cast<unsigned long long>(seed), p.size(),
-                   c.covering_radius / dx, c.cover[wo] / dx, secs);
-      // The counter-example: the coarsest level, first seed, worst cell overall and in Ω.
-      if (level == kCoverLevels.front() && seed == seeds.front()) {
-        for (auto [name, i] : {std::pair<const char*, std::size_t>{"worst cell", c.worst},
-                               {"worst cell of a particle in Omega", wo}}) {
+      run.add(0, row);
+      if (example)
+        for (auto [name, i] : {std::pair<const char*, std::size_t>{kCases[0], c.worst}, {kCases[1], wo}}) {
           double vx = 0, vy = 0;
           farthest_vertex(c, p, i, vx, vy);
           std::size_t nearest = 0;
           const double dn = nearest_particle(p, vx, vy, nearest);
-          const double eta1 = p.x[i] / dx - p.gi[i], eta2 = p.y[i] / dx - p.gj[i];
-          TsvRow row = ex.named_row();
-          row["case"] = name, row["level"] = fmt(level), row["seed"] = fmt(static_cast<long long>(seed));
-          row["particle"] = fmt(i), row["node_i"] = fmt(p.gi[i]), row["node_j"] = fmt(p.gj[i]);
-          row["eta_1"] = fmt(eta1), row["eta_2"] = fmt(eta2), row["x"] = fmt(p.x[i]), row["y"] = fmt(p.y[i]);
-          row["vertex_x"] = fmt(vx), row["vertex_y"] = fmt(vy);
-          row["dist_over_dx"] = fmt(std::hypot(vx - p.x[i], vy - p.y[i]) / dx);
-          row["nearest_over_dx"] = fmt(dn / dx), row["claim_over_dx"] = fmt(kClaimR);
-          ex.add_row(row);
+          TsvRow e = run.row(1);
+          e["case"] = name, e["level"] = fmt(level), e["seed"] = s;
+          e["particle"] = fmt(i), e["node_i"] = fmt(p.gi[i]), e["node_j"] = fmt(p.gj[i]);
+          e["eta_1"] = fmt(p.x[i] / dx - p.gi[i]), e["eta_2"] = fmt(p.y[i] / dx - p.gj[i]);
+          e["x"] = fmt(p.x[i]), e["y"] = fmt(p.y[i]), e["vertex_x"] = fmt(vx), e["vertex_y"] = fmt(vy);
+          e["dist_over_dx"] = fmt(std::hypot(vx - p.x[i], vy - p.y[i]) / dx);
+          e["nearest_over_dx"] = fmt(dn / dx), e["claim_over_dx"] = fmt(kClaimR);
+          run.add(1, e);
         }
-      }
+      run.unit_done(0, line_printf("level %d seed %s N=%zu r_N/dx=%.4f (Omega %.4f) %.2fs", level, s.c_str(),
+                                   p.size(), c.covering_radius / dx, c.cover[wo] / dx, secs));
     }
-    cov.set("wall_time_s",
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count());
-    cov.save(args.str("out-cover"));
   }
-  ex.save(args.str("out-example"));
 
-  // --- Voronoi deviation by the LP, widening the transport radius -----------------------
-  TsvTable dev;
-  header(dev, "--out-deviation");
-  dev.set("volumes", "V_i = |Omega_H|/N");
-  dev.set("lp", "Appendix B; GLPK " + method + "; areas/dx^2, distances/dx; transport "
-                "restricted to |x_i - x_j| < R; converged: same optimum (1e-6 rel.) as the "
-                "previous R");
-  dev.set("ratio", "(r_N + d_N)/h^m with h = 2.6 * 2^(5/m-5) * dx^(1/m)");
-  dev.columns = {"level", "dx", "seed", "N", "R_over_dx", "variables", "status", "d_N_over_dx",
-                 "converged", "r_N_over_dx", "claim_d_over_dx", "ratio_m1", "ratio_m3",
-                 "ratio_m5", "time_s"};
+  // --- Voronoi deviation by the LP, one unit per level: the transport radius widened until
+  // the optimum no longer changes. --------------------------------------------------------
   for (int level : lp_levels) {
     const double dx = std::ldexp(1.0, -level);
+    if (dev.has({fmt(level), fmt(dx), fmt(lp_seed)}) || !run.claim()) continue;
     const Particles p = jittered_grid(dx, static_cast<uint64_t>(lp_seed), 0.25, dom);
     const VoronoiCells c = voronoi_cells(p, dom, false);
     const std::vector<double> V = uniform_volumes(p, dom);
-    double prev = NAN;
+    double prev = NAN, last = NAN, secs = 0;
     for (double R : kRadii) {
       const LpResult r = voronoi_deviation(p, c, V, dx, R, simplex);
+      secs += r.seconds, last = r.d_over_dx;
       // Converged: the optimum at this R equals the one at the previous R (the interior
       // point stops at a relative gap of ~1e-8, so 1e-6 relative; 1e-9 for the simplex).
       const double tol = simplex ? 1e-9 : 1e-6;
       const bool conv = std::isfinite(prev) && std::isfinite(r.d_over_dx) &&
                         std::fabs(r.d_over_dx - prev) <= tol * std::fabs(prev);
-      TsvRow row = dev.named_row();
+      TsvRow row = run.row(2);
       row["level"] = fmt(level), row["dx"] = fmt(dx), row["seed"] = fmt(lp_seed);
       row["N"] = fmt(p.size()), row["R_over_dx"] = fmt(R), row["variables"] = fmt(r.variables);
       row["status"] = r.status, row["d_N_over_dx"] = fmt(r.d_over_dx), row["converged"] = conv ? "1" : "0";
@@ -305,16 +307,16 @@ int body(int argc, char** argv) {
       for (double m : kOrders)
         row["ratio_m" + fmt(m)] = fmt((c.covering_radius + r.d_over_dx * dx) / std::pow(imoto_h(m, dx), m));
       row["time_s"] = fmt(r.seconds);
-      dev.add_row(row);
+      run.add(2, row);
+      // A level's LP takes minutes: a line per radius.
       std::fprintf(stderr, "[imoto_regularity] LP level %d R=%g dx: %zu variables, %s, d_N/dx=%.6g %.2fs\n",
                    level, R, r.variables, r.status.c_str(), r.d_over_dx, r.seconds);
-      dev.set("wall_time_s",
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count());
-      dev.save(args.str("out-deviation"));
       if (conv) break;
       prev = r.d_over_dx;
     }
+    run.unit_done(0, line_printf("LP level %d: d_N/dx = %.6g at the last radius, %.1fs", level, last, secs));
   }
+  run.finish();
   return 0;
 }
 
