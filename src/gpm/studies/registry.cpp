@@ -245,8 +245,7 @@ std::string heat_file(const HeatTable& hp, HRule rule) {
 // levels each must hold (empty: the table's paper levels) and any further arguments: the
 // printed reading and h15 at the paper levels, the others at 2^-5 and the rate levels, Table
 // 4.6 at every level under each time step (its theta = 0 rates are the set-up rule's
-// fingerprint, setup_identification; h10 with V_i = dx^2 and dt = dt0 so far at theta = 0 only,
-// its other theta at 2^-9 still running), and the identified reading (h15, V_i = dx^2,
+// fingerprint, setup_identification), and the identified reading (h15, V_i = dx^2,
 // dt = dt0) at every level.
 struct HeatStoreReading {
   std::string reading, census;
@@ -259,7 +258,7 @@ std::vector<HeatStoreReading> heat_store_readings(const std::string& table) {
             {"h15", "5,6,7,8,9", {}},
             {"h10_cell", "5,8,9", {}},
             {"h10_exact", "5,6,7,8,9", {}},
-            {"h10_cell_exact", "5,6,7,8,9", {"--thetas", "0"}},
+            {"h10_cell_exact", "5,6,7,8,9", {}},
             {"h15_cell", "5,6,7,8,9", {}},
             {"h15_exact", "5,6,7,8,9", {}},
             {"h15_cell_exact", "5,6,7,8,9", {}}};
