@@ -242,31 +242,30 @@ std::string heat_file(const HeatTable& hp, HRule rule) {
 }
 
 // The readings of a heat table the store holds (a reading's name, heat_tables.hpp), with the
-// levels each must hold (empty: the table's paper levels) and any further arguments: the
+// levels each must hold (empty: the table's paper levels): the
 // printed reading and h15 at the paper levels, the others at 2^-5 and the rate levels, Table
 // 4.6 at every level under each time step (its theta = 0 rates are the set-up rule's
 // fingerprint, setup_identification), and the identified reading (h15, V_i = dx^2,
 // dt = dt0) at every level.
 struct HeatStoreReading {
   std::string reading, census;
-  std::vector<std::string> args;
 };
 std::vector<HeatStoreReading> heat_store_readings(const std::string& table) {
-  if (table == "4.5") return {{"h10", "", {}}, {"h15", "", {}}, {"h10_cell", "5,7,8", {}}, {"h15_cell_exact", "4,5,6,7,8", {}}};
+  if (table == "4.5") return {{"h10", ""}, {"h15", ""}, {"h10_cell", "5,7,8"}, {"h15_cell_exact", "4,5,6,7,8"}};
   if (table == "4.6")
-    return {{"h10", "", {}},
-            {"h15", "5,6,7,8,9", {}},
-            {"h10_cell", "5,8,9", {}},
-            {"h10_exact", "5,6,7,8,9", {}},
-            {"h10_cell_exact", "5,6,7,8,9", {}},
-            {"h15_cell", "5,6,7,8,9", {}},
-            {"h15_exact", "5,6,7,8,9", {}},
-            {"h15_cell_exact", "5,6,7,8,9", {}}};
+    return {{"h10", ""},
+            {"h15", "5,6,7,8,9"},
+            {"h10_cell", "5,8,9"},
+            {"h10_exact", "5,6,7,8,9"},
+            {"h10_cell_exact", "5,6,7,8,9"},
+            {"h15_cell", "5,6,7,8,9"},
+            {"h15_exact", "5,6,7,8,9"},
+            {"h15_cell_exact", "5,6,7,8,9"}};
   if (table == "4.7")
-    return {{"h10", "", {}},           {"h15", "", {}},
-            {"h10_cell", "5,8,9", {}}, {"h10_exact", "5,8,9", {}},
-            {"h10_cell_exact", "5,6,7,8,9", {}}, {"h15_cell", "5,6,7,8,9", {}},
-            {"h15_exact", "5,6,7,8,9", {}},      {"h15_cell_exact", "5,8,9", {}}};
+    return {{"h10", ""},           {"h15", ""},
+            {"h10_cell", "5,8,9"}, {"h10_exact", "5,8,9"},
+            {"h10_cell_exact", "5,6,7,8,9"}, {"h15_cell", "5,6,7,8,9"},
+            {"h15_exact", "5,6,7,8,9"},      {"h15_cell_exact", "5,8,9"}};
   throw InputError("heat_store_readings: unknown table '" + table + "'");
 }
 
@@ -292,7 +291,6 @@ RegisteredStudy heat(const HeatTable& hp) {
     if (reading.h_rule != HRule::h10) args.insert(args.end(), {"--h-rule", h_rule_name(reading.h_rule)});
     if (reading.dt_rule != DtRule::fit) args.insert(args.end(), {"--dt-rule", dt_rule_name(reading.dt_rule)});
     if (reading.volumes != PdeVolumes::lattice) args.insert(args.end(), {"--volumes", pde_volumes_name(reading.volumes)});
-    args.insert(args.end(), r.args.begin(), r.args.end());
     s.store_files.push_back({name + reading.file_suffix(), reading.name(), args,
                              r.census.empty() ? std::vector<std::string>{} : std::vector<std::string>{"--levels", r.census},
                              {"--levels", "5"}, {reading.name()}});
