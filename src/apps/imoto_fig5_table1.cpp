@@ -14,7 +14,6 @@
 // evidence part of the data, --printed-out measures (Π3) with the printed constant on the
 // coarse levels (a separate, small kernel pass).
 #include <algorithm>
-#include <chrono>
 #include <map>
 #include <cmath>
 #include <cstdio>
@@ -26,6 +25,7 @@
 #include "gpm/geometry/influence_radius.hpp"
 #include "gpm/geometry/volumes.hpp"
 #include "gpm/io/tsv.hpp"
+#include "gpm/io/progress.hpp"
 #include "gpm/kernel/kernel.hpp"
 #include "gpm/operators/fused_errors.hpp"
 #include "gpm/operators/norms.hpp"
@@ -92,7 +92,7 @@ void write_printed_pi3(const std::vector<std::pair<std::string, std::string>>& p
                 "the normalizing 6/pi");
   add_provenance(t);
   t.columns = {"level", "m", "h", "printed_5_over_pi", "corrected_6_over_pi"};
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch wall;
   for (int level : levels) {
     if (level > printed_max) continue;
     const double dx = std::ldexp(1.0, -level);
@@ -110,7 +110,7 @@ void write_printed_pi3(const std::vector<std::pair<std::string, std::string>>& p
     }
   }
   t.set("wall_time_s",
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        wall.seconds());
   t.save(path);
 }
 
@@ -188,13 +188,13 @@ int body(int argc, char** argv) {
       built = level;
     }
     // All nine weights in one pass over the particle pairs within h_N.
-    const auto t0 = std::chrono::steady_clock::now();
+    const Stopwatch wall;
     const ErrorMaxima maxima = run.shared_pass("level" + fmt(level) + "_m" + fmt(m), [&](TargetShare s) {
       return fused_error_maxima(p, V, h, requests, {kStudy.function}, true, s);
     });
     const FusedErrors e = relative_errors(maxima, requests, {kStudy.function});
     const double secs =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        wall.seconds();
     for (std::size_t r = 0; r < nw; ++r) {
       const ImotoWeight& w = kStudy.weights[r];
       TsvRow row = run.row();  // the catalog's columns (imoto_study().columns), by name

@@ -7,7 +7,6 @@
 // The non-uniform distribution of Figure 3 is the plain grid pushed through the monotone map
 // t ↦ t^kGrade on each axis of Ω_H (dense at the lower left, sparse at the upper right): the
 // same nodes, hence the same N, with both dense and sparse regions as in Remark 1.
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -17,6 +16,7 @@
 #include "gpm/geometry/voronoi.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
+#include "gpm/io/progress.hpp"
 
 using namespace gpm;
 
@@ -58,7 +58,7 @@ int body(int argc, char** argv) {
                         "_fig3_edges.tsv", "_fig3_discs.tsv"})
     outputs.emplace_back("--prefix", prefix + f);
   check_output_paths(outputs);
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch wall;
   const Domain dom;
   auto header = [&](TsvTable& t, const char* what) {
     t.set("program", std::string("imoto_figs1_4 ") + what);
@@ -68,7 +68,7 @@ int body(int argc, char** argv) {
   };
   auto finish = [&](TsvTable& t, const std::string& path) {
     t.set("wall_time_s",
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+          wall.seconds());
     t.save(path);
   };
 

@@ -247,10 +247,7 @@ long long run_unit(StudyRunner& run, int level, uint64_t seed, const Sweep& sw, 
             row["level"] = fmt(level), row["seed"] = fmt(static_cast<long long>(seed));
             row["weight"] = wn, row["C_star"] = fmt(cs), row["h"] = fmt(h), row["delta"] = fmt(delta);
             row["r_sigma"] = fmt(r_sigma), row["L_w"] = fmt(w.lipschitz);
-            for (int i = 1; i <= 12; ++i) {
-              std::string key = "c";  // appended, not "c" + …: GCC 12 warns -Wrestrict there, wrongly
-              row[key += std::to_string(i)] = fmt(c.c[i]);
-            }
+            for (int i = 1; i <= 12; ++i) row["c" + std::to_string(i)] = fmt(c.c[i]);
             row["c1_cor"] = fmt((r_sigma * r_sigma - delta * delta) / (h * h - delta * delta));
             row["lemma_2_11_lhs"] = fmt(l211_lhs), row["lemma_2_11_rhs"] = fmt(l211_rhs);
             run.add(kConstants, row);

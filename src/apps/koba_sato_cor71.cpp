@@ -7,7 +7,6 @@
 // norms substituted — and compares each with the simplified value the paper prints
 // (tables/published/koba_sato_cor71.tsv): it holds if the printed value is not smaller.
 // One row per printed coefficient and case.
-#include <chrono>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -15,6 +14,7 @@
 #include "gpm/error.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
+#include "gpm/io/progress.hpp"
 #include "gpm/studies/profile.hpp"
 #include "gpm/theory/koba_sato_cor71.hpp"
 
@@ -55,7 +55,7 @@ int body(int argc, char** argv) {
   const std::string out = args.required("out");
   const Profile profile = parse_profile(args.str("profile"));
   const long long m_max = args.integer("m-max", 1, 12);
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch wall;
 
   const TsvTable pub = TsvTable::load(args.str("published"));
   const int c_case = pub.column("case"), c_op = pub.column("operator"),
@@ -124,7 +124,7 @@ int body(int argc, char** argv) {
   t.set("rows", static_cast<double>(n_rows));
   t.set("printed_values_failing", static_cast<double>(n_fail));
   t.set("formula_theorem_disagreements", static_cast<double>(n_disagree));
-  t.set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  t.set("wall_time_s", wall.seconds());
   t.save(out);
   std::fprintf(stderr, "[koba_sato_cor71] %d printed coefficients: %d fail, %d formula/theorem "
                        "disagreements -> %s\n", n_rows, n_fail, n_disagree, out.c_str());

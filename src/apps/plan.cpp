@@ -10,7 +10,6 @@
 //
 //   plan --profile paper --out data/paper/plan.tsv --summary data/paper/plan_summary.tsv
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -21,6 +20,7 @@
 #include "gpm/error.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
+#include "gpm/io/progress.hpp"
 #include "gpm/studies/profile.hpp"
 #include "gpm/studies/study_plan.hpp"
 
@@ -74,7 +74,7 @@ int body(int argc, char** argv) {
   a.parse(argc, argv);
   a.required("out");
   const Profile profile = parse_profile(a.str("profile"));
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch wall;
 
   Calibration cal;
   if (!a.str("calibration").empty()) {
@@ -127,7 +127,7 @@ int body(int argc, char** argv) {
   t.set("total_time_s", all.time_s);
   t.set("trimmed_time_s", trimmed.time_s);
   t.set("peak_mib", all.peak_mib);
-  t.set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  t.set("wall_time_s", wall.seconds());
   t.save(a.str("out"));
 
   // --- The summary. -------------------------------------------------------------------------

@@ -5,7 +5,6 @@
 // removed whose distance from a centre inside Ω lies in [ρ, ρ + h): the group within ρ keeps its
 // internal edges but no chain of steps shorter than h leaves it, so the h-connectivity fails and
 // the breadth-first search from the particles outside Ω (h_connectivity) must not reach it.
-#include <chrono>
 #include <cmath>
 
 #include "gpm/error.hpp"
@@ -13,6 +12,7 @@
 #include "gpm/geometry/domain.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
+#include "gpm/io/progress.hpp"
 #include "gpm/studies/profile.hpp"
 
 using namespace gpm;
@@ -45,7 +45,7 @@ int body(int argc, char** argv) {
     throw InputError("--centre: need two numbers inside Omega = (0,1)^2, got '" + a.str("centre") + "'");
   const uint64_t seed = a.seed();
   require_grid_fits_memory(dx, bytes_per_particle(h / dx), "--dx");
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch wall;
   const Particles full = jittered_grid(dx, seed);
 
   // The distribution with an isolated group: drop the annulus ρ ≤ |x − c| < ρ + h.
@@ -92,7 +92,7 @@ int body(int argc, char** argv) {
   }
   for (TsvTable* t : {&tp, &te}) {
     add_provenance(*t);
-    t->set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    t->set("wall_time_s", wall.seconds());
   }
   te.save(a.str("edges"));
   tp.save(a.str("particles"));

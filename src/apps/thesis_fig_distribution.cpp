@@ -2,13 +2,13 @@
 // Voronoi decomposition, for the thesis' Figures 1.1–1.2 (a coarse example) and 4.1 (Δx = 2^-5,
 // N = 1,521).  Writes the particles (x, y, in Ω) and, optionally, the Voronoi cell edges as
 // segments (one row per edge of each clipped cell).
-#include <chrono>
 
 #include "gpm/error.hpp"
 #include "gpm/geometry/domain.hpp"
 #include "gpm/geometry/voronoi.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
+#include "gpm/io/progress.hpp"
 #include "gpm/studies/profile.hpp"
 
 using namespace gpm;
@@ -31,7 +31,7 @@ int body(int argc, char** argv) {
   const double dx = a.positive("dx");
   const uint64_t seed = a.seed();
   require_grid_fits_memory(dx, a.str("cells").empty() ? kParticleBytes : kCellBytes, "--dx");
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch wall;
   const Domain dom;
   const Particles p = jittered_grid(dx, seed, 0.25, dom);
   auto header = [&](TsvTable& t) {
@@ -59,7 +59,7 @@ int body(int argc, char** argv) {
         t.add_row(row);
       }
     }
-    t.set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    t.set("wall_time_s", wall.seconds());
     t.save(a.str("cells"));
   }
   TsvTable t;
@@ -70,7 +70,7 @@ int body(int argc, char** argv) {
     row["x"] = fmt(p.x[i]), row["y"] = fmt(p.y[i]), row["in_omega"] = fmt(static_cast<int>(p.in_omega[i]));
     t.add_row(row);
   }
-  t.set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  t.set("wall_time_s", wall.seconds());
   t.save(a.str("particles"));
   return 0;
 }

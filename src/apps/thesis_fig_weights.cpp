@@ -2,12 +2,12 @@
 // Figures 4.2 (cubic B-spline, quintic B-spline, quadratic spike) and 4.4 (quadratic and cubic
 // spike), and of the gradient/Laplacian weights of Section 4.1.2.  The values come from the
 // weight registry (the B-splines as corrected there; see the report's errata).
-#include <chrono>
 #include <cmath>
 
 #include "gpm/error.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
+#include "gpm/io/progress.hpp"
 #include "gpm/weights/weights.hpp"
 
 using namespace gpm;
@@ -25,7 +25,7 @@ int body(int argc, char** argv) {
   a.parse(argc, argv);
   a.required("out");
   const long long n = a.integer("samples", 2, 1000000);
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch wall;
   TsvTable t;
   t.set("program", "thesis_fig_weights");
   t.set("samples", fmt(n));
@@ -42,7 +42,7 @@ int body(int argc, char** argv) {
     t.add_row(row);
   }
   add_provenance(t);
-  t.set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  t.set("wall_time_s", wall.seconds());
   t.save(a.str("out"));
   return 0;
 }

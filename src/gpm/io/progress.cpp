@@ -8,6 +8,10 @@ Progress::Progress(std::string label, double total_work, const char* unit, doubl
     : label_(std::move(label)), total_(total_work), unit_(unit), interval_(interval_s),
       start_(std::chrono::steady_clock::now()), last_(start_) {}
 
+double Stopwatch::seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
 double Progress::elapsed() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }

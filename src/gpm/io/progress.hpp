@@ -24,4 +24,13 @@ class Progress {
   std::chrono::steady_clock::time_point start_, last_;
 };
 
+// Wall time since construction: a data file's `wall_time_s`.
+class Stopwatch {
+ public:
+  double seconds() const;
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
 }  // namespace gpm
