@@ -159,14 +159,14 @@ int body(int argc, char** argv) {
   const auto storage = parse_laplacian_storage(a.str("storage"));
   const double max_bytes = a.positive("max-gb") * 1e9;
   // The table's units (registry.cpp): one series (weight, θ) per level and h rule, in the
-  // order (level, h rule, weight, θ); --levels, else the profile's levels with its trim of the
-  // h rule.  Kept: those of the chosen h rules, weights and θ.
+  // order (level, h rule, weight, θ); --levels, else the profile's levels.  Kept: those of
+  // the chosen h rules, weights and θ.
   const UnitScope scope{run.profile() == Profile::paper, run.levels(ts.quick, ts.paper), run.levels_given()};
   auto chosen = [](const auto& list, const auto& v) { return std::find(list.begin(), list.end(), v) != list.end(); };
   std::vector<StudyUnit> units;
   std::vector<int> levels;
   for (const StudyUnit& u : study_registry().study(heat_study_name(ts)).units(scope))
-    if (u.trimmed.empty() && chosen(h_rules, parse_h_rule(u.part)) && chosen(weights, u.key[0]) &&
+    if (chosen(h_rules, parse_h_rule(u.part)) && chosen(weights, u.key[0]) &&
         chosen(thetas, parse_number(u.key[1], "theta"))) {
       units.push_back(u);
       if (!chosen(levels, u.level)) levels.push_back(u.level);

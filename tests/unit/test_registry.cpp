@@ -120,21 +120,18 @@ TEST_CASE("registry: a study without its units or their price is refused", "[uni
   CHECK(r.studies().size() == 1);
 }
 
-TEST_CASE("registry: the heat tables' units, their trim and the plan's price of them", "[unit][registry]") {
+TEST_CASE("registry: the heat tables' units, every one run, and the plan's price of them", "[unit][registry]") {
   const RegisteredStudy& s = study_registry().study("thesis_table4_5");
   const HeatTable& t = heat_table("4.5");
-  // The paper profile lists the h15 units above the trim, marked; a run skips them.
+  // The paper profile runs every series under both h rules at every level: each h rule is a
+  // reading the set-up rule weighs, so none is trimmed.
   const auto units = s.units({true, t.paper, false});
-  std::size_t trimmed = 0;
-  for (auto& u : units) {
-    const bool over = u.part == "h15" && u.level > t.paper_h15_max_level;
-    CHECK(u.trimmed.empty() == !over);
-    trimmed += over;
-  }
+  for (auto& u : units) CHECK(u.trimmed.empty());
   CHECK(units.size() == t.paper.size() * 2 * pde_weights().size() * t.thetas.size());
-  CHECK(trimmed > 0);
-  // With --levels nothing is trimmed.
-  for (auto& u : s.units({true, t.paper, true})) CHECK(u.trimmed.empty());
+  std::set<std::string> parts;
+  for (auto& u : units)
+    if (u.level == t.paper.back()) parts.insert(u.part);
+  CHECK(parts == std::set<std::string>{"h10", "h15"});
   // The plan: a set-up per (level, h rule, weight), then one unit per series.
   const Calibration c = made_up_calibration();  // the pricer keeps a reference
   UnitPricer p(Profile::paper, c);
@@ -143,4 +140,32 @@ TEST_CASE("registry: the heat tables' units, their trim and the plan's price of 
   for (auto& u : p.units()) setups += u.variant.rfind("setup/", 0) == 0;
   CHECK(setups == t.paper.size() * 2 * pde_weights().size());
   CHECK(p.units().size() == setups + units.size());
+}
+
+TEST_CASE("registry: a trimmed unit is priced and marked in the plan, never run", "[unit][registry]") {
+  // Tables 4.1-4.3 trim the uniform volumes (beyond the document) above
+  // paper_uniform_max_level in the paper profile.
+  const ThesisTableSpec& t = thesis_table_spec("thesis_table4_1");
+  const RegisteredStudy& s = study_registry().study(t.program);
+  std::size_t over = 0;
+  for (auto& u : s.units({true, t.paper_levels, false})) {
+    const bool uniform_above = u.key[1] == volumes_name(Volumes::uniform) && u.level > t.paper_uniform_max_level;
+    INFO(u.variant << " at 2^-" << u.level);
+    CHECK(u.trimmed.empty() == !uniform_above);
+    over += uniform_above;
+  }
+  REQUIRE(over > 0);
+  // With --levels nothing is trimmed.
+  for (auto& u : s.units({true, t.paper_levels, true})) CHECK(u.trimmed.empty());
+  // The plan prices them with their reason; the quick profile trims nothing.
+  const Calibration c = made_up_calibration();
+  std::size_t marked = 0;
+  for (auto& u : plan_units(Profile::paper, c))
+    if (u.study == t.program && !u.trimmed.empty()) {
+      CHECK(u.level > t.paper_uniform_max_level);
+      CHECK(u.trimmed.find("uniform volumes") != std::string::npos);
+      ++marked;
+    }
+  CHECK(marked == over);
+  for (auto& u : plan_units(Profile::quick, c)) CHECK(u.trimmed.empty());
 }

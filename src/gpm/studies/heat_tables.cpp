@@ -12,10 +12,9 @@ const std::vector<HeatTable>& heat_tables() {
   // points (a convergence plot is never drawn through two); the paper profile keeps that
   // coarse level too (seconds), so that the quick units stay a part of the paper's.
   static const std::vector<HeatTable> t = {
-      {"4.5", "0.0025 h^2", 0.0025, 2, {0, 0.5, 1}, {4, 5, 6}, {4, 5, 6, 7, 8}, "7,8", 7},
-      {"4.6", "0.5 h^2", 0.5, 2, {0, 0.5, 1}, {5, 6, 7}, {5, 6, 7, 8, 9}, "8,9", 8},
-      // 4.7's finest h15 level is cheap (about 10 min here) and already stored: no trim.
-      {"4.7", "0.5 h", 0.5, 1, {0.5, 1}, {5, 6, 7}, {5, 6, 7, 8, 9}, "8,9", 99},
+      {"4.5", "0.0025 h^2", 0.0025, 2, {0, 0.5, 1}, {4, 5, 6}, {4, 5, 6, 7, 8}, "7,8"},
+      {"4.6", "0.5 h^2", 0.5, 2, {0, 0.5, 1}, {5, 6, 7}, {5, 6, 7, 8, 9}, "8,9"},
+      {"4.7", "0.5 h", 0.5, 1, {0.5, 1}, {5, 6, 7}, {5, 6, 7, 8, 9}, "8,9"},
   };
   return t;
 }
@@ -31,14 +30,6 @@ std::string heat_study_name(const HeatTable& t) {
   std::string name = "thesis_table" + t.table;
   std::replace(name.begin(), name.end(), '.', '_');
   return name;
-}
-
-std::vector<int> heat_levels(const HeatTable& t, bool paper, HRule h_rule) {
-  if (!paper) return t.quick;
-  std::vector<int> lv;
-  for (int k : t.paper)
-    if (h_rule != HRule::h15 || k <= t.paper_h15_max_level) lv.push_back(k);
-  return lv;
 }
 
 std::string dt_rule_name(DtRule r) { return r == DtRule::fit ? "fit" : "exact"; }

@@ -29,16 +29,12 @@ struct HeatTable {
   std::vector<double> thetas;
   std::vector<int> quick, paper;  // levels k, Δx = 2^-k
   std::string rate_levels;        // the levels of the thesis' rates
-  int paper_h15_max_level = 99;   // the trim above
 };
 
 const std::vector<HeatTable>& heat_tables();
 const HeatTable& heat_table(const std::string& table);  // InputError naming the valid ones
 // The registry's name of a table's study (the data file of its printed reading): thesis_table4_6.
 std::string heat_study_name(const HeatTable& t);
-
-// The levels of a table for a profile and h rule (the paper profile's h15 trim applied).
-std::vector<int> heat_levels(const HeatTable& t, bool paper, HRule h_rule);
 
 constexpr double kHeatKappa = 0.5, kHeatT = 0.1;
 

@@ -141,8 +141,9 @@ RegisteredStudy thesis_truncation(const ThesisTableSpec& t) {
   for (const std::string& f : figures.at(t.program)) s.figures.push_back({f, {"figures/thesis_errors.gp"}, false});
   // A unit: one fused pass per (level, h reading, volumes), keyed as the data file's rows.
   // Without --levels each reading runs at the profile's levels of its own (the quick profile
-  // gives the printed and the scaled h different ones), and the paper profile stops the
-  // uniform volumes at paper_uniform_max_level; with --levels every unit runs at them.
+  // gives the printed and the scaled h different ones), and the paper profile trims the
+  // uniform volumes above paper_uniform_max_level (rows beyond the document, no published
+  // rate): those units are priced and marked, not run; with --levels every unit runs.
   s.units = [&t](const UnitScope& scope) {
     auto levels_of = [&](HReading r) -> const std::vector<int>& {
       if (scope.levels_given) return scope.levels;
@@ -157,10 +158,12 @@ RegisteredStudy thesis_truncation(const ThesisTableSpec& t) {
       for (HReading r : t.readings)
         for (Volumes v : {Volumes::voronoi, Volumes::uniform}) {
           const auto& lv = levels_of(r);
-          const bool trimmed = scope.paper && !scope.levels_given && v == Volumes::uniform && k > t.paper_uniform_max_level;
-          if (trimmed || std::find(lv.begin(), lv.end(), k) == lv.end()) continue;
-          out.push_back({k, thesis_h(r, t.c, t.p, dx_of(k)), {h_reading_name(r), volumes_name(v), fmt(k)},
-                         h_reading_name(r) + "/" + volumes_name(v)});
+          if (std::find(lv.begin(), lv.end(), k) == lv.end()) continue;
+          StudyUnit u{k, thesis_h(r, t.c, t.p, dx_of(k)), {h_reading_name(r), volumes_name(v), fmt(k)},
+                      h_reading_name(r) + "/" + volumes_name(v)};
+          if (scope.paper && !scope.levels_given && v == Volumes::uniform && k > t.paper_uniform_max_level)
+            u.trimmed = "uniform volumes stop at 2^-" + fmt(t.paper_uniform_max_level) + " (beyond the document: no published rate)";
+          out.push_back(std::move(u));
         }
     return out;
   };
@@ -246,7 +249,7 @@ std::string heat_file(const HeatTable& hp, HRule rule) {
 // printed reading and h15 at the paper levels, the others at 2^-5 and the rate levels, Table
 // 4.6 at every level under each time step (its theta = 0 rates are the set-up rule's
 // fingerprint, setup_identification), and the identified reading (h15, V_i = dx^2,
-// dt = dt0) at every level.
+// dt = dt0) at every level of Tables 4.5 and 4.6.
 struct HeatStoreReading {
   std::string reading, census;
 };
@@ -254,7 +257,7 @@ std::vector<HeatStoreReading> heat_store_readings(const std::string& table) {
   if (table == "4.5") return {{"h10", ""}, {"h15", ""}, {"h10_cell", "5,7,8"}, {"h15_cell_exact", "4,5,6,7,8"}};
   if (table == "4.6")
     return {{"h10", ""},
-            {"h15", "5,6,7,8,9"},
+            {"h15", ""},
             {"h10_cell", "5,8,9"},
             {"h10_exact", "5,6,7,8,9"},
             {"h10_cell_exact", "5,6,7,8,9"},
@@ -305,23 +308,18 @@ RegisteredStudy heat(const HeatTable& hp) {
   s.figures = {{figure.at(hp.table), {"figures/thesis_heat.gp"}, /*per_reading=*/true}};
   // A unit: one series (weight, θ) at a level under an h rule (StudyUnit::part: in a make run
   // each rule writes its own data file), keyed as the data file's rows.  The series of one
-  // (level, h rule, weight) share a Laplacian, set up once for the first of them.  The
-  // paper profile trims h15 above paper_h15_max_level (heat_levels): those units are
-  // priced and marked, not run.
+  // (level, h rule, weight) share a Laplacian, set up once for the first of them.  Both h
+  // rules run at every level of the profile: each is a reading the set-up rule weighs.
   s.units = [&hp](const UnitScope& scope) {
     std::vector<StudyUnit> out;
     for (int k : scope.levels)
-      for (HRule rule : pde_h_rules()) {
-        const std::vector<int> run = heat_levels(hp, true, rule);
-        const bool trimmed = scope.paper && !scope.levels_given && std::find(run.begin(), run.end(), k) == run.end();
+      for (HRule rule : pde_h_rules())
         for (auto& w : pde_weights())
           for (double th : hp.thetas) {
             StudyUnit u{k, pde_h(rule, dx_of(k)), {w, fmt(th), fmt(k)}, w + "/theta=" + fmt(th)};
             u.part = h_rule_name(rule);
-            if (trimmed) u.trimmed = "h15 reading stops at 2^-" + fmt(hp.paper_h15_max_level) + " (Table 4.4 settles h10)";
             out.push_back(std::move(u));
           }
-      }
     return out;
   };
   s.price = [&hp](UnitPricer& p, const StudyUnit& su) {
@@ -336,7 +334,6 @@ RegisteredStudy heat(const HeatTable& hp) {
     a.mem_mib = p.pde_mib(a, as);
     a.recorded = false;
     a.basis = "Laplacian set-up (not in the rows' seconds)";
-    a.trimmed = su.trimmed;
     if (!p.priced(study, a.variant, k)) p.units().push_back(a);
     const double th = parse_number(su.key[1], "theta"), K = p.heat_steps(hp.table, su.h);
     PlanUnit u = p.base(study, su.variant, k, su.h);
@@ -347,7 +344,6 @@ RegisteredStudy heat(const HeatTable& hp) {
     u.time_before_s = u.products * p.product_before_s(u);
     u.mem_mib = a.mem_mib;
     u.basis = "K=" + fmt(K) + " steps, " + fmt(std::round(its * 10) / 10) + " CG its/step";
-    u.trimmed = su.trimmed;
     p.units().push_back(u);
   };
   // A heat row does not record its non-zeros: its work is the steps done × products per

@@ -415,9 +415,14 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
 std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c, const StudyRegistry& registry) {
   UnitPricer pricer(profile, c);
   for (auto& study : registry) {
-    // The program's own units, priced one by one.
-    for (const StudyUnit& u : study.units({pricer.paper(), pricer.paper() ? study.levels.paper : study.levels.quick, false}))
+    // The program's own units, priced one by one; what a trimmed unit adds is marked with
+    // its reason.  A shared set-up is priced with the first unit that uses it, so a catalog
+    // lists a unit that runs before a trimmed one of the same set-up.
+    for (const StudyUnit& u : study.units({pricer.paper(), pricer.paper() ? study.levels.paper : study.levels.quick, false})) {
+      const std::size_t before = pricer.units().size();
       study.price(pricer, u);
+      for (std::size_t i = before; i < pricer.units().size(); ++i) pricer.units()[i].trimmed = u.trimmed;
+    }
   }
   return pricer.units();
 }
