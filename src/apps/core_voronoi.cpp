@@ -80,28 +80,28 @@ int body(int argc, char** argv) {
   args.opt("seeds", kStudy.seeds_option(), "comma-separated jitter seeds (non-negative integers)");
   run.parse(argc, argv);
   const std::vector<uint64_t> seeds = args.seeds("seeds");
+  std::vector<std::string> seed_names;
+  for (uint64_t seed : seeds) seed_names.push_back(fmt(static_cast<long long>(seed)));
 
+  // --- The data file: per level, for every seed the plain grid's row and the jittered one's.
   const Domain dom;
   const double amplitude = 0.25;
-  TsvTable t;
-  t.set("program", "core_voronoi");
-  for (auto& [k, v] : args.values()) t.set(k, v);
-  t.set("H", dom.H);
-  t.set("Omega_H", "(-H, 1+H)^2");
-  t.set("jitter_amplitude", amplitude);
-  t.set("r_c_grid_formula", "sqrt(2)*max(dx/2, g_lo, g_hi), g_lo = first*dx + H, "
-                            "g_hi = 1 + H - last*dx");
-  t.set("imoto_bound", "sqrt(2)*(1+1/4)*dx/2 (imoto Sec. 5)");
-  t.set("thesis_range", "1.4*dx <= r_c <= 1.8*dx (thesis Ch. 4)");
-  t.set("r_c_omega", "max cover over the cells of particles in Omega (boundary cells excluded)");
+  LevelCache& cache = run.open(
+      {{"program", "core_voronoi"}, {"seeds", join(seed_names, ",")}, {"H", fmt(dom.H)},
+       {"Omega_H", "(-H, 1+H)^2"}, {"jitter_amplitude", fmt(amplitude)},
+       {"r_c_grid_formula", "sqrt(2)*max(dx/2, g_lo, g_hi), g_lo = first*dx + H, g_hi = 1 + H - last*dx"},
+       {"imoto_bound", "sqrt(2)*(1+1/4)*dx/2 (imoto Sec. 5)"},
+       {"thesis_range", "1.4*dx <= r_c <= 1.8*dx (thesis Ch. 4)"},
+       {"r_c_omega", "max cover over the cells of particles in Omega (boundary cells excluded)"}},
+      1);
   const bool rss_reset = reset_peak_rss();
-  t.set("peak_rss_note", rss_reset ? "VmHWM reset before each row: peak of that row's run"
-                                   : "VmHWM of the process so far (reset unsupported)");
-  t.set("time_note", "time_s: voronoi_cells only (triangulation + cells), not particle set-up");
-  add_provenance(t);
-  t.columns = kStudy.columns;
+  cache.table().set("peak_rss_note", rss_reset ? "VmHWM reset before each row: peak of that row's run"
+                                               : "VmHWM of the process so far (reset unsupported)");
+  cache.table().set("time_note", "time_s: voronoi_cells only (triangulation + cells), not particle set-up");
+  const std::size_t rows_per_unit = 2 * seeds.size();
 
   for (const StudyUnit& unit : run.units()) {
+    if (cache.has(unit.key, rows_per_unit) || !run.claim()) continue;
     const int level = unit.level;
     const double dx = std::ldexp(1.0, -level);
     const double g_lo = grid_first(dx, dom) * dx - dom.lo();
@@ -110,7 +110,7 @@ int body(int argc, char** argv) {
     const double imoto = std::sqrt(2.0) * 1.25 * dx / 2;
     auto add = [&](uint64_t seed, const char* dist, const Row& r) {
       // By name: the columns are voronoi_study()'s, listed in catalog.cpp, not here.
-      TsvRow row = t.named_row();
+      TsvRow row = run.row();
       row["level"] = fmt(level), row["dx"] = fmt(dx), row["seed"] = fmt(static_cast<long long>(seed));
       row["distribution"] = dist, row["N"] = fmt(r.n), row["N_in_omega"] = fmt(r.n_in);
       row["area_sum"] = fmt(r.area_sum);
@@ -122,7 +122,7 @@ int body(int argc, char** argv) {
       row["worst_x"] = fmt(r.wx), row["worst_y"] = fmt(r.wy);
       row["min_area_over_dx2"] = fmt(r.amin), row["max_area_over_dx2"] = fmt(r.amax);
       row["time_s"] = fmt(r.time_s), row["peak_rss_mb"] = fmt(r.rss);
-      t.add_row(row);
+      run.add(row);
     };
     Row grid;
     {
@@ -148,8 +148,9 @@ int body(int argc, char** argv) {
                                 std::abs(r.area_sum - dom.area_H()) / dom.area_H(), r.time_s,
                                 r.rss);
     }
-    run.save_level(t, 0, grid_line + seed_lines);
+    run.unit_done(0, grid_line + seed_lines);
   }
+  run.finish();
   return 0;
 }
 

@@ -73,9 +73,15 @@ TEST_CASE("runner: common options and the levels of a run", "[unit][runner]") {
     REQUIRE_THROWS_AS(parse(run, {"runner_test", "--out", "x.tsv", "--seed", "-1"}), InputError);
   }
   {
-    // A study that is not cached per unit has neither --seed nor --verify.
-    StudyRunner run("runner_test", "test study", "quick or paper", StudyRunner::Kind::whole_table);
-    REQUIRE_THROWS_AS(parse(run, {"runner_test", "--out", "x.tsv", "--verify"}), InputError);
+    // A study that names its particle sets itself has no --seed and no --parts, and is still
+    // cached per unit (--verify).
+    StudyRunner run("runner_test", "test study", "quick or paper", StudyRunner::Kind::units_without_seed);
+    REQUIRE_THROWS_AS(parse(run, {"runner_test", "--out", "x.tsv", "--seed", "2"}), InputError);
+  }
+  {
+    StudyRunner run("runner_test", "test study", "quick or paper", StudyRunner::Kind::units_without_seed);
+    parse(run, {"runner_test", "--out", "x.tsv", "--verify"});
+    CHECK(run.mode() == CacheMode::verify);
   }
 }
 

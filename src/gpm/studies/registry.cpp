@@ -366,11 +366,14 @@ RegisteredStudy heat(const HeatTable& hp) {
 // core_voronoi: the plain grid once per level, the jittered grid per seed.
 RegisteredStudy voronoi() {
   RegisteredStudy s = identity("core_voronoi", "covering radius (imoto §5, thesis Ch. 4)", "core", voronoi_study().levels,
-                               voronoi_study().columns, {});
-  s.level_cache = false;  // one table rewritten after each level (StudyRunner::Kind::whole_table)
+                               voronoi_study().columns, {5});
+  s.own_seeds = true;  // --seeds, a list of its own
   s.files = {{"core_voronoi", {}, {}, {}}};
-  // A unit: a level (its table is written whole after each), the plain grid and the jittered
-  // grid of every seed (--seeds; the plan prices the default ones, as a make run uses them).
+  // The store holds the paper levels (2^-12: 2.4e7 particles, about 4 GB); its check
+  // recomputes 2^-5.
+  s.store_files = {{"core_voronoi", "all", {}, {}, {"--levels", "5"}}};
+  // A unit: a level, the plain grid and the jittered grid of every seed (--seeds; the plan
+  // prices the default ones, as a make run uses them).
   s.units = [](const UnitScope& scope) {
     std::vector<StudyUnit> out;
     for (int k : scope.levels) out.push_back({k, 0, {fmt(k)}, "level"});
@@ -402,8 +405,7 @@ std::vector<std::string> PublishedRates::rate_key() const {
 
 std::vector<std::string> RegisteredStudy::header() const {
   std::vector<std::string> h = columns;
-  if (level_cache)
-    for (auto& c : row_provenance_columns()) h.push_back(c);
+  for (auto& c : row_provenance_columns()) h.push_back(c);
   return h;
 }
 
@@ -572,10 +574,10 @@ std::string make_rules(const StudyRegistry& registry) {
         side_files += " $(DATA)/" + stem + ".tsv";
       }
       m << "$(DATA)/" << f.name << ".tsv: $(BUILD)/" << s.program << "\n";
-      if (s.level_cache && !s.recheck_levels.empty())
+      if (!s.recheck_levels.empty())
         m << "\t$(call store_recheck,$<" << fixed << "," << call_levels(s.recheck_levels) << ")\n";
       m << "\t$<" << fixed << " --profile $(PROFILE) --out $@" << sides << "\n";
-      if (s.level_cache) m << "\t@touch -c $@" << side_files << "  # a fully cached rerun leaves the files as they were\n";
+      m << "\t@touch -c $@" << side_files << "  # a fully cached rerun leaves the files as they were\n";
       if (!side_files.empty()) m << side_files.substr(1) << ": $(DATA)/" << f.name << ".tsv ;\n";
       for (auto& r : f.rates) {
         if (!s.published) throw InputError("study '" + s.name + "': rate table '" + r.name + "' without published rates");

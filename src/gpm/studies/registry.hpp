@@ -134,7 +134,10 @@ struct RegisteredStudy {
   std::string group;    // make's STUDIES_<group> list (truncation, heat, …)
   ProfileLevels levels;
   std::vector<std::string> columns;  // the data file's own columns
-  bool level_cache = true;           // rows cached per unit in the result store (store.hpp)
+  // The program names its particle sets itself (core_voronoi's --seeds): no --seed, no --parts
+  // (StudyRunner::Kind::units_without_seed).  Every study's rows are cached per unit in the
+  // result store (store.hpp).
+  bool own_seeds = false;
   std::vector<int> recheck_levels;   // the coarse units the paper profile re-checks first
   std::vector<StudyFile> files;      // what a make run writes
   std::vector<StoreFile> store_files;  // what the committed store holds of it

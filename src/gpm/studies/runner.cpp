@@ -71,7 +71,7 @@ StudyRunner::~StudyRunner() {
 }
 
 void StudyRunner::parse(int argc, char** argv) {
-  if (kind_ != Kind::whole_table) add_cache_options(args_);
+  add_cache_options(args_);
   args_.parse(argc, argv);
   out_ = args_.required("out");
   profile_ = parse_profile(args_.str("profile"));
@@ -79,7 +79,7 @@ void StudyRunner::parse(int argc, char** argv) {
   if (device != "cpu" && device != "cuda")
     throw InputError("unknown --device '" + device + "'; valid: cpu, cuda");
   use_device(device == "cuda");
-  if (kind_ != Kind::whole_table) mode_ = cache_mode(args_);
+  mode_ = cache_mode(args_);
   if (kind_ == Kind::units) {
     seed_ = args_.seed();
     const std::string parts = args_.str("parts");
@@ -100,7 +100,7 @@ void StudyRunner::parse(int argc, char** argv) {
 
 StudyRunner::StudyRunner(const RegisteredStudy& study, std::string summary)
     : StudyRunner(study.program, std::move(summary), study.levels.help(),
-                  study.level_cache ? Kind::units : Kind::whole_table) {
+                  study.own_seeds ? Kind::units_without_seed : Kind::units) {
   study_ = &study;
 }
 
@@ -333,12 +333,6 @@ void StudyRunner::unit_done(double work, const std::string& line) {
   if (size_ == 1 && caches_.front()->writes())
     for (auto& f : done_parts_) std::remove(f.c_str());
   done_parts_.clear();
-  report(work, line);
-}
-
-void StudyRunner::save_level(TsvTable& t, double work, const std::string& line) {
-  stamp(t);
-  if (rank_ == 0) t.save(out_);  // (such a study is not divided: every rank runs it all)
   report(work, line);
 }
 

@@ -54,17 +54,15 @@ struct StudyUnit;
 
 class StudyRunner {
  public:
-  // How a study keeps its data file.  `units`: one jitter realization (--seed) per run, its
-  // finished units cached in the result store (--verify, --recheck).  `whole_table`: the file
-  // is rewritten after each level (core_voronoi, whose seeds are a list of its own and which
-  // takes seconds); no --seed, no cache options.
-  // `units_without_seed`: cached units, but the study names its particle sets itself (no
-  // --seed, no --parts).
-  enum class Kind { units, units_without_seed, whole_table };
+  // How a study names its particle sets; either way its finished units are cached in the
+  // result store (--verify, --recheck).  `units`: one jitter realization (--seed) per run.
+  // `units_without_seed`: the study names its particle sets itself (core_voronoi's --seeds,
+  // imoto_regularity's): no --seed, no --parts.
+  enum class Kind { units, units_without_seed };
   // `profile_help` is the --profile help (the catalog's ProfileLevels::help()).
   StudyRunner(std::string program, std::string summary, std::string profile_help,
               Kind kind = Kind::units);
-  // A study of the registry (registry.hpp): its program, --profile help, kind (level_cache),
+  // A study of the registry (registry.hpp): its program, --profile help, kind (own_seeds),
   // levels per profile and columns are the entry's, so levels() and open(params, key) need
   // no more.  The entry must outlive the runner.
   StudyRunner(const RegisteredStudy& study, std::string summary);
@@ -159,9 +157,6 @@ class StudyRunner {
   // and returns false: nothing else is to be written.  Run mode: the closing line; true.
   bool finish();
 
-  // For a study without a unit cache (one table rewritten after each level): wall time and
-  // peak memory into `t`'s header, `t` written atomically to out(), `line` printed.
-  void save_level(TsvTable& t, double work, const std::string& line);
 
   // Seconds since parse().
   double elapsed_s() const;
