@@ -34,6 +34,7 @@
 #include "gpm/geometry/volumes.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/solvers/heat.hpp"
+#include "gpm/solvers/heat_krylov.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/studies/catalog.hpp"
@@ -70,6 +71,16 @@ void write_rates_input(LevelCache& cache, const std::string& path) {
   }
   add_provenance(t);
   t.save(path);
+}
+
+// The propagator that made a stored unit's row (stepped where the file has none), for
+// --verify/--recheck: a row is recomputed the way it was made.
+HeatPropagator stored_propagator(LevelCache& cache, const std::vector<std::string>& key) {
+  const TsvTable& d = cache.table();
+  for (std::size_t i = 0; i < d.rows.size(); ++i)
+    if (d.text(i, "weight") == key[0] && d.text(i, "theta") == key[1] && d.text(i, "level") == key[2])
+      return parse_heat_propagator(d.text(i, "propagator"));
+  return HeatPropagator::stepped;
 }
 
 // A path with "{reading}" replaced by the reading's store suffix.
@@ -119,6 +130,10 @@ int body(int argc, char** argv) {
       .opt("thetas", "", "run only these theta of the table (comma list; default: all of them)")
       .opt("weights", "", "run only these weights (comma list; default: all three)")
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
+      .opt("propagator", "auto", "stepped: the theta-method step by step (the reference); krylov: the\n"
+                                 "  recurrence propagated exactly in a Krylov subspace (heat_krylov.hpp);\n"
+                                 "  auto: per series, the one with fewer predicted Laplacian products.\n"
+                                 "  --verify/--recheck recompute each row by the propagator that made it")
       .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB)");
   run.parse(argc, argv);
   const HeatTable& ts = heat_table(a.str("table"));
@@ -157,6 +172,11 @@ int body(int argc, char** argv) {
         throw InputError("--weights: '" + w + "' is not a weight of the heat tables");
   }
   const auto storage = parse_laplacian_storage(a.str("storage"));
+  const HeatPropagator how = parse_heat_propagator(a.str("propagator"));
+  const bool rechecking = run.mode() == CacheMode::verify || run.mode() == CacheMode::recheck;
+  if (rechecking && a.has("propagator"))
+    throw InputError("--propagator with --verify/--recheck: each stored row is recomputed by the "
+                     "propagator that made it (its column 'propagator')");
   const double max_bytes = a.positive("max-gb") * 1e9;
   // The table's units (registry.cpp): one series (weight, θ) per level and h rule, in the
   // order (level, h rule, weight, θ); --levels, else the profile's levels.  Kept: those of
@@ -243,6 +263,7 @@ int body(int argc, char** argv) {
       std::map<PdeVolumes, DiscreteLaplacian::Volumes> other;
       std::vector<std::size_t> here;
       std::vector<HeatSetting> settings;
+      std::vector<HeatPropagator> hows;
       for (std::size_t u = 0; u < todo.size(); ++u) {
         const PdeSetup& r = readings[todo[u].reading];
         if (done[u] || (r.volumes != own && !shares)) continue;
@@ -255,8 +276,10 @@ int body(int argc, char** argv) {
           s.volumes = &other.at(r.volumes);
         }
         here.push_back(u), settings.push_back(s), done[u] = true;
+        hows.push_back(rechecking ? stored_propagator(*caches[todo[u].reading], {wname, fmt(todo[u].theta), fmt(k)})
+                                  : how);
       }
-      const std::vector<HeatResult> rs = solve_heat_block(p, L, settings);
+      const std::vector<HeatResult> rs = run_heat(p, L, settings, hows, dx);
       for (std::size_t i = 0; i < here.size(); ++i) {
         const Todo& t = todo[here[i]];
         const HeatResult& res = rs[i];
@@ -267,6 +290,7 @@ int body(int argc, char** argv) {
         row["weight"] = wname, row["theta"] = fmt(t.theta), row["level"] = fmt(k);
         row["dx"] = fmt(dx), row["h"] = fmt(h), row["N"] = fmt(p.size());
         row["N_omega"] = fmt(L.n_unknowns()), row["storage"] = L.assembled() ? "assembled" : "matrix_free";
+        row["propagator"] = res.subspace > 0 ? "krylov" : "stepped", row["subspace"] = fmt(res.subspace);
         row["K"] = fmt(static_cast<long long>(res.K)), row["dt"] = fmt(res.dt);
         row["rel_error"] = res.blew_up ? na : fmt(res.rel_error);
         row["rel_error_max"] = res.blew_up ? na : fmt(res.rel_error_max);
@@ -286,6 +310,9 @@ int body(int argc, char** argv) {
         run.unit_done(0, head + (res.blew_up
             ? line_printf("BLOW-UP at step %ld: ||U||/||U0|| = %.3g (x%.3g in the last step)  %.2f s",
                           res.blowup_step, res.growth, res.amplification, res.seconds)
+            : res.subspace > 0
+            ? line_printf("err=%.4e Krylov m=%d  %.0f products  %.2f s", res.rel_error, res.subspace,
+                          res.products, res.seconds)
             : line_printf("err=%.4e CG %.1f it/step  %.3g s/step  %.2f s", res.rel_error,
                           res.mean_cg_iterations, res.seconds_per_step, res.seconds)));
         if (caches[t.reading]->writes() && !rates_input.empty())

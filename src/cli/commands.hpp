@@ -25,6 +25,7 @@ int cmd_smoothing(int argc, char** argv);
 // The result store and its verdicts (store_commands.cpp).
 int cmd_fingerprint(int argc, char** argv);
 int cmd_store_seal(int argc, char** argv);
+int cmd_store_add_columns(int argc, char** argv);
 int cmd_store_rates(int argc, char** argv);
 int cmd_checked_reasons(int argc, char** argv);
 int cmd_verdicts(int argc, char** argv);

@@ -17,6 +17,7 @@
 #include "gpm/operators/testfunctions.hpp"
 #include "gpm/operators/truncation.hpp"
 #include "gpm/solvers/heat.hpp"
+#include "gpm/solvers/heat_krylov.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/solvers/poisson_probes.hpp"
@@ -324,10 +325,14 @@ int cmd_heat(int argc, char** argv) {
       .opt("dt-c", "0.5", "dt0 = dt-c * h^dt-p when --dt is not given (Table 4.5: 0.0025, 2; 4.6: 0.5, 2; 4.7: 0.5, 1)")
       .opt("dt-p", "1", "power of h in dt0")
       .opt("steps", "fit", "fit: K = ceil(T/dt0), dt = T/K; exact: dt = dt0, K = ceil(T/dt0)")
-      .opt("tol", "1e-10", "CG relative residual per implicit step");
+      .opt("tol", "1e-10", "CG relative residual per implicit step")
+      .opt("propagator", "auto", "stepped: the theta-method step by step (the reference); krylov: the\n"
+                                 "  recurrence propagated in a Krylov subspace (heat_krylov.hpp); auto: the\n"
+                                 "  one with fewer predicted Laplacian products");
   a.parse(argc, argv, 2);
   const PdeOptions su = read_pde_options(a);
   const double dx = su.dx, h = su.h;
+  const HeatPropagator how = parse_heat_propagator(a.str("propagator"));
   HeatSetting hs;
   hs.theta = a.num("theta");
   if (!(hs.theta >= 0 && hs.theta <= 1)) throw InputError("--theta: " + a.str("theta") + " is not in [0, 1]");
@@ -342,7 +347,7 @@ int cmd_heat(int argc, char** argv) {
   require_h_connectivity(p, h);
   const DiscreteLaplacian L =
       naming_small_h(a, su.h_opt, [&] { return DiscreteLaplacian(p, V, *su.w, h, su.storage); });
-  const HeatResult r = solve_heat(p, L, hs);
+  const HeatResult r = run_heat(p, L, {hs}, {how}, dx).front();
   TsvTable t = header_from(a, "heat");
   t.set("h_used", h);
   t.set("kappa", hs.kappa);
@@ -350,7 +355,8 @@ int cmd_heat(int argc, char** argv) {
   t.set("volumes", pde_volumes_description(su.volumes));
   t.set("error", "(4.2): max_k ||u-U||_l2(Omega_H) / max_k ||u||_l2(Omega_H)");
   t.columns = {"dx", "h", "N", "N_omega", "volume_mismatch", "theta", "dt", "K", "steps_done",
-               "blew_up", "rel_error", "rel_error_max", "growth_max", "cg_mean_iterations", "seconds"};
+               "blew_up", "rel_error", "rel_error_max", "growth_max", "propagator", "subspace", "products",
+               "cg_mean_iterations", "seconds"};
   TsvRow row = t.named_row();
   row["dx"] = fmt(dx), row["h"] = fmt(h), row["N"] = fmt(p.size()), row["N_omega"] = fmt(L.n_unknowns());
   row["volume_mismatch"] = fmt(V.front() / (dx * dx) - 1), row["theta"] = fmt(hs.theta), row["dt"] = fmt(r.dt);
@@ -359,6 +365,8 @@ int cmd_heat(int argc, char** argv) {
   row["rel_error"] = r.blew_up ? "NA" : fmt(r.rel_error);
   row["rel_error_max"] = r.blew_up ? "NA" : fmt(r.rel_error_max);
   row["growth_max"] = fmt(r.growth_max), row["cg_mean_iterations"] = fmt(r.mean_cg_iterations);
+  row["propagator"] = r.subspace > 0 ? "krylov" : "stepped", row["subspace"] = fmt(r.subspace);
+  row["products"] = fmt(r.products);
   row["seconds"] = fmt(r.seconds);
   t.add_row(row);
   print(t);

@@ -40,6 +40,7 @@ int dispatch(int argc, char** argv) {
       "  smoothing   the Laplacian's smoothing error for a Fourier mode (no particles)\n"
       "  fingerprint the code fingerprint of programs (result-store rows)\n"
       "  store-seal  seal result-store files written before seals (once)\n"
+      "  store-add-columns  add a column with one value to stored rows made before it existed\n"
       "  store-rates the documents' rates judged against the result store: verdicts, boards\n"
       "  checked-reasons  the reasons for differing rates, each checked against the result store\n"
       "  verdicts    page one of the report: a verdict per figure and table of the documents\n"
@@ -60,12 +61,13 @@ int dispatch(int argc, char** argv) {
   if (sub == "fingerprint") return cmd_fingerprint(argc, argv);
   if (sub == "study") return cmd_study(argc, argv);
   if (sub == "store-seal") return cmd_store_seal(argc, argv);
+  if (sub == "store-add-columns") return cmd_store_add_columns(argc, argv);
   if (sub == "store-rates") return cmd_store_rates(argc, argv);
   if (sub == "checked-reasons") return cmd_checked_reasons(argc, argv);
   if (sub == "verdicts") return cmd_verdicts(argc, argv);
   if (sub == "decisions") return cmd_decisions(argc, argv);
   throw InputError("unknown subcommand '" + sub + "'; valid: weights, particles, voronoi, trunc, poisson, "
-                   "heat, smoothing, fingerprint, study, store-seal, store-rates, checked-reasons, verdicts, decisions");
+                   "heat, smoothing, fingerprint, study, store-seal, store-add-columns, store-rates, checked-reasons, verdicts, decisions");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // gpm fingerprint, store-seal, store-rates, checked-reasons, verdicts, decisions: the
 // committed result store, its provenance and the verdicts read from it.
 #include <algorithm>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -119,6 +120,64 @@ int cmd_store_seal(int argc, char** argv) {
       log << std::filesystem::path(path).filename().string() << "\t" << n << " rows\t" << chain << "\n";
     t.save(path);
     std::cout << "sealed " << path << " (" << t.rows.size() << " rows)\n";
+  }
+  return 0;
+}
+
+// gpm store-add-columns: a column added to a study's data file after rows were stored (the
+// heat tables' `propagator` and `subspace`, which every row made before them has as
+// `stepped`, 0).  Every row's seal is verified first (a file with a bad row is refused whole),
+// the cells inserted after the named column, each row re-sealed, and the step logged in
+// rechecks.log beside the file.  It vouches for what the value means for the old rows, nothing
+// else: their numbers are untouched.
+std::string utc_date() {
+  char d[16];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(d, sizeof d, "%Y-%m-%d", std::gmtime(&now));
+  return d;
+}
+
+int cmd_store_add_columns(int argc, char** argv) {
+  Args a("gpm store-add-columns",
+         "Adds columns with one value to every row of result-store files written before they\n"
+         "existed: seals verified, cells inserted after --after, rows re-sealed, logged.");
+  a.opt("after", "", "the column the new ones follow (required)")
+      .opt("add", "", "NAME=VALUE[,NAME=VALUE…]: the new columns and their value (required)")
+      .opt("files", "", "comma list of store files (required)");
+  a.parse(argc, argv, 2);
+  for (const char* o : {"after", "add", "files"})
+    if (a.str(o).empty()) throw InputError("gpm store-add-columns: --" + std::string(o) + " is required");
+  std::vector<std::pair<std::string, std::string>> add;
+  for (auto& item : a.list("add")) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos || eq == 0) throw InputError("--add: '" + item + "' is not NAME=VALUE");
+    add.push_back({item.substr(0, eq), item.substr(eq + 1)});
+  }
+  for (auto& path : a.list("files")) {
+    TsvTable t = TsvTable::load(path);
+    const int after = t.column(a.str("after"));
+    if (after < 0) throw InputError(path + ": no column '" + a.str("after") + "'");
+    if (t.column("seal") != static_cast<int>(t.columns.size()) - 1)
+      throw InputError(path + ": not a sealed store file (its last column is not 'seal')");
+    for (auto& [name, value] : add)
+      if (t.column(name) >= 0) throw InputError(path + ": has a column '" + name + "' already");
+    for (std::size_t r = 0; r < t.rows.size(); ++r)
+      if (t.rows[r].size() != t.columns.size() || t.rows[r].back() != row_seal(t.rows[r]))
+        throw InputError(path + " line " + std::to_string(t.row_lines[r]) +
+                         ": its seal does not match its cells; nothing written");
+    std::vector<std::string> names, values;
+    for (auto& [name, value] : add) names.push_back(name), values.push_back(value);
+    t.columns.insert(t.columns.begin() + after + 1, names.begin(), names.end());
+    for (auto& row : t.rows) {
+      row.insert(row.begin() + after + 1, values.begin(), values.end());
+      row.back() = row_seal(row);
+    }
+    t.save(path);
+    std::ofstream log(std::filesystem::path(path).parent_path() / "rechecks.log", std::ios::app);
+    log << std::filesystem::path(path).filename().string() << "\t" << t.rows.size() << " rows\t"
+        << "columns added " << utc_date() << " after " << a.str("after") << ": " << a.str("add") << "\n";
+    if (!log) throw InputError(path + ": cannot append to rechecks.log");
+    std::cout << "added " << a.str("add") << " to " << path << " (" << t.rows.size() << " rows)\n";
   }
   return 0;
 }

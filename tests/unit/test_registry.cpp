@@ -62,16 +62,20 @@ TEST_CASE("registry: every catalog study is priced, every registered file has un
 
 TEST_CASE("registry: a heat data file read back per unit", "[unit][registry]") {
   TsvTable d;
-  d.columns = {"weight", "theta", "level", "seconds", "steps_done", "cg_mean_iterations"};
-  d.add_row({"quartic_polynomial", "1", "6", "2.5", "10", "3"});
-  d.add_row({"quartic_polynomial", "0", "6", "0.5", "10", "0"});
+  d.columns = {"weight", "theta", "level", "propagator", "subspace", "seconds", "steps_done", "cg_mean_iterations"};
+  d.add_row({"quartic_polynomial", "1", "6", "stepped", "0", "2.5", "10", "3"});
+  d.add_row({"quartic_polynomial", "0", "6", "stepped", "0", "0.5", "10", "0"});
+  d.add_row({"quartic_polynomial", "0.5", "6", "krylov", "90", "0.2", "10", "0"});
   const PlannedPairs planned = {{{"quartic_polynomial/theta=1", 6}, 1000.0},
-                                {{"quartic_polynomial/theta=0", 6}, 1000.0}};
+                                {{"quartic_polynomial/theta=0", 6}, 1000.0},
+                                {{"quartic_polynomial/theta=0.5", 6}, 1000.0}};
   const auto r = recorded_units("thesis_table4_6_h15", d, planned);
-  REQUIRE(r.size() == 2);
-  // θ = 1: (CG its + 1) products per step; θ = 0: one.
+  REQUIRE(r.size() == 3);
+  // θ = 1: (CG its + 1) products per step; θ = 0: one; propagated: its share of the subspace's
+  // m products (the table's three θ share one subspace).
   CHECK(r.at({"quartic_polynomial/theta=1", 6}).pair_interactions == Approx(1000.0 * 10 * 4));
   CHECK(r.at({"quartic_polynomial/theta=0", 6}).pair_interactions == Approx(1000.0 * 10 * 1));
+  CHECK(r.at({"quartic_polynomial/theta=0.5", 6}).pair_interactions == Approx(1000.0 * 90 / 3));
   CHECK(r.at({"quartic_polynomial/theta=1", 6}).seconds == 2.5);
 }
 

@@ -306,10 +306,11 @@ TEST_CASE("store: a recheck against the current code's own rows carries nothing 
     if (r[0] == "6") CHECK(r[code] == "0123456789ab");
 }
 
-// A solver residual (~1e-11) is compared absolutely (kStoreResidualAbsTol): its relative
-// change from rounding alone (~1e-6) is not a change of the numerics; a residual that moves
-// by more than the absolute tolerance still is.
-TEST_CASE("store: residual columns are compared absolutely", "[unit][store]") {
+// A solver residual (~1e-11) is compared on its own scale (kStoreResidualAbsTol, or
+// kStoreResidualRelTol of it): its change from rounding alone (~1e-6 relative on one CPU, 4 %
+// after 80 CG iterations on another vector width) is not a change of the numerics; a residual
+// that moves by more than that still is.
+TEST_CASE("store: residual columns are compared on their own scale", "[unit][store]") {
   TempDir t("gpm_store_");
   const std::string f = t.file("r.tsv");
   const std::vector<std::string> cols = {"level", "rel_error", "max_rel_residual"};
@@ -321,5 +322,7 @@ TEST_CASE("store: residual columns are compared absolutely", "[unit][store]") {
   };
   study(CacheMode::run, 6.753016866560343e-11);
   REQUIRE_NOTHROW(study(CacheMode::verify, 6.753015449936592e-11));  // rounding: 2e-6 relative
-  REQUIRE_THROWS_AS(study(CacheMode::verify, 6.753e-11 + 5 * kStoreResidualAbsTol), StoreMismatch);
+  REQUIRE_NOTHROW(study(CacheMode::verify, 6.753016866560343e-11 * 1.042));  // another CPU: 4.2 %
+  REQUIRE_THROWS_AS(study(CacheMode::verify, 6.753016866560343e-11 * 1.2), StoreMismatch);
+  REQUIRE_THROWS_AS(study(CacheMode::verify, 1e-9), StoreMismatch);  // a looser solve
 }

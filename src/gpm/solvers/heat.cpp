@@ -26,6 +26,32 @@ double heat_exact(double x, double y, double t, double kappa) {
   return std::exp(-2 * kappa * pi * pi * t) * std::sin(pi * x) * std::sin(pi * y);
 }
 
+HeatExample heat_example(const Particles& p, const DiscreteLaplacian& L,
+                         const DiscreteLaplacian::Volumes* volumes, double kappa) {
+  HeatExample ex;
+  ex.lambda = 2 * kappa * std::numbers::pi * std::numbers::pi;
+  const auto& omega = L.omega();
+  const auto& V = volumes ? volumes->all : L.volumes();
+  const Eigen::Index n = static_cast<Eigen::Index>(omega.size());
+  // The spatial profile s(x) = ũ(x, 0) at every particle, its boundary part ŝ and c = (M ŝ)_Ω.
+  std::vector<double> prof(p.size());
+  Eigen::VectorXd shat(static_cast<Eigen::Index>(p.size()));
+  double all_l2sq = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    prof[i] = heat_exact(p.x[i], p.y[i], 0, kappa);
+    shat[i] = p.in_omega[i] ? 0.0 : prof[i];
+    all_l2sq += V[i] * prof[i] * prof[i];
+    if (!p.in_omega[i]) ex.out_l2sq += V[i] * prof[i] * prof[i];
+  }
+  L.apply_full(shat, ex.c, volumes);
+  ex.d.resize(n), ex.sk.resize(n);
+  for (Eigen::Index k = 0; k < n; ++k) ex.d[k] = V[omega[k]], ex.sk[k] = prof[omega[k]];
+  for (Eigen::Index k = 0; k < n; ++k) ex.max_exact = std::max(ex.max_exact, std::fabs(ex.sk[k]));
+  // Norms: ‖ũ^k‖_{ℓ²(Ω_H)} = e(t^k)·‖s‖ decreases, so its maximum is at k = 0.
+  ex.ref_l2 = std::sqrt(all_l2sq);
+  return ex;
+}
+
 namespace {
 
 using RowBlock = DiscreteLaplacian::RowBlock;
@@ -87,27 +113,10 @@ HeatSeries::HeatSeries(const Particles& p, const DiscreteLaplacian& L, const Hea
   res_.K = heat_steps(s.T, s.dt_nominal);
   res_.dt = s.fit_T ? s.T / static_cast<double>(res_.K) : s.dt_nominal;
   kdt_ = s.kappa * res_.dt, th_ = s.theta;
-  lambda_ = 2 * s.kappa * std::numbers::pi * std::numbers::pi;
-  const auto& omega = L.omega();
-  const auto& V = s.volumes ? s.volumes->all : L.volumes();
-  const Eigen::Index n = static_cast<Eigen::Index>(omega.size());
-
-  // The spatial profile s(x) = ũ(x, 0) at every particle, its boundary part ŝ and c = (M ŝ)_Ω.
-  std::vector<double> prof(p.size());
-  Eigen::VectorXd shat(static_cast<Eigen::Index>(p.size()));
-  double all_l2sq = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    prof[i] = heat_exact(p.x[i], p.y[i], 0, s.kappa);
-    shat[i] = p.in_omega[i] ? 0.0 : prof[i];
-    all_l2sq += V[i] * prof[i] * prof[i];
-    if (!p.in_omega[i]) out_l2sq_ += V[i] * prof[i] * prof[i];
-  }
-  L.apply_full(shat, c_, s.volumes);
-  d_.resize(n), sk_.resize(n);
-  for (Eigen::Index k = 0; k < n; ++k) d_[k] = V[omega[k]], sk_[k] = prof[omega[k]];
-  for (Eigen::Index k = 0; k < n; ++k) max_exact_ = std::max(max_exact_, std::fabs(sk_[k]));
-  // Norms: ‖ũ^k‖_{ℓ²(Ω_H)} = e(t^k)·‖s‖ decreases, so its maximum is at k = 0.
-  ref_l2_ = std::sqrt(all_l2sq);
+  HeatExample ex = heat_example(p, L, s.volumes, s.kappa);
+  lambda_ = ex.lambda;
+  c_ = std::move(ex.c), d_ = std::move(ex.d), sk_ = std::move(ex.sk);
+  out_l2sq_ = ex.out_l2sq, ref_l2_ = ex.ref_l2, max_exact_ = ex.max_exact;
   U_ = sk_;
   u0_ = prev_norm_ = norm_l2(U_, 1.0);
 }
@@ -151,6 +160,7 @@ void HeatSeries::end_step(long k) {
     res_.max_rel_residual = std::max(res_.max_rel_residual, r.rel_residual);
   }
   res_.steps_done = k + 1;
+  if (s_.observe) s_.observe(k + 1, U_);
   // Blow-up check before the error: a growing unstable mode must stop the run.
   const double un = norm_l2(U_, ek1_);
   res_.growth_max = std::max(res_.growth_max, un / u0_);
@@ -174,6 +184,7 @@ void HeatSeries::end_step(long k) {
 
 HeatResult HeatSeries::finish(double seconds) {
   res_.seconds = seconds;
+  res_.products = static_cast<double>(products_);
   res_.seconds_per_step = seconds / static_cast<double>(std::max(1L, res_.steps_done));
   res_.mean_cg_iterations =
       static_cast<double>(cg_total_) / static_cast<double>(std::max(1L, res_.steps_done));

@@ -26,6 +26,7 @@
 // Blow-up: if ‖U^k‖_{ℓ²(Ω_H)} exceeds blowup_factor·‖U^0‖ or any value is not finite, the run
 // stops and reports the step, the growth ‖U^k‖/‖U^0‖ and the last one-step amplification.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,10 @@ struct HeatSetting {
   // Laplacian more); nullptr: the Laplacian's own.  The series' numbers equal those of a
   // Laplacian built with these volumes, bit for bit.
   const DiscreteLaplacian::Volumes* volumes = nullptr;
+  // Called after every step k = 1 … steps_done with U^k on the unknowns; empty: nothing is
+  // formed (the Krylov propagator forms U^k only for this).  The tests compare the two
+  // propagators' trajectories through it.
+  std::function<void(long, const Eigen::VectorXd&)> observe;
 };
 
 struct HeatResult {
@@ -68,7 +73,23 @@ struct HeatResult {
   double seconds = 0, seconds_per_step = 0;
   double mean_cg_iterations = 0;
   double max_rel_residual = 0;  // largest final CG residual over the implicit steps
+  double products = 0;          // Laplacian products spent on the series (its share of a
+                                // shared Krylov subspace's)
+  int subspace = 0;             // Krylov propagator: the subspace dimension m; 0 when stepped
 };
+
+// The fixed vectors of §4.3's example on one Laplacian and volumes, which every propagator
+// of the θ-method starts from: V at the unknowns (d), the profile s = ũ(·, 0) there (sk),
+// the boundary forcing c = (M ŝ)_Ω, and the norms' constant parts.
+struct HeatExample {
+  Eigen::VectorXd d, sk, c;
+  double out_l2sq = 0;   // Σ_{x_i ∉ Ω} V_i s_i²: the boundary part of ‖ũ(·, t)‖² / e(t)²
+  double ref_l2 = 0;     // ‖ũ(·, 0)‖_{ℓ²(Ω_H)}, the denominator of (4.2)
+  double max_exact = 0;  // max_Ω |s|, the denominator of the ℓ∞ error
+  double lambda = 0;     // e(t) = exp(−λt), λ = 2κπ²
+};
+HeatExample heat_example(const Particles& p, const DiscreteLaplacian& L,
+                         const DiscreteLaplacian::Volumes* volumes, double kappa);
 
 // K = ⌈T/Δt₀⌉ with a relative slack of 1e-12 (so Δt₀ = T/10 gives K = 10, not 11).
 long heat_steps(double T, double dt_nominal);

@@ -80,7 +80,7 @@ const std::vector<PdeSetup>& pde_setups() {
 
 const std::vector<std::string>& heat_columns() {
   static const std::vector<std::string> c = {
-      "weight", "theta", "level", "dx", "h", "N", "N_omega", "storage", "K", "dt", "rel_error",
+      "weight", "theta", "level", "dx", "h", "N", "N_omega", "storage", "propagator", "subspace", "K", "dt", "rel_error",
       "rel_error_max", "growth_max", "blew_up", "blowup_step", "growth", "amplification",
       "steps_done", "cg_mean_iterations", "max_rel_residual", "s_per_step", "seconds"};
   return c;

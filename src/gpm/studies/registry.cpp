@@ -338,26 +338,41 @@ RegisteredStudy heat(const HeatTable& hp) {
     const double th = parse_number(su.key[1], "theta"), K = p.heat_steps(hp.table, su.h);
     PlanUnit u = p.base(study, su.variant, k, su.h);
     const double its = p.heat_cg_its(hp.table, rule, w, th, su.h);
-    u.products = K * (1 + its);
+    const double stepped = K * (1 + its);
     u.method = a.method;
-    u.time_s = u.products * p.product_s(u, as);
-    u.time_before_s = u.products * p.product_before_s(u);
     u.mem_mib = a.mem_mib;
-    u.basis = "K=" + fmt(K) + " steps, " + fmt(std::round(its * 10) / 10) + " CG its/step";
+    u.time_before_s = stepped * p.product_before_s(u);
+    if (p.heat_krylov_chosen(u, stepped)) {
+      // The default propagator (auto) runs it in the Krylov subspace its table's θ share
+      // (one subspace per level, h rule, weight and volumes): its share of that.
+      const double n = static_cast<double>(hp.thetas.size());
+      u.products = p.heat_krylov_dim(u) / n;
+      u.time_s = p.heat_krylov_s(u, as) / n;
+      u.basis = "K=" + fmt(K) + " steps, Krylov m=" + fmt(std::round(p.heat_krylov_dim(u))) + " shared by " +
+                fmt(hp.thetas.size()) + " series";
+    } else {
+      u.products = stepped;
+      u.time_s = u.products * p.product_s(u, as);
+      u.basis = "K=" + fmt(K) + " steps, " + fmt(std::round(its * 10) / 10) + " CG its/step";
+    }
     p.units().push_back(u);
   };
   // A heat row does not record its non-zeros: its work is the steps done × products per
   // step (from its mean CG iterations) × the plan's non-zeros.
-  s.recorded = [](const std::string&, const TsvTable& d, const PlannedPairs& planned, RecordedUnits& out) {
+  s.recorded = [&hp](const std::string&, const TsvTable& d, const PlannedPairs& planned, RecordedUnits& out) {
     const Rows rows{d, out};
     for (auto& r : d.rows) {
       const std::string var = rows.text(r, "weight") + "/theta=" + rows.text(r, "theta");
       const int k = rows.level(r);
       const double th = rows.v(r, "theta");
       const double per_step = (th < 1 ? 1 : 0) + (th > 0 ? rows.v(r, "cg_mean_iterations") + 1 : 0);
+      // A Krylov row: its share of the subspace's m products (the table's θ share one).
+      const bool krylov = d.column("propagator") >= 0 && rows.text(r, "propagator") == "krylov";
+      const double products = krylov
+                                  ? rows.v(r, "subspace") / static_cast<double>(hp.thetas.size())
+                                  : rows.v(r, "steps_done") * per_step;
       auto it = planned.find({var, k});
-      rows.put(var, k, rows.v(r, "seconds"),
-               it == planned.end() ? kNaN : it->second * rows.v(r, "steps_done") * per_step);
+      rows.put(var, k, rows.v(r, "seconds"), it == planned.end() ? kNaN : it->second * products);
     }
   };
   return s;

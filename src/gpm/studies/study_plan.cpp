@@ -17,6 +17,7 @@
 #include "gpm/operators/testfunctions.hpp"
 #include "gpm/operators/truncation.hpp"
 #include "gpm/solvers/heat.hpp"
+#include "gpm/solvers/heat_krylov.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/solvers/poisson_probes.hpp"
@@ -427,6 +428,18 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c, const St
   return pricer.units();
 }
 
+double UnitPricer::heat_krylov_dim(const PlanUnit& u) const { return heat_krylov_products(u.dx, u.h); }
+
+double UnitPricer::heat_krylov_s(const PlanUnit& u, bool assembled) const {
+  const double m = heat_krylov_dim(u);
+  return m * product_s(u, assembled) +
+         2 * u.targets * m * m * c_.spmv_s_per_nnz * 8 / kAssembledBytesPerNonzero;
+}
+
+bool UnitPricer::heat_krylov_chosen(const PlanUnit& u, double stepped_products) const {
+  return stepped_products > heat_krylov_dim(u);
+}
+
 // --- The heat reading matrix priced three ways ---------------------------------------------
 
 namespace {
@@ -490,6 +503,17 @@ std::vector<HeatMatrixCost> heat_matrix_costs(Profile profile, const Calibration
           // set-up); matrix-free, each volumes choice has its own Laplacian and no block pass.
           m.batched_s += assembled ? 2 * setup + K * group_step_s(all, single, true, c)
                                    : 2 * (setup + K * group_step_s(one_volumes, single, false, c));
+          // Propagated: per volumes choice, one subspace for the series auto sends there, the
+          // rest stepped together (a volumes choice's series: both time-step rules, every θ).
+          std::vector<double> stepped;
+          bool any_krylov = false;
+          for (double n : its) {
+            const double products = K * (1 + n);
+            if (pricer.heat_krylov_chosen(u, products)) any_krylov = true;
+            else stepped.insert(stepped.end(), 2, n);
+          }
+          m.propagated_s += 2 * (setup + (any_krylov ? pricer.heat_krylov_s(u, assembled) : 0) +
+                                 (stepped.empty() ? 0 : K * group_step_s(stepped, single, assembled, c)));
         }
       }
     }

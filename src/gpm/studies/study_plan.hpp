@@ -128,6 +128,15 @@ class UnitPricer {
   double heat_steps(const std::string& table, double h) const;
   double heat_cg_its(const std::string& table, HRule rule, const std::string& weight,
                      double theta, double h) const;
+  // The heat propagator's Krylov subspace (heat_krylov.hpp) for the unit's level and h: its
+  // dimension m (heat_krylov_products), and its seconds: m products plus the full
+  // re-orthogonalization, 2·N_Ω·m² basis entries streamed at the assembled product's bytes
+  // per second (8 bytes each against kAssembledBytesPerNonzero per non-zero).
+  double heat_krylov_dim(const PlanUnit& u) const;
+  double heat_krylov_s(const PlanUnit& u, bool assembled) const;
+  // Whether thesis_heat's default propagator (auto) sends a series of `products` predicted
+  // stepped products to the subspace.
+  bool heat_krylov_chosen(const PlanUnit& u, double stepped_products) const;
 
  private:
   Profile profile_;
@@ -142,10 +151,13 @@ class UnitPricer {
 //   batched     one run per table, every series of a (level, h rule, weight) in one block
 //               stream (thesis_heat with lists; matrix-free units gain nothing: no block pass).
 // Laplacian set-ups included (per reading, or per h rule when batched).
+//   propagated  batched, every series by the default propagator (auto): a series whose
+//               stepped products exceed the subspace's dimension joins the one Krylov
+//               subspace of its (level, h rule, weight, volumes), the others step as batched.
 struct HeatMatrixCost {
   std::string table;
   int series = 0;
-  double alone_s = 0, per_reading_s = 0, batched_s = 0;
+  double alone_s = 0, per_reading_s = 0, batched_s = 0, propagated_s = 0;
 };
 std::vector<HeatMatrixCost> heat_matrix_costs(Profile profile, const Calibration& c);
 
