@@ -1,7 +1,6 @@
 // gpm fingerprint, store-seal, store-rates, checked-reasons, verdicts, decisions: the
 // committed result store, its provenance and the verdicts read from it.
 #include <algorithm>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -130,13 +129,6 @@ int cmd_store_seal(int argc, char** argv) {
 // the cells inserted after the named column, each row re-sealed, and the step logged in
 // rechecks.log beside the file.  It vouches for what the value means for the old rows, nothing
 // else: their numbers are untouched.
-std::string utc_date() {
-  char d[16];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(d, sizeof d, "%Y-%m-%d", std::gmtime(&now));
-  return d;
-}
-
 int cmd_store_add_columns(int argc, char** argv) {
   Args a("gpm store-add-columns",
          "Adds columns with one value to every row of result-store files written before they\n"
@@ -175,7 +167,7 @@ int cmd_store_add_columns(int argc, char** argv) {
     t.save(path);
     std::ofstream log(std::filesystem::path(path).parent_path() / "rechecks.log", std::ios::app);
     log << std::filesystem::path(path).filename().string() << "\t" << t.rows.size() << " rows\t"
-        << "columns added " << utc_date() << " after " << a.str("after") << ": " << a.str("add") << "\n";
+        << "columns added " << today() << " after " << a.str("after") << ": " << a.str("add") << "\n";
     if (!log) throw InputError(path + ": cannot append to rechecks.log");
     std::cout << "added " << a.str("add") << " to " << path << " (" << t.rows.size() << " rows)\n";
   }

@@ -103,14 +103,14 @@ bool is_volatile_column(const std::string& n) {
          std::find(prov.begin(), prov.end(), n) != prov.end();
 }
 
-namespace {
-
 std::string today() {
   char d[16];
   const std::time_t now = std::time(nullptr);
   std::strftime(d, sizeof d, "%Y-%m-%d", std::gmtime(&now));
   return d;
 }
+
+namespace {
 
 // Relative difference of two cells, or −1 if they differ as texts (not both numbers).
 // The difference of two cells on the scale of kStoreRelTol (-1: not comparable numbers).

@@ -50,6 +50,9 @@ constexpr double kStoreRelTol = 1e-9;
 constexpr double kStoreResidualAbsTol = 1e-13;
 constexpr double kStoreResidualRelTol = 0.1;
 
+// Today's date (UTC, YYYY-MM-DD), as re-check records and logs write it.
+std::string today();
+
 // The provenance columns every store row ends with.
 const std::vector<std::string>& row_provenance_columns();
 // The seal of a row: 16 hex digits of a 64-bit FNV-1a hash of every cell but `checked` and
