@@ -16,7 +16,7 @@
 # Inputs: -DSRC=<source dir> -DOUT=<generated .cpp> -DFLAGS=<compiler, version, flags>
 cmake_minimum_required(VERSION 3.22)
 set(io_only args command_line error progress profile cost_model study_plan provenance store runner
-  rates setup_identification verdicts text_format checked_reasons heat_mode_model page_verdicts decisions registry)
+  rates rate_levels setup_identification verdicts text_format checked_reasons heat_mode_model page_verdicts decisions registry)
 file(GLOB_RECURSE core ${SRC}/src/gpm/*.cpp ${SRC}/src/gpm/*.hpp)
 list(SORT core)
 set(core_text "")

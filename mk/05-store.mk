@@ -25,6 +25,15 @@ $(DATA)/store_rates.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published
 	  --ident $(DATA)/setup_identification.tsv
 $(DATA)/store_summary.tsv $(DATA)/store_score.tsv $(DATA)/setup_identification.tsv: $(DATA)/store_rates.tsv ;
 
+# The heat rates at every pair of stored levels and whether they approach the theory's (the
+# thesis' conjecture): gpm rate-levels, src/gpm/studies/rate_levels.hpp.
+DATAFILES += $(DATA)/rate_levels.tsv $(DATA)/rate_levels_findings.tsv
+$(DATA)/rate_levels.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published/thesis_table4_*_long.tsv)
+	@mkdir -p $(DATA)
+	$(BUILD)/gpm rate-levels --store $(STORE) --published tables/published --out $@ \
+	  --findings $(DATA)/rate_levels_findings.tsv
+$(DATA)/rate_levels_findings.tsv: $(DATA)/rate_levels.tsv ;
+
 # The documents' open set-up questions, with the evidence the stored runs give (every number
 # read from the store or computed by the library: gpm decisions, src/gpm/studies/decisions.hpp).
 DATAFILES += $(DATA)/decisions.tsv

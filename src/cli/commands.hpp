@@ -27,6 +27,7 @@ int cmd_fingerprint(int argc, char** argv);
 int cmd_store_seal(int argc, char** argv);
 int cmd_store_add_columns(int argc, char** argv);
 int cmd_store_rates(int argc, char** argv);
+int cmd_rate_levels(int argc, char** argv);
 int cmd_checked_reasons(int argc, char** argv);
 int cmd_verdicts(int argc, char** argv);
 int cmd_decisions(int argc, char** argv);

@@ -42,6 +42,7 @@ int dispatch(int argc, char** argv) {
       "  store-seal  seal result-store files written before seals (once)\n"
       "  store-add-columns  add a column with one value to stored rows made before it existed\n"
       "  store-rates the documents' rates judged against the result store: verdicts, boards\n"
+      "  rate-levels the heat tables' rates at every pair of stored levels: toward the theory?\n"
       "  checked-reasons  the reasons for differing rates, each checked against the result store\n"
       "  verdicts    page one of the report: a verdict per figure and table of the documents\n"
       "  decisions   the documents' open set-up questions with the result store's evidence\n"
@@ -63,11 +64,12 @@ int dispatch(int argc, char** argv) {
   if (sub == "store-seal") return cmd_store_seal(argc, argv);
   if (sub == "store-add-columns") return cmd_store_add_columns(argc, argv);
   if (sub == "store-rates") return cmd_store_rates(argc, argv);
+  if (sub == "rate-levels") return cmd_rate_levels(argc, argv);
   if (sub == "checked-reasons") return cmd_checked_reasons(argc, argv);
   if (sub == "verdicts") return cmd_verdicts(argc, argv);
   if (sub == "decisions") return cmd_decisions(argc, argv);
   throw InputError("unknown subcommand '" + sub + "'; valid: weights, particles, voronoi, trunc, poisson, "
-                   "heat, smoothing, fingerprint, study, store-seal, store-add-columns, store-rates, checked-reasons, verdicts, decisions");
+                   "heat, smoothing, fingerprint, study, store-seal, store-add-columns, store-rates, rate-levels, checked-reasons, verdicts, decisions");
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "gpm/studies/checked_reasons.hpp"
 #include "gpm/studies/decisions.hpp"
 #include "gpm/studies/page_verdicts.hpp"
+#include "gpm/studies/rate_levels.hpp"
 #include "gpm/studies/rates.hpp"
 #include "gpm/studies/registry.hpp"
 #include "gpm/studies/setup_identification.hpp"
@@ -170,6 +171,41 @@ int cmd_store_add_columns(int argc, char** argv) {
         << "columns added " << today() << " after " << a.str("after") << ": " << a.str("add") << "\n";
     if (!log) throw InputError(path + ": cannot append to rechecks.log");
     std::cout << "added " << a.str("add") << " to " << path << " (" << t.rows.size() << " rows)\n";
+  }
+  return 0;
+}
+
+// gpm rate-levels: the heat tables' rates at every consecutive pair of stored levels, with
+// their seed bands, beside the published and the theory's rates, and a finding per series
+// (rate_levels.hpp): whether the rates approach Theorem 3.7's as the thesis conjectured.
+int cmd_rate_levels(int argc, char** argv) {
+  Args a("gpm rate-levels",
+         "The heat tables' two-level rates at every consecutive pair of stored levels (printed and\n"
+         "identified reading), with seed bands, beside the published and the theory's rates; and\n"
+         "per series whether the rates approach the theory's (src/gpm/studies/rate_levels.hpp).");
+  a.opt("store", "results/paper", "the result store")
+      .opt("published", "tables/published", "the published values (thesis_table4_N_long.tsv)")
+      .output("out", "", "the rates per pair of levels (required)")
+      .output("findings", "", "one finding per table, reading, weight and theta (optional)");
+  a.parse(argc, argv, 2);
+  if (a.str("out").empty()) throw InputError("gpm rate-levels: --out is required");
+  require_directories({{"store", a.str("store")}, {"published", a.str("published")}});
+  RateLevels r = rate_levels(a.str("store"), a.str("published"));
+  const Lines lines = {{"tolerance", fmt(kRateTolerance)},
+                       {"rate", "log(e1/e2)/log(h1/h2) of rel_error (4.2) between consecutive stored levels"},
+                       {"band", "min and max of the rate over seed 1 and the stored realizations <file>_seedN holding both levels"},
+                       {"where", "document: the documents' pair; beyond: finer than their finest level; coarser"}};
+  TsvTable out = verdicts_header("gpm rate-levels", a.str("store"), false, lines);
+  out.columns = r.rates.columns, out.rows = r.rates.rows;
+  out.save(a.str("out"));
+  if (!a.str("findings").empty()) {
+    TsvTable f = verdicts_header("gpm rate-levels --findings", a.str("store"), false,
+                                 {{"rule", "approaches: the last two rates within the tolerance of the theory's, or the "
+                                           "distance falling over the last three pairs with the last within 0.3; stays "
+                                           "away: the finest pair beyond the documents, more than 0.3 off and no nearer "
+                                           "than the pair before; otherwise not decided"}});
+    f.columns = r.findings.columns, f.rows = r.findings.rows;
+    f.save(a.str("findings"));
   }
   return 0;
 }

@@ -1,0 +1,43 @@
+// Rates against level: the thesis' conjecture tested (issue 40).  For Tables 4.5–4.7 the
+// thesis finds rates far from Theorem 3.7's and suggests its levels were not yet asymptotic.
+// This computes, per table, reading (the printed h10 and the identified h15_cell_exact),
+// weight and θ, the two-level rate log(e₁/e₂)/log(h₁/h₂) at every consecutive pair of stored
+// levels, the band over the stored jitter realizations of that pair (seed 1 and every
+// `<file>_seedN`), the published rate at the documents' pair and the theory's rate, and a
+// finding per series:
+//   approaches    the last two rates within the tolerance of the theory's, or the distance
+//                 to it falling over the last three with the last within 0.3;
+//   stays away    the finest pair lies beyond the documents, its rate is more than 0.3 from
+//                 the theory's and no nearer than the pair before (by the tolerance);
+//   not decided   otherwise, with what would decide it.
+// Everything is read from the result store; nothing is run.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "gpm/io/tsv.hpp"
+
+namespace gpm {
+
+enum class Trend { approaches, stays_away, not_decided };
+std::string trend_name(Trend t);  // "approaches", "stays away", "not decided"
+
+struct TrendFinding {
+  Trend trend = Trend::not_decided;
+  std::string why;
+};
+
+// The finding for a series' rates in level order (seed 1), the theory's rate, whether the
+// finest pair lies beyond the documents' levels, and the agreement tolerance.
+TrendFinding judge_trend(const std::vector<double>& rates, double theory, bool finest_beyond,
+                         double tolerance);
+
+// The rows (one per table, reading, weight, θ and pair of levels) and the findings (one per
+// table, reading, weight and θ) of the store at `store` against `published`
+// (thesis_table4_N_long.tsv).  Columns: see rate_levels.cpp.
+struct RateLevels {
+  TsvTable rates, findings;
+};
+RateLevels rate_levels(const std::string& store, const std::string& published);
+
+}  // namespace gpm
