@@ -33,6 +33,10 @@ $(DATA)/rate_levels.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published
 	$(BUILD)/gpm rate-levels --store $(STORE) --published tables/published --out $@ \
 	  --findings $(DATA)/rate_levels_findings.tsv
 $(DATA)/rate_levels_findings.tsv: $(DATA)/rate_levels.tsv ;
+FIGFILES += $(FIGOUT)/thesis_rate_levels.svg
+$(FIGOUT)/thesis_rate_levels.svg: figures/thesis_rate_levels.gp figures/style.gp $(DATA)/rate_levels.tsv
+	@mkdir -p $(FIGOUT)
+	gnuplot -e "datadir='$(DATA)'; out='$@.tmp'" $< && mv $@.tmp $@
 
 # The documents' open set-up questions, with the evidence the stored runs give (every number
 # read from the store or computed by the library: gpm decisions, src/gpm/studies/decisions.hpp).
