@@ -188,7 +188,7 @@ int cmd_rate_levels(int argc, char** argv) {
       .output("out", "", "the rates per pair of levels (required)")
       .output("findings", "", "one finding per table, reading, weight and theta (optional)");
   a.parse(argc, argv, 2);
-  if (a.str("out").empty()) throw InputError("gpm rate-levels: --out is required");
+  const std::string out_path = a.required("out");
   require_directories({{"store", a.str("store")}, {"published", a.str("published")}});
   RateLevels r = rate_levels(a.str("store"), a.str("published"));
   const Lines lines = {{"tolerance", fmt(kRateTolerance)},
@@ -197,7 +197,7 @@ int cmd_rate_levels(int argc, char** argv) {
                        {"where", "document: the documents' pair; beyond: finer than their finest level; coarser"}};
   TsvTable out = verdicts_header("gpm rate-levels", a.str("store"), false, lines);
   out.columns = r.rates.columns, out.rows = r.rates.rows;
-  out.save(a.str("out"));
+  out.save(out_path);
   if (!a.str("findings").empty()) {
     TsvTable f = verdicts_header("gpm rate-levels --findings", a.str("store"), false,
                                  {{"rule", "approaches: the last two rates within the tolerance of the theory's, or the "
