@@ -359,7 +359,7 @@ RegisteredStudy heat(const HeatTable& hp) {
     u.method = a.method;
     u.mem_mib = a.mem_mib;
     u.time_before_s = stepped * p.product_before_s(u);
-    if (p.heat_krylov_chosen(u, stepped)) {
+    if (p.heat_krylov_chosen(u, hp.table, th)) {
       // The default propagator (auto) runs it in the Krylov subspace its table's θ share
       // (one subspace per level, h rule, weight and volumes): its share of that.
       const double n = static_cast<double>(hp.thetas.size());

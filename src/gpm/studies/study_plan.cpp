@@ -436,8 +436,10 @@ double UnitPricer::heat_krylov_s(const PlanUnit& u, bool assembled) const {
          2 * u.targets * m * m * c_.spmv_s_per_nnz * 8 / kAssembledBytesPerNonzero;
 }
 
-bool UnitPricer::heat_krylov_chosen(const PlanUnit& u, double stepped_products) const {
-  return stepped_products > heat_krylov_dim(u);
+bool UnitPricer::heat_krylov_chosen(const PlanUnit& u, const std::string& table, double theta) const {
+  const HeatTable& hp = heat_table(table);
+  const double dt0 = hp.c * std::pow(u.h, hp.p);
+  return heat_stepped_products(u.dx, u.h, dt0, kHeatT, theta) > heat_krylov_products(u.dx, u.h);
 }
 
 // --- The heat reading matrix priced three ways ---------------------------------------------
@@ -507,10 +509,9 @@ std::vector<HeatMatrixCost> heat_matrix_costs(Profile profile, const Calibration
           // rest stepped together (a volumes choice's series: both time-step rules, every θ).
           std::vector<double> stepped;
           bool any_krylov = false;
-          for (double n : its) {
-            const double products = K * (1 + n);
-            if (pricer.heat_krylov_chosen(u, products)) any_krylov = true;
-            else stepped.insert(stepped.end(), 2, n);
+          for (std::size_t i = 0; i < its.size(); ++i) {
+            if (pricer.heat_krylov_chosen(u, hp.table, hp.thetas[i])) any_krylov = true;
+            else stepped.insert(stepped.end(), 2, its[i]);
           }
           m.propagated_s += 2 * (setup + (any_krylov ? pricer.heat_krylov_s(u, assembled) : 0) +
                                  (stepped.empty() ? 0 : K * group_step_s(stepped, single, assembled, c)));

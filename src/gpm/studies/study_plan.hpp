@@ -134,9 +134,11 @@ class UnitPricer {
   // per second (8 bytes each against kAssembledBytesPerNonzero per non-zero).
   double heat_krylov_dim(const PlanUnit& u) const;
   double heat_krylov_s(const PlanUnit& u, bool assembled) const;
-  // Whether thesis_heat's default propagator (auto) sends a series of `products` predicted
-  // stepped products to the subspace.
-  bool heat_krylov_chosen(const PlanUnit& u, double stepped_products) const;
+  // Whether thesis_heat's default propagator (auto) sends a series of Table `table` and θ at
+  // the unit's h to the subspace: run_heat's own rule (heat_stepped_products against
+  // heat_krylov_products), so that the plan prices the choice the program makes; the
+  // calibrated CG iterations only price the series that stay stepped.
+  bool heat_krylov_chosen(const PlanUnit& u, const std::string& table, double theta) const;
 
  private:
   Profile profile_;
