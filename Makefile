@@ -168,3 +168,12 @@ bench: build
 
 clean:
 	rm -rf $(BUILD) data $(FIGOUT) $(TABOUT) $(REPORT_OUTPUTS)
+
+# --- data files are never deleted -------------------------------------------------------
+# make deletes a target whose recipe is interrupted (Ctrl-C) or killed.  A data file here is
+# the result store's own (data/paper links into results/paper: hours of sealed rows) or a
+# file every program writes atomically (temp file, then rename), so an interrupted recipe
+# leaves it whole, old or new, and the study resumes from it.  Listed by name: GNU make
+# protects a target named in .PRECIOUS, not one a pattern there matches
+# (tests/store/make_interrupt.sh).
+.PRECIOUS: $(sort $(DATAFILES) $(foreach f,$(STUDY_FILES),$(DATA)/$(f).tsv))

@@ -39,7 +39,7 @@ int dispatch(int argc, char** argv) {
       "  heat        one discrete heat problem (theta-method): error (4.2), steps, CG counts\n"
       "  smoothing   the Laplacian's smoothing error for a Fourier mode (no particles)\n"
       "  fingerprint the code fingerprint of programs (result-store rows)\n"
-      "  store-seal  seal result-store files written before seals (once)\n"
+      "  store-seal  seal result-store files (unsealed ones; or sealed before the seal covered `checked`)\n"
       "  store-add-columns  add a column with one value to stored rows made before it existed\n"
       "  store-rates the documents' rates judged against the result store: verdicts, boards\n"
       "  rate-levels the heat tables' rates at every pair of stored levels: toward the theory?\n"

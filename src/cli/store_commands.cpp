@@ -77,16 +77,65 @@ int cmd_fingerprint(int argc, char** argv) {
   return 0;
 }
 
-// gpm store-seal: the one-time step that gave the result store's rows their seal
-// (store.hpp).  A file written before seals (provenance columns code, made_on, checked) gets
-// the seal column; each row's `checked` chain of re-checks is cut to its last record with the
-// count of earlier ones, the chain itself going to rechecks.log beside the file.  Sealing
-// vouches for nothing but the rows as they are now: their history is git's.
+// gpm store-seal: the steps that gave the result store's rows their seal (store.hpp), each
+// done once per file.  A file written before seals (provenance columns code, made_on, checked)
+// gets the seal column; each row's `checked` chain of re-checks is cut to its last record with
+// the count of earlier ones, the chain itself going to rechecks.log beside the file.  A file
+// sealed before the seal covered `checked` (2026-12-03) has every row verified under that
+// seal and is sealed anew; a row that fails refuses the file.  Sealing vouches for nothing but
+// the rows as they are now: their history is git's.
+namespace {
+void seal_unsealed(TsvTable& t, const std::string& path) {
+  t.columns.push_back("seal");
+  const int cchecked = t.require_column("checked");
+  std::map<std::string, std::size_t> chains;  // each distinct chain once, with its row count
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    auto& row = t.rows[r];
+    if (row.size() + 1 != t.columns.size())
+      throw InputError(path + " line " + std::to_string(t.row_lines[r]) + ": " +
+                       std::to_string(row.size()) + " cells for " + std::to_string(t.columns.size() - 1) +
+                       " columns; mend or recompute it before sealing");
+    std::string& chain = row[cchecked];
+    const auto last = chain.rfind("; ");
+    if (last != std::string::npos) {
+      ++chains[chain];
+      chain = checked_cell(chain.substr(last + 2), recheck_count(chain) - 1);
+    }
+    row.push_back("");
+    row.back() = row_seal(row);
+  }
+  const auto log_path = std::filesystem::path(path).parent_path() / "rechecks.log";
+  std::ofstream log(log_path, std::ios::app);
+  for (auto& [chain, n] : chains)
+    log << std::filesystem::path(path).filename().string() << "\t" << n << " rows\t" << chain << "\n";
+  log.close();
+  if (!log) throw InputError("cannot append to " + log_path.string() + "; " + path + " not sealed");
+}
+
+// Returns the number of rows sealed anew (0: every row carries the current seal already).
+std::size_t seal_checked_too(TsvTable& t, const std::string& path) {
+  std::size_t old = 0;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    auto& row = t.rows[r];
+    if (row.size() != t.columns.size() || (row.back() != row_seal(row) && row.back() != row_seal_without_checked(row)))
+      throw InputError(path + " line " + std::to_string(t.row_lines[r]) +
+                       ": its seal matches its cells under neither rule; nothing written");
+    old += row.back() != row_seal(row);
+  }
+  if (old != 0 && old != t.rows.size())
+    throw InputError(path + ": " + std::to_string(old) + " of " + std::to_string(t.rows.size()) +
+                     " rows carry the seal without `checked`, the rest the current one; nothing written");
+  for (auto& row : t.rows) row.back() = row_seal(row);
+  return old;
+}
+}  // namespace
+
 int cmd_store_seal(int argc, char** argv) {
   if (argc >= 3 && (std::string(argv[2]) == "--help" || std::string(argv[2]) == "-h")) {
     std::cout << "usage: gpm store-seal FILE...\n"
-                 "Adds the seal column to result-store files written before seals (once; a sealed\n"
-                 "file is refused) and shortens each row's re-check chain to its last record.\n";
+                 "Seals result-store files: one written before seals gets the seal column (its\n"
+                 "re-check chains shortened to their last record); one sealed before the seal\n"
+                 "covered `checked` is verified row by row under that seal and sealed anew.\n";
     return 0;
   }
   if (argc < 3) throw InputError("gpm store-seal: name at least one file (see --help)");
@@ -94,30 +143,16 @@ int cmd_store_seal(int argc, char** argv) {
     const std::string path = argv[i];
     TsvTable t = TsvTable::load(path);
     const std::vector<std::string> before = {"code", "made_on", "checked"};
-    if (t.columns.size() < 3 || !std::equal(before.begin(), before.end(), t.columns.end() - 3))
-      throw InputError(path + ": not a store file written before seals (its last columns are not "
-                       "code, made_on, checked)");
-    t.columns.push_back("seal");
-    const int cchecked = t.require_column("checked");
-    std::map<std::string, std::size_t> chains;  // each distinct chain once, with its row count
-    for (std::size_t r = 0; r < t.rows.size(); ++r) {
-      auto& row = t.rows[r];
-      if (row.size() + 1 != t.columns.size())
-        throw InputError(path + " line " + std::to_string(t.row_lines[r]) + ": " +
-                         std::to_string(row.size()) + " cells for " + std::to_string(t.columns.size() - 1) +
-                         " columns; mend or recompute it before sealing");
-      std::string& chain = row[cchecked];
-      const auto last = chain.rfind("; ");
-      if (last != std::string::npos) {
-        ++chains[chain];
-        chain = checked_cell(chain.substr(last + 2), recheck_count(chain) - 1);
-      }
-      row.push_back("");
-      row.back() = row_seal(row);
+    const bool sealed = !t.columns.empty() && t.columns.back() == "seal";
+    if (!sealed && (t.columns.size() < 3 || !std::equal(before.begin(), before.end(), t.columns.end() - 3)))
+      throw InputError(path + ": not a store file (its last columns are neither code, made_on, "
+                       "checked nor ... seal)");
+    if (!sealed) {
+      seal_unsealed(t, path);
+    } else if (seal_checked_too(t, path) == 0) {
+      std::cout << path << ": every row sealed already (" << t.rows.size() << " rows)\n";
+      continue;
     }
-    std::ofstream log(std::filesystem::path(path).parent_path() / "rechecks.log", std::ios::app);
-    for (auto& [chain, n] : chains)
-      log << std::filesystem::path(path).filename().string() << "\t" << n << " rows\t" << chain << "\n";
     t.save(path);
     std::cout << "sealed " << path << " (" << t.rows.size() << " rows)\n";
   }

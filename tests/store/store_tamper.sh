@@ -48,6 +48,8 @@ case_ "a duplicate row"           "sed -n '${first}p' $f >> $f"
 case_ "CRLF line endings"         "sed -i 's/\$/\r/' $f"
 case_ "a UTF-8 byte-order mark"   "sed -i '1s/^/\xEF\xBB\xBF/' $f"
 case_ "a header parameter edited" "sed -i 's/^# tol = .*/# tol = 1e-8/' $f"
+case_ "the checked cell edited"   "$(cell "$first" checked '"recheck 2026-01-01 by hand"')"
+case_ "a stray profile line"      "sed -i '1i # profile = quick' $f"
 
 # The unedited copy passes.
 rm -rf "$t/s" && mkdir "$t/s" && cp "$orig" "$t/s/$f"

@@ -17,8 +17,12 @@
 #   FILE...: check only these files of the list (the others are not required).
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
+usage="usage: verify_store.sh BUILD_DIR STORE_DIR [--verify|--recheck] [FILE...]"
+[ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
 build=$1
 store=$2
+[ -x "$build/gpm" ] || { echo "verify_store.sh: $build/gpm not found (BUILD_DIR: a build folder); $usage" >&2; exit 2; }
+[ -d "$store" ] || { echo "verify_store.sh: $store is not a directory; $usage" >&2; exit 2; }
 mode=${3:---verify}
 case $mode in --verify|--recheck) ;; *) echo "verify_store.sh: unknown mode '$mode' (--verify or --recheck)" >&2; exit 2;; esac
 shift $(( $# < 3 ? $# : 3 ))

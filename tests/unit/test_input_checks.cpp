@@ -122,19 +122,25 @@ TEST_CASE("output paths: a regular file or nothing yet, checked at parse time", 
 TEST_CASE("save removes the temp files of dead writers and keeps a live one's", "[tsv]") {
   TempDir d("gpm_input_checks_");
   const std::string out = d.file("data.tsv");
-  // pid_max is at most 2^22, so this pid belongs to no process; pid 1 always runs.
-  std::ofstream(out + ".tmp.999999999") << "partial";
-  std::ofstream(out + ".tmp.1") << "partial";
-  std::ofstream(out + ".tmp.x1") << "not ours";
+  // pid_max is at most 2^22, so this pid belongs to no process; pid 1 always runs.  Only names
+  // of save()'s own form (NAME.gpm-tmp.PID.16HEX) are ever removed: a user's files stay.
+  const std::string dead = out + ".gpm-tmp.999999999.00112233aabbccdd";
+  const std::string live = out + ".gpm-tmp.1.00112233aabbccdd";
+  std::ofstream(dead) << "partial";
+  std::ofstream(live) << "partial";
+  for (const char* user : {".tmp.999999999", ".tmp.x1", ".gpm-tmp.999999999", ".gpm-tmp.999999999.short"})
+    std::ofstream(out + user) << "not ours";
   TsvTable t;
   t.columns = {"a"};
   t.add_row({"1"});
   t.save(out);
   CHECK(fs::exists(out));
-  CHECK_FALSE(fs::exists(out + ".tmp.999999999"));
-  CHECK(fs::exists(out + ".tmp.1"));
-  CHECK(fs::exists(out + ".tmp.x1"));
-  CHECK_FALSE(fs::exists(out + ".tmp." + std::to_string(::getpid())));
+  CHECK_FALSE(fs::exists(dead));
+  CHECK(fs::exists(live));
+  for (const char* user : {".tmp.999999999", ".tmp.x1", ".gpm-tmp.999999999", ".gpm-tmp.999999999.short"})
+    CHECK(fs::exists(out + user));
+  for (auto& e : fs::directory_iterator(d.dir))  // this save's own temp file is gone
+    CHECK(e.path().filename().string().find(".gpm-tmp." + std::to_string(::getpid()) + ".") == std::string::npos);
 }
 
 TEST_CASE("cells of a data file: errors name the file, line, data row and column", "[tsv]") {

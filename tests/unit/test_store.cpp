@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <string>
 #include <unistd.h>
 
@@ -87,12 +88,12 @@ TEST_CASE("store: rows carry the code fingerprint and are reused only under it",
     CHECK_FALSE(c.has({"5"}, 3));  // a unit needs all its rows
     CHECK_FALSE(c.has({"7"}));
   }
-  // Rows of other code are kept in the file but not reused.
+  // Rows of other code are kept in the file but not reused (a unit's rows share one code).
   auto tt = TsvTable::load(f);
-  tt.rows[0][code] = "0123456789ab";
+  tt.rows[0][code] = tt.rows[1][code] = "0123456789ab";
   save_resealed(tt, f);
   LevelCache c(f, kParams, kColumns, 1);
-  CHECK(c.reused() == 3);
+  CHECK(c.reused() == 2);
   CHECK_FALSE(c.has({"5"}, 2));
   CHECK(c.has({"6"}, 2));
 }
@@ -180,10 +181,9 @@ TEST_CASE("store: other parameters, columns, CRLF or a BOM: refused, file untouc
   cr.replace(cr.find("store_test"), 10, "store_test\r");  // a \r inside a value, shown escaped
   // (the line then ends in CRLF: the line-ending check names it first)
   refused(cr, "CRLF");
-  // A quick-profile file is a cache: replaced without asking.
-  std::ofstream(f) << other + "# profile = quick\n";
-  REQUIRE_NOTHROW(run_study(f, CacheMode::run));
-  CHECK(TsvTable::load(f).get("seed") == "1");
+  // A file that says it is of the quick profile is a cache only for a quick run (the test
+  // below): this run has no quick profile, so it is refused like any other.
+  refused(other + "# profile = quick\n", "parameter 'seed' differs");
 }
 
 TEST_CASE("store: a non-finite number never agrees", "[unit][store]") {
@@ -221,7 +221,7 @@ TEST_CASE("store: a second writer on one file is refused", "[unit][store]") {
   const std::string f = t.file("s.tsv");
   LevelCache first(f, kParams, kColumns, 1);
   REQUIRE_THROWS_AS(LevelCache(f, kParams, kColumns, 1), InputError);
-  REQUIRE_NOTHROW(LevelCache(f, kParams, kColumns, 1, CacheMode::verify));  // a reader
+  REQUIRE_NOTHROW(LevelCache(f, kParams, kColumns, 1, CacheMode::census));  // a reader
 }
 
 TEST_CASE("store: --out must be a regular file, and outputs distinct", "[unit][store]") {
@@ -277,6 +277,7 @@ TEST_CASE("store: a file written before seals is refused until sealed once", "[u
   auto tt = TsvTable::load(f);
   tt.columns.pop_back();
   for (auto& r : tt.rows) r.pop_back();
+  fs::remove(f);  // (an unsealed table never replaces a sealed file)
   tt.save(f);
   try {
     run_study(f, CacheMode::run);
@@ -325,4 +326,172 @@ TEST_CASE("store: residual columns are compared on their own scale", "[unit][sto
   REQUIRE_NOTHROW(study(CacheMode::verify, 6.753016866560343e-11 * 1.042));  // another CPU: 4.2 %
   REQUIRE_THROWS_AS(study(CacheMode::verify, 6.753016866560343e-11 * 1.2), StoreMismatch);
   REQUIRE_THROWS_AS(study(CacheMode::verify, 1e-9), StoreMismatch);  // a looser solve
+}
+
+// --- issue 43: nothing the user does loses a stored row ---------------------------------
+
+TEST_CASE("store: the seal covers `checked` too", "[unit][store]") {
+  TempDir t("gpm_store_");
+  const std::string f = t.file("s.tsv");
+  run_study(f, CacheMode::run);
+  auto tt = TsvTable::load(f);
+  tt.rows[1][tt.column("checked")] = "recheck 2026-01-01 of code 0123456789ab: 1 units recomputed";
+  tt.save(f);  // the cell edited, the seal left as it was
+  REQUIRE_THROWS_AS(run_study(f, CacheMode::census), InputError);
+  REQUIRE_THROWS_AS(run_study(f, CacheMode::run), InputError);
+  // The seal before it covered `checked` (what `gpm store-seal` migrates): not the seal now.
+  auto row = TsvTable::load(f).rows[0];
+  CHECK(row_seal_without_checked(row) != row_seal(row));
+}
+
+TEST_CASE("store: a header naming a key twice is refused, not obeyed", "[unit][store]") {
+  TempDir t("gpm_store_");
+  const std::string f = t.file("s.tsv");
+  run_study(f, CacheMode::run);
+  edit_lines(f, [](const std::string& line) {
+    return line.rfind("# seed = ", 0) == 0 ? line + "\n# seed = 2\n" : line + "\n";
+  });
+  const std::string bad = text_of(f);
+  REQUIRE_THROWS_WITH(run_study(f, CacheMode::run), Catch::Contains("names 'seed' twice"));
+  REQUIRE_THROWS_AS(run_study(f, CacheMode::census), InputError);
+  CHECK(text_of(f) == bad);
+  run_study(f, CacheMode::replace);  // only --replace discards it
+  CHECK(rows_of(f).size() == 4);
+}
+
+TEST_CASE("store: a quick-profile file is a cache for a quick run only", "[unit][store]") {
+  TempDir t("gpm_store_");
+  const std::string f = t.file("s.tsv");
+  auto params = [](const char* profile, const char* seed) {
+    return std::vector<std::pair<std::string, std::string>>{
+        {"program", "store_test"}, {"profile", profile}, {"seed", seed}};
+  };
+  auto run = [&](const char* profile, const char* seed, CacheMode mode = CacheMode::run) {
+    LevelCache c(f, params(profile, seed), kColumns, 1, mode);
+    if (!c.has({"5"}, 1)) c.add({"5", "a", "0.2", "0.1"}), c.save();
+  };
+  run("quick", "1");
+  const std::string quick = text_of(f);
+  // A paper run never discards rows without --replace, whatever the header says.
+  REQUIRE_THROWS_WITH(run("paper", "1"), Catch::Contains("parameter 'profile' differs"));
+  CHECK(text_of(f) == quick);
+  REQUIRE_NOTHROW(run("quick", "2"));  // a quick run replaces a quick cache
+  CHECK(TsvTable::load(f).get("seed") == "2");
+  REQUIRE_NOTHROW(run("paper", "1", CacheMode::replace));
+  CHECK(TsvTable::load(f).get("profile") == "paper");
+}
+
+TEST_CASE("store: rows of one unit from two runs (a merge) are refused", "[unit][store]") {
+  TempDir t("gpm_store_");
+  const std::string f = t.file("s.tsv");
+  run_study(f, CacheMode::run);
+  auto tt = TsvTable::load(f);
+  tt.rows[0][tt.column("made_on")] = "another machine, 2 threads, 2026-01-01";  // unit 5, row a
+  save_resealed(tt, f);
+  REQUIRE_THROWS_WITH(run_study(f, CacheMode::census), Catch::Contains("holds rows of two runs"));
+  REQUIRE_THROWS_AS(run_study(f, CacheMode::run), InputError);
+  run_study(f, CacheMode::replace);  // both copies dropped, the unit recomputed
+  const auto again = TsvTable::load(f);
+  REQUIRE(again.rows.size() == 4);
+  for (auto& r : again.rows) CHECK(r[again.column("made_on")] != "another machine, 2 threads, 2026-01-01");
+}
+
+TEST_CASE("store: a removed lock file loses no rows: the lock is taken again and the file merged",
+          "[unit][store]") {
+  TempDir t("gpm_store_");
+  const std::string f = t.file("s.tsv");
+  auto add_unit = [](LevelCache& c, int k) {
+    for (const char* w : {"a", "b"}) c.add({std::to_string(k), w, fmt(1.0 / k), "0.1"});
+    c.save();
+  };
+  auto levels_in = [&]() {
+    std::set<std::string> l;
+    for (auto& r : rows_of(f)) l.insert(r[0]);
+    return l;
+  };
+  SECTION("the second writer is gone when the first saves: merged") {
+    LevelCache first(f, kParams, kColumns, 1);
+    add_unit(first, 5);
+    fs::remove(f + ".lock");
+    {
+      LevelCache second(f, kParams, kColumns, 1);  // let in by the missing lock
+      CHECK(second.has({"5"}, 2));
+      add_unit(second, 6);
+    }
+    add_unit(first, 7);  // the lock taken again, the second writer's unit 6 kept
+    CHECK(levels_in() == std::set<std::string>{"5", "6", "7"});
+    CHECK(TsvTable::load(f).rows.size() == 6);
+  }
+  SECTION("the second writer still holds the new lock: the first writes nothing, keeps its rows") {
+    LevelCache first(f, kParams, kColumns, 1);
+    add_unit(first, 5);
+    fs::remove(f + ".lock");
+    LevelCache second(f, kParams, kColumns, 1);
+    add_unit(second, 6);
+    for (const char* w : {"a", "b"}) first.add({"7", w, "0.1", "0.1"});
+    REQUIRE_THROWS_WITH(first.save(), Catch::Contains("another process holds the new one"));
+    CHECK(levels_in() == std::set<std::string>{"5", "6"});
+    bool rescued = false;
+    for (auto& e : fs::directory_iterator(t.dir))
+      rescued = rescued || e.path().filename().string().find(".rescued-") != std::string::npos;
+    CHECK(rescued);
+  }
+  SECTION("a file rewritten meanwhile by hand (a git checkout): its units merged, not lost") {
+    LevelCache first(f, kParams, kColumns, 1);
+    add_unit(first, 5);
+    auto tt = TsvTable::load(f);
+    auto extra = tt.rows;
+    for (auto& r : extra) r[0] = "9", r.back() = row_seal(r);
+    tt.rows.insert(tt.rows.end(), extra.begin(), extra.end());
+    tt.save(f);
+    add_unit(first, 7);
+    CHECK(levels_in() == std::set<std::string>{"5", "7", "9"});
+  }
+}
+
+TEST_CASE("outputs: a sealed store file is written only by its own study", "[unit][store]") {
+  TempDir t("gpm_store_");
+  const std::string f = t.file("s.tsv");
+  run_study(f, CacheMode::run);
+  CHECK(sealed_file_program(f) == "store_test");
+  CHECK_FALSE(sealed_file_program(t.file("none.tsv")));
+  const std::string before = text_of(f);
+  REQUIRE_THROWS_WITH(check_output_path("--out", f), Catch::Contains("sealed result-store file of store_test"));
+  REQUIRE_NOTHROW(check_output_path("--out", f, "store_test"));
+  REQUIRE_THROWS_AS(save_text(f, "x\n"), InputError);
+  TsvTable other;
+  other.set("program", "another");
+  other.columns = {"a"};
+  REQUIRE_THROWS_AS(other.save(f), InputError);
+  REQUIRE_THROWS_WITH(LevelCache(f, {{"program", "another"}, {"seed", "1"}}, kColumns, 1, CacheMode::replace),
+                      Catch::Contains("only that study writes it"));
+  CHECK(text_of(f) == before);
+}
+
+TEST_CASE("outputs: control characters, read-only files, temp names", "[unit][store]") {
+  TempDir t("gpm_store_");
+  REQUIRE_THROWS_WITH(check_output_path("--out", t.file("a\nb.tsv")), Catch::Contains("control character"));
+  REQUIRE_THROWS_AS(check_output_path("--out", t.file("a\tb.tsv")), InputError);
+  // A read-only file is not replaced (the refusal holds for root too: the mode bits decide).
+  const std::string ro = t.file("ro.tsv");
+  std::ofstream(ro) << "x\n";
+  fs::permissions(ro, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  REQUIRE_THROWS_WITH(save_text(ro, "y\n"), Catch::Contains("read-only (mode 0444)"));
+  CHECK(text_of(ro) == "x\n");
+  // A replaced file keeps its mode.
+  const std::string kept = t.file("kept.tsv");
+  std::ofstream(kept) << "x\n";
+  fs::permissions(kept, fs::perms::owner_read | fs::perms::owner_write);
+  save_text(kept, "y\n");
+  CHECK(text_of(kept) == "y\n");
+  CHECK((fs::status(kept).permissions() & fs::perms::all) == (fs::perms::owner_read | fs::perms::owner_write));
+  // Cleanup touches only its own temp names of dead processes, never a user's file.
+  for (const char* n : {"o.tsv.tmp.1234567", "o.tsv.gpm-tmp.1234567", "o.tsv.gpm-tmp.1234567.notahexnumber00"})
+    std::ofstream(t.file(n)) << "mine\n";
+  const std::string stale = t.file("o.tsv.gpm-tmp.999999999.0123456789abcdef");
+  std::ofstream(stale) << "left by a killed run\n";
+  save_text(t.file("o.tsv"), "z\n");
+  for (const char* n : {"o.tsv.tmp.1234567", "o.tsv.gpm-tmp.1234567", "o.tsv.gpm-tmp.1234567.notahexnumber00"})
+    CHECK(fs::exists(t.file(n)));
+  CHECK_FALSE(fs::exists(stale));
 }

@@ -39,6 +39,12 @@ Args& Args::output(const std::string& name, const std::string& def, const std::s
   return *this;
 }
 
+Args& Args::store_output(const std::string& name, const std::string& def, const std::string& help) {
+  output(name, def, help);
+  opts_[name].is_store = true;
+  return *this;
+}
+
 std::string Args::usage() const {
   std::ostringstream s;
   s << "usage: " << program_ << " [options]\n" << summary_ << "\n\noptions:\n";
@@ -98,9 +104,12 @@ void Args::check_outputs() const {
   std::vector<std::pair<std::string, std::string>> outs;
   for (auto& n : order_) {
     const Opt& o = opts_.at(n);
-    if (o.is_output && !o.value.empty()) outs.emplace_back("--" + n, o.value);
+    if (!o.is_output || o.value.empty()) continue;
+    if (o.is_store) check_output_path("--" + n, o.value, program_, /*writes=*/false);
+    else check_output_path("--" + n, o.value);
+    outs.emplace_back("--" + n, o.value);
   }
-  check_output_paths(outs);
+  require_distinct_paths(outs);
 }
 
 void check_output_paths(const std::vector<std::pair<std::string, std::string>>& outputs) {

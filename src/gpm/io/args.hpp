@@ -23,6 +23,11 @@ class Args {
   // symbolic link, a path under a non-directory) and two outputs naming one file, so a
   // program fails before its work, not after it (check_output_path, tsv.hpp).
   Args& output(const std::string& name, const std::string& def, const std::string& help);
+  // The data file of a study (the result store): an output that may name a sealed store file
+  // of this program (check_output_path's owner) and that parse() checks for its kind only, not
+  // for a writable folder: its modes that write nothing (--verify, --census) work on a
+  // read-only store; the study checks the folder when it writes.
+  Args& store_output(const std::string& name, const std::string& def, const std::string& help);
   // Parses argv.  On --help prints usage to stdout and exits 0; on an unknown option,
   // a missing value, a value given to a flag (`--polygons=no`) or a bad output path
   // throws InputError.
@@ -53,7 +58,7 @@ class Args {
  private:
   struct Opt {
     std::string def, help, value;
-    bool is_flag = false, given = false, is_output = false;
+    bool is_flag = false, given = false, is_output = false, is_store = false;
   };
   void check_outputs() const;
   std::string program_, summary_;

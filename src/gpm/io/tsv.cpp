@@ -2,9 +2,12 @@
 
 #include <omp.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -15,6 +18,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 
@@ -102,18 +106,35 @@ std::string cell_where(const TsvTable& t, std::size_t row, int col) {
   return s;
 }
 
-// Leftovers of save() in processes that died between writing and renaming: `NAME.tmp.PID`
-// beside the output, PID no longer running.  A live writer's temp file is left alone (a
-// reused pid only delays a removal).
+// The temp file of one save: `NAME.gpm-tmp.PID.HEX` (16 random hex digits), a name no user
+// gives a file by accident, so that the cleanup below can only ever touch its own kind.
+constexpr const char* kTempMarker = ".gpm-tmp.";
+
+std::string temp_name(const fs::path& p) {
+  static thread_local std::mt19937_64 draw{std::random_device{}() ^
+                                           (static_cast<uint64_t>(::getpid()) << 32)};
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(draw()));
+  return p.string() + kTempMarker + std::to_string(::getpid()) + "." + hex;
+}
+
+// Leftovers of save() in processes that died between writing and renaming: names of exactly
+// temp_name's form beside the output whose PID no longer runs.  A live writer's temp file
+// is left alone (a reused pid only delays a removal); `x.tsv.tmp.12`, `x.tsv.gpm-tmp.12` or
+// anything else a user named so is never removed.
 void remove_stale_temps(const fs::path& p) {
   const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  const std::string prefix = p.filename().string() + ".tmp.";
+  const std::string prefix = p.filename().string() + kTempMarker;
   std::error_code ec;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string n = it->path().filename().string();
     if (n.size() <= prefix.size() || n.compare(0, prefix.size(), prefix) != 0) continue;
-    const std::string pid_text = n.substr(prefix.size());
-    if (pid_text.size() > 9 || pid_text.find_first_not_of("0123456789") != std::string::npos)
+    const std::string rest = n.substr(prefix.size());  // PID.HEX
+    const auto dot = rest.find('.');
+    if (dot == std::string::npos || dot == 0 || dot > 9 || rest.size() != dot + 17) continue;
+    const std::string pid_text = rest.substr(0, dot), hex = rest.substr(dot + 1);
+    if (pid_text.find_first_not_of("0123456789") != std::string::npos ||
+        hex.find_first_not_of("0123456789abcdef") != std::string::npos)
       continue;
     const pid_t pid = static_cast<pid_t>(std::stol(pid_text));
     const bool dead = ::kill(pid, 0) != 0 && errno == ESRCH;
@@ -154,8 +175,45 @@ long long TsvTable::integer(std::size_t row, int col) const {
   }
 }
 
-void check_output_path(const std::string& option, const std::string& path) {
+namespace {
+std::string octal(unsigned mode) {
+  char b[16];
+  std::snprintf(b, sizeof b, "%04o", mode);
+  return b;
+}
+}  // namespace
+
+std::optional<std::string> sealed_file_program(const std::string& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(fs::status(path, ec))) return std::nullopt;
+  std::ifstream in(path);
+  std::string line, program;
+  // The header is a few dozen lines; a file whose first 10,000 lines are all comments is
+  // not a store file.
+  for (int n = 0; n < 10000 && std::getline(in, line); ++n) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // a store file with CRLF still is one
+    if (line.rfind("# program = ", 0) == 0 && program.empty()) program = line.substr(12);
+    if (line.rfind("#", 0) == 0 || line.empty()) continue;
+    const auto tab = line.rfind('\t');
+    if (tab == std::string::npos || line.substr(tab + 1) != "seal") return std::nullopt;
+    return program.empty() ? std::string("?") : program;
+  }
+  return std::nullopt;
+}
+
+void check_output_path(const std::string& option, const std::string& path, const std::string& owner,
+                       bool writes) {
   if (path.empty()) return;
+  for (unsigned char c : path)
+    if (c < 0x20 || c == 0x7f) {
+      char code[8];
+      std::snprintf(code, sizeof code, "\\x%02X", c);
+      std::string shown;
+      for (unsigned char d : path.substr(0, 200)) shown += d < 0x20 || d == 0x7f ? '?' : static_cast<char>(d);
+      throw InputError(option + " '" + shown + (path.size() > 200 ? "...'" : "'") +
+                       ": the path holds a control character (" + code +
+                       "); paths with control characters are refused");
+    }
   const std::string what = option + " " + path;
   std::error_code ec;
   const auto st = fs::symlink_status(path, ec);
@@ -169,7 +227,24 @@ void check_output_path(const std::string& option, const std::string& path) {
     if (!fs::is_regular_file(st))
       throw InputError(what + " is not a regular file (a device, pipe or socket): outputs "
                               "replace only regular files");
+    // A store file's rows are sealed results of hours: only the study that wrote it may
+    // replace it (through its store, which reuses, verifies and merges them).
+    if (const auto program = sealed_file_program(path); program && *program != owner)
+      throw InputError(what + " is a sealed result-store file of " + *program +
+                       ": only that study writes it (give another path)");
+    // A file made read-only, or another user's, was protected on purpose: a rename would
+    // replace it with this process's mode and owner (root may keep them: save_atomically).
+    struct stat s;
+    if (writes && ::stat(path.c_str(), &s) == 0) {
+      if ((s.st_mode & 0222) == 0)
+        throw InputError(what + " is read-only (mode " + octal(s.st_mode & 07777) +
+                         "): not replaced (make it writable, or give another path)");
+      if (::geteuid() != 0 && s.st_uid != ::geteuid())
+        throw InputError(what + " belongs to another user (uid " + std::to_string(s.st_uid) +
+                         "): not replaced (give another path)");
+    }
   }
+  if (!writes) return;
   // The nearest existing ancestor must be a directory this process can create files in.
   fs::path dir = fs::path(path).parent_path();
   while (!dir.empty() && !fs::exists(fs::status(dir, ec))) dir = dir.parent_path();
@@ -182,19 +257,30 @@ void check_output_path(const std::string& option, const std::string& path) {
 }
 
 namespace {
-// The atomic write behind every output: `body` into NAME.tmp.PID, then rename over NAME.
-void save_atomically(const std::string& path, const std::function<void(std::ostream&)>& body) {
-  check_output_path("output", path);
+// The atomic write behind every output: `body` into temp_name(NAME), then rename over NAME.
+// `owner`: the program a sealed store file at NAME must belong to ("" for none).
+void save_atomically(const std::string& path, const std::string& owner,
+                     const std::function<void(std::ostream&)>& body) {
+  check_output_path("output", path, owner);
   const fs::path p(path);
   if (p.has_parent_path()) fs::create_directories(p.parent_path());
   remove_stale_temps(p);
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  const std::string tmp = temp_name(p);
   try {
     // Our own name, but whatever stands there (a link planted to redirect the write) goes.
     std::error_code gone;
     fs::remove(tmp, gone);
     std::ofstream out(tmp, std::ios::trunc);
     if (!out) throw std::runtime_error("cannot create " + tmp + ": " + std::strerror(errno));
+    // A file replaced keeps its mode and (root writing) its owner.
+    struct stat old;
+    if (::stat(path.c_str(), &old) == 0) {
+      if (::chmod(tmp.c_str(), old.st_mode & 07777) != 0 ||
+          (::geteuid() == 0 && (old.st_uid != 0 || old.st_gid != 0) &&
+           ::chown(tmp.c_str(), old.st_uid, old.st_gid) != 0))
+        throw std::runtime_error("cannot give " + tmp + " the mode and owner of " + path + ": " +
+                                 std::strerror(errno));
+    }
     body(out);
     out.close();  // flushes: a full disk shows here
     if (!out) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
@@ -210,11 +296,14 @@ void save_atomically(const std::string& path, const std::function<void(std::ostr
 }  // namespace
 
 void TsvTable::save(const std::string& path) const {
-  save_atomically(path, [this](std::ostream& out) { write(out); });
+  // A sealed table may replace the sealed file of its own program (the store's save).
+  const bool sealed = !columns.empty() && columns.back() == "seal";
+  save_atomically(path, sealed ? get("program").value_or("?") : std::string(),
+                  [this](std::ostream& out) { write(out); });
 }
 
 void save_text(const std::string& path, const std::string& text) {
-  save_atomically(path, [&text](std::ostream& out) { out << text; });
+  save_atomically(path, "", [&text](std::ostream& out) { out << text; });
 }
 
 TsvTable TsvTable::load(const std::string& path, bool whole_rows) {
@@ -308,8 +397,23 @@ void set_command_line(int argc, char** argv) {
         "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_./=,:+^%@") ==
         std::string::npos;
     if (i) out += ' ';
+    const bool control = std::any_of(a.begin(), a.end(), [](char c) {
+      return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+    });
     if (plain) {
       out += a;
+    } else if (control) {
+      // bash's $'...': a newline in an argument must not end the `# command` header line.
+      out += "$'";
+      for (char c : a) {
+        const auto u = static_cast<unsigned char>(c);
+        char code[8];
+        std::snprintf(code, sizeof code, "\\x%02X", u);
+        out += u < 0x20 || u == 0x7f ? std::string(code)
+               : c == '\'' || c == '\\' ? std::string("\\") + c
+                                          : std::string(1, c);
+      }
+      out += '\'';
     } else {
       out += '\'';
       for (char c : a) out += c == '\'' ? std::string("'\\''") : std::string(1, c);

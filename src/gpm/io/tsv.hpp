@@ -2,9 +2,10 @@
 //
 // Every data file starts with `# key = value` lines naming every parameter, the seed,
 // the git revision, the profile and the wall time, then one header row of column names,
-// then data rows.  Files are written to `<path>.tmp.<pid>` and renamed, so a reader never
-// sees half a file; the temp file is removed on every error, and the leftovers of a killed
-// run are removed by the next save of the same file.  A study that runs level by level rewrites the file after each
+// then data rows.  Files are written to `<path>.gpm-tmp.<pid>.<16 random hex>` and renamed,
+// so a reader never sees half a file; the temp file is removed on every error, and the
+// leftovers of a killed run are removed by the next save of the same file (only names of
+// exactly that form whose process is gone: never a user's `<path>.tmp.1` or the like).  A study that runs level by level rewrites the file after each
 // level (`TsvTable::save`), and on a rerun with the same parameters reads back the
 // levels it already has (`TsvTable::load_matching`) instead of recomputing them.
 #pragma once
@@ -68,7 +69,9 @@ struct TsvTable {
   // The `# key = value` lines, the header row and the rows, as they go to a file.
   void write(std::ostream& out) const;
   // Atomic write (tmp + rename); creates parent directories.  Refuses a path that
-  // check_output_path refuses; removes stale `<path>.tmp.<pid>` files of dead processes.
+  // check_output_path refuses, and a sealed store file unless this table is sealed too and
+  // names the same `# program` (the study that owns it); removes stale temp files of dead
+  // processes (the header's note).
   void save(const std::string& path) const;
   // Throws InputError if the file is missing, not a regular file or malformed: CRLF line
   // endings, a byte-order mark, no header, or (whole_rows) a row whose cell count differs
@@ -84,12 +87,21 @@ struct TsvTable {
 
 // Throws InputError (naming `option` and `path`) unless `path` names a regular file or
 // nothing yet, in a directory that exists or can be created and that this process may
-// write: a directory, a device (/dev/null, /dev/full), a pipe or a symbolic link is never
-// replaced.  An empty path passes (the caller decides whether the output is required).
-void check_output_path(const std::string& option, const std::string& path);
+// write (`writes` false: a read-only use, the directory need not be writable): a directory,
+// a device (/dev/null, /dev/full), a pipe or a symbolic link is never replaced, and a path
+// with a control character (a newline would break the `# command` header line) is refused.
+// A sealed store file (sealed_file_program) is refused unless `owner` is the program that
+// wrote it: only the study that owns a store file replaces it.  An empty path passes (the
+// caller decides whether the output is required).
+void check_output_path(const std::string& option, const std::string& path,
+                       const std::string& owner = "", bool writes = true);
+
+// The `# program` of a result-store file (its column header ends in `seal`), "?" for a sealed
+// file that names none, nullopt for anything else (no file, another table, unreadable).
+std::optional<std::string> sealed_file_program(const std::string& path);
 
 // `text` written to `path` as TsvTable::save writes a table: atomically, parents created,
-// the same paths refused.
+// the same paths refused (a sealed store file always).
 void save_text(const std::string& path, const std::string& text);
 
 // Throws InputError unless every named path is distinct from the others (after resolving

@@ -48,7 +48,7 @@ StudyRunner::StudyRunner(std::string program, std::string summary, std::string p
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
 #endif
-  args_.output("out", "", "data file (required)")
+  args_.store_output("out", "", "data file (required)")
       .opt("profile", "quick", profile_help)
       .opt("levels", "", "comma-separated levels k (dx = 2^-k); default: the profile's")
       .opt("device", "cpu",
@@ -80,6 +80,10 @@ void StudyRunner::parse(int argc, char** argv) {
     throw InputError("unknown --device '" + device + "'; valid: cpu, cuda");
   use_device(device == "cuda");
   mode_ = cache_mode(args_);
+  // parse() checked --out for its kind (and that no other program's store file is named);
+  // a run that writes needs its folder writable too (--verify and --census write nothing).
+  if (mode_ != CacheMode::verify && mode_ != CacheMode::census)
+    check_output_path("--out", out_, program_, /*writes=*/true);
   if (kind_ == Kind::units) {
     seed_ = args_.seed();
     const std::string parts = args_.str("parts");
@@ -220,6 +224,16 @@ std::string hex(double x) {
   std::snprintf(b, sizeof b, "%a", x);
   return b;
 }
+// A part file's seal: row_seal over its header values (but the seal's own) and its cells.
+std::string part_seal(const TsvTable& t) {
+  std::vector<std::string> cells;
+  for (auto& [k, v] : t.meta)
+    if (k != "seal") cells.push_back(k + "=" + v);
+  for (auto& c : t.columns) cells.push_back(c);
+  for (auto& r : t.rows) cells.insert(cells.end(), r.begin(), r.end());
+  cells.push_back("");  // the seal's place (row_seal leaves the last cell out)
+  return row_seal(cells);
+}
 double unhex(const std::string& s, const std::string& file) {
   char* end = nullptr;
   const double x = std::strtod(s.c_str(), &end);
@@ -252,6 +266,13 @@ ErrorMaxima StudyRunner::shared_pass(const std::string& unit,
       const TsvTable t = TsvTable::load(file);
       bool same = t.get("part").value_or("") == std::to_string(i);
       for (auto& [k, v] : id) same = same && t.get(k).value_or("") == v;
+      // The part's seal (as a store row's, over its header and cells) says it is whole and
+      // unedited; a part that fails it is named and computed again.
+      if (same && t.get("seal").value_or("") != part_seal(t)) {
+        std::fprintf(stderr, "[%s] %s: part file %s is not whole or was edited (its seal does not "
+                             "match): computed again\n", program_.c_str(), unit.c_str(), file.c_str());
+        same = false;
+      }
       if (same) {
         for (auto& r : t.rows) {
           m.error.push_back(unhex(r[t.require_column("error")], file));
@@ -278,6 +299,7 @@ ErrorMaxima StudyRunner::shared_pass(const std::string& unit,
       t.columns = {"error", "exact", "worst"};
       for (std::size_t j = 0; j < m.error.size(); ++j)
         t.rows.push_back({hex(m.error[j]), hex(m.exact[j]), hex(static_cast<double>(m.worst[j]))});
+      t.set("seal", part_seal(t));
       t.save(file);  // (creates the folder)
       std::fprintf(stderr, "[%s] %s: part %d of %d saved (%.1f s)\n", program_.c_str(), unit.c_str(),
                    i + 1, parts_, m.kernel_seconds);

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -53,18 +54,27 @@ const std::vector<std::string>& row_provenance_columns() {
   return c;
 }
 
-std::string row_seal(const std::vector<std::string>& row) {
-  // FNV-1a, 64 bits: not a secret, a tripwire: any edit of a cell changes it.
+namespace {
+// FNV-1a, 64 bits, over the first `n` cells each followed by a tab: not a secret, a tripwire.
+std::string fnv_seal(const std::vector<std::string>& row, std::size_t n) {
   uint64_t h = 1469598103934665603ull;
   auto feed = [&](const std::string& cell) {
     for (unsigned char c : cell) h = (h ^ c) * 1099511628211ull;
     h = (h ^ static_cast<unsigned char>('\t')) * 1099511628211ull;
   };
-  const std::size_t n = row.size() >= 2 ? row.size() - 2 : 0;  // checked and seal excluded
-  for (std::size_t i = 0; i < n; ++i) feed(row[i]);
+  for (std::size_t i = 0; i < n && i < row.size(); ++i) feed(row[i]);
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
   return buf;
+}
+}  // namespace
+
+std::string row_seal(const std::vector<std::string>& row) {
+  return fnv_seal(row, row.empty() ? 0 : row.size() - 1);  // every cell but the seal
+}
+
+std::string row_seal_without_checked(const std::vector<std::string>& row) {
+  return fnv_seal(row, row.size() >= 2 ? row.size() - 2 : 0);
 }
 
 std::size_t recheck_count(const std::string& checked) {
@@ -151,12 +161,16 @@ LevelCache::LevelCache(std::string path, std::vector<std::pair<std::string, std:
       made_on_(machine_summary() + (using_device() ? ", device " + device_name() : "")),
       writer_(writer) {
   if (path_.empty()) throw InputError("--out PATH is required (see --help)");
+  for (auto& [k, v] : params)
+    if (k == "program") program_ = v;
   std::error_code ec;
   const auto st = fs::symlink_status(path_, ec);
   if (fs::exists(st) && !fs::is_regular_file(st))
     throw InputError("--out " + path_ + " exists and is not a regular file");
   if (mode_ == CacheMode::recheck && !fs::exists(st))
     throw InputError("--recheck: " + path_ + " does not exist: nothing to re-check");
+  if (mode_ == CacheMode::verify && !fs::exists(st))
+    throw InputError("--verify: " + path_ + " does not exist: nothing to verify");
   if (mode_ != CacheMode::verify && mode_ != CacheMode::census && writer_) {
     // The writer's lock: a second process on the same file is refused, not raced.
     const std::string lock = path_ + ".lock";
@@ -179,6 +193,7 @@ LevelCache::LevelCache(std::string path, std::vector<std::pair<std::string, std:
     }
   }
   for (auto& [k, v] : params) table_.set(k, v);
+  params_ = params;
   table_.source = path_;  // for messages naming a malformed cell
   table_.columns = columns;
   for (auto& c : row_provenance_columns()) table_.columns.push_back(c);
@@ -199,16 +214,34 @@ void LevelCache::refuse_file(const std::string& problem, std::size_t rows, bool 
   if (!replace)
     throw InputError(path_ + ": " + problem + "; nothing written (--replace discards its " +
                      std::to_string(rows) + " rows; or restore the file from git)");
-  std::fprintf(stderr, "[store] %s: %s: its %zu rows are discarded (--replace)\n", path_.c_str(),
-               problem.c_str(), rows);
+  std::fprintf(stderr, "[store] %s: %s: its %zu rows are discarded (%s)\n", path_.c_str(),
+               problem.c_str(), rows, reason_.c_str());
 }
 
 void LevelCache::load(const std::vector<std::pair<std::string, std::string>>& params) {
   if (!fs::exists(path_)) return;
   const TsvTable old = TsvTable::load(path_, false);  // InputError: unreadable, CRLF, BOM
-  // A file of the quick profile is a cache of minutes: replaced, not defended.
-  const bool replace = (mode_ == CacheMode::replace || old.get("profile") == "quick") &&
+  disk_ = disk_state();
+  // Only the study that owns a store file writes it: another program's file is refused even
+  // with --replace, which would discard its rows.
+  if (!old.columns.empty() && old.columns.back() == "seal" && old.get("program").value_or("?") != program_)
+    throw InputError("--out " + path_ + " is a sealed result-store file of " +
+                     escaped(old.get("program").value_or("?")) + ": only that study writes it (give another path)");
+  // A header that names a key twice contradicts itself (a stray line pasted in): which line
+  // holds is not guessed, the file is refused (only --replace discards it).
+  for (std::size_t i = 0; i < old.meta.size(); ++i)
+    for (std::size_t j = i + 1; j < old.meta.size(); ++j)
+      if (old.meta[i].first == old.meta[j].first && old.meta[i].second != old.meta[j].second)
+        return refuse_file("its header names '" + escaped(old.meta[i].first) + "' twice ('" +
+                               escaped(old.meta[i].second) + "', then '" + escaped(old.meta[j].second) +
+                               "')",
+                           old.rows.size(), mode_ == CacheMode::replace);
+  // A file of the quick profile, found by a quick run, is a cache of minutes: replaced, not
+  // defended.  A paper run never discards rows without --replace.
+  const bool quick_cache = old.get("profile") == "quick" && table_.get("profile") == "quick";
+  const bool replace = (mode_ == CacheMode::replace || quick_cache) &&
                        mode_ != CacheMode::verify && mode_ != CacheMode::census;
+  reason_ = mode_ == CacheMode::replace ? "--replace" : "a quick-profile cache";
   for (auto& [k, v] : params) {
     const auto have = old.get(k);
     if (!have || *have != v)
@@ -260,8 +293,32 @@ void LevelCache::load(const std::vector<std::pair<std::string, std::string>>& pa
       throw InputError(path_ + ": " + problem + "; nothing written (--replace drops " +
                        (bad > 1 ? "them" : "it") + " and recomputes " + (bad > 1 ? "their units" : "its unit") +
                        " when run; or restore the file from git)");
-    std::fprintf(stderr, "[store] %s: %s: dropped (--replace); their units are recomputed when run\n",
-                 path_.c_str(), problem.c_str());
+    std::fprintf(stderr, "[store] %s: %s: dropped (%s); their units are recomputed when run\n",
+                 path_.c_str(), problem.c_str(), reason_.c_str());
+  }
+  // One unit's rows come from one run (a unit is computed, replaced and re-stamped whole):
+  // rows of one unit from two runs are two copies of it, as a merge of two versions of the
+  // file leaves them.  Which to keep is not guessed.
+  const int cmade = table_.column("made_on"), crun = table_.column("code");
+  std::map<std::vector<std::string>, std::pair<std::string, std::string>> run_of;
+  std::set<std::vector<std::string>> mixed;
+  std::string mix;
+  for (auto& r : table_.rows) {
+    const auto key = key_of(r);
+    const std::pair<std::string, std::string> run{r[crun], r[cmade]};
+    const auto [it, fresh] = run_of.emplace(key, run);
+    if (fresh || it->second == run || !mixed.insert(key).second || !mix.empty()) continue;
+    mix = "unit " + key_text(key) + " holds rows of two runs (code " + it->second.first + ", " +
+          it->second.second + "; code " + run.first + ", " + run.second +
+          "): two copies of one unit, as a merge leaves them";
+  }
+  if (!mixed.empty()) {
+    if (!replace)
+      throw InputError(path_ + ": " + mix + "; nothing written (keep one copy, or --replace drops "
+                       "them and recomputes the unit when run)");
+    std::fprintf(stderr, "[store] %s: %s: %zu such units dropped (%s)\n", path_.c_str(), mix.c_str(),
+                 mixed.size(), reason_.c_str());
+    std::erase_if(table_.rows, [&](const auto& x) { return mixed.count(key_of(x)) > 0; });
   }
   const int ccode = table_.column("code");
   for (auto& r : table_.rows) reused_ += r[ccode] == code_;
@@ -325,10 +382,99 @@ void LevelCache::add(std::vector<std::string> row) {
   ++added_;
 }
 
-void LevelCache::save() {
-  if (!running() || !writer_) return;
+LevelCache::DiskState LevelCache::disk_state() const {
+  struct stat st;
+  if (::stat(path_.c_str(), &st) != 0) return {};
+  return {static_cast<long long>(st.st_dev), static_cast<long long>(st.st_ino),
+          static_cast<long long>(st.st_size), static_cast<long long>(st.st_mtim.tv_sec),
+          static_cast<long long>(st.st_mtim.tv_nsec)};
+}
+
+// The lock this run took is the one at `<file>.lock` still: a lock file removed (or replaced)
+// meanwhile lets a second writer in, so it is taken again at its path, and if another process
+// holds it now, this run does not write.
+bool LevelCache::hold_lock() {
+  const std::string lock = path_ + ".lock";
+  struct stat held, now;
+  if (::fstat(lock_fd_, &held) == 0 && ::stat(lock.c_str(), &now) == 0 && held.st_dev == now.st_dev &&
+      held.st_ino == now.st_ino)
+    return false;
+  int fd = ::open(lock.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+  if (fd < 0 || ::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    if (fd >= 0) ::close(fd);
+    rescue("its lock " + lock + " was removed or replaced while this run held it, and another "
+           "process holds the new one");
+  }
+  if (fd <= 2) {  // never a stream (see the constructor)
+    const int moved = ::fcntl(fd, F_DUPFD_CLOEXEC, 3);
+    ::close(fd);
+    fd = moved;
+  }
+  ::close(lock_fd_);
+  lock_fd_ = fd;
+  std::fprintf(stderr, "[store] %s: its lock was removed or replaced while this run held it; "
+                       "taken again, the file merged with what is on disk\n", path_.c_str());
+  return true;
+}
+
+// This run's rows saved beside the file (a new path, never the store file), then InputError.
+void LevelCache::rescue(const std::string& problem) {
+  const std::string kept = path_ + ".rescued-" + std::to_string(::getpid()) + ".tsv";
+  add_provenance(table_);
+  table_.save(kept);
+  throw InputError(path_ + ": " + problem + ": not written; this run's rows are in " + kept);
+}
+
+// Another writer changed the file since this run read or wrote it (a lock file removed, a
+// hand edit): its rows are merged, not overwritten.  Per unit: this run's rows where it
+// computed the unit, else the file's, else (a unit the file no longer holds) the ones read.
+void LevelCache::merge_disk() {
+  TsvTable disk;
+  try {
+    disk = TsvTable::load(path_, false);
+  } catch (const InputError& e) {
+    rescue(std::string("it changed on disk meanwhile and cannot be read (") + e.what() + ")");
+  }
+  for (auto& [k, v] : params_)
+    if (disk.get(k) != v) rescue("it changed on disk meanwhile, its parameter '" + k + "' now differs");
+  if (disk.columns != table_.columns) rescue("it changed on disk meanwhile, its columns now differ");
+  for (std::size_t i = 0; i < disk.rows.size(); ++i)
+    if (disk.rows[i].size() != disk.columns.size() || disk.rows[i].back() != row_seal(disk.rows[i]))
+      rescue("it changed on disk meanwhile, line " + std::to_string(disk.row_lines[i]) +
+             " is not a whole sealed row");
+  std::vector<std::vector<std::string>> merged;
+  std::set<std::vector<std::string>> placed;
+  std::size_t taken = 0;
+  auto place = [&](const std::vector<std::string>& key) {
+    if (!placed.insert(key).second) return;
+    bool on_disk = false;
+    for (auto& r : disk.rows) on_disk = on_disk || key_of(r) == key;
+    const bool ours = started_.count(key) || !on_disk;
+    for (auto& r : ours ? table_.rows : disk.rows)
+      if (key_of(r) == key) merged.push_back(r), taken += !ours;
+  };
+  for (auto& r : table_.rows) place(key_of(r));
+  for (auto& r : disk.rows) place(key_of(r));
+  table_.rows = std::move(merged);
+  std::fprintf(stderr, "[store] %s changed on disk while this run held it: merged (%zu rows of "
+                       "units this run did not compute taken from the file)\n", path_.c_str(), taken);
+}
+
+void LevelCache::write_file() {
+  const bool lost = lock_fd_ >= 0 && hold_lock();
+  const DiskState now = disk_state();
+  if ((lost || now != disk_) && now != DiskState{}) {  // (a file removed meanwhile: ours is written)
+    if (!running()) rescue("it changed on disk while this run held it");
+    merge_disk();
+  }
   add_provenance(table_);
   table_.save(path_);
+  disk_ = disk_state();
+}
+
+void LevelCache::save() {
+  if (!running() || !writer_) return;
+  write_file();
 }
 
 void LevelCache::finish() {
@@ -436,13 +582,17 @@ void LevelCache::finish() {
         if (r[ccode] != code_ && old_codes.count(r[ccode])) restamp(r, tail), ++restamped;
       if (restamped) {
         // The whole chain of re-checks lives in a log beside the file, not in every row.
-        std::ofstream log(fs::path(path_).parent_path() / "rechecks.log", std::ios::app);
+        const fs::path log_path = fs::path(path_).parent_path() / "rechecks.log";
+        std::ofstream log(log_path, std::ios::app);
         log << fs::path(path_).filename().string() << "\trecheck " << today() << " of code " << codes
             << tail << " -> " << code_ << "\t" << restamped << " rows\n";
+        log.close();
+        if (!log)
+          throw InputError("cannot append to " + log_path.string() + ": the re-check of " + path_ +
+                           " is not written (its record would be lost)");
       }
     }
-    add_provenance(table_);
-    table_.save(path_);
+    write_file();
     std::fprintf(stderr, "[store] recheck %s: %zu rows re-stamped as current\n", path_.c_str(),
                  restamped);
   }

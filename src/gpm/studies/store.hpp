@@ -55,10 +55,16 @@ std::string today();
 
 // The provenance columns every store row ends with.
 const std::vector<std::string>& row_provenance_columns();
-// The seal of a row: 16 hex digits of a 64-bit FNV-1a hash of every cell but `checked` and
-// `seal` (the study's cells, code, made_on), each followed by a tab.  `row` holds all the
-// columns of row_provenance_columns() (the seal cell's content is ignored).
+// The seal of a row: 16 hex digits of a 64-bit FNV-1a hash of every cell but the seal (the
+// study's cells, code, made_on, checked), each followed by a tab.  `row` holds all the
+// columns of row_provenance_columns() (the seal cell's content is ignored).  A seal is a
+// tripwire for accidents (an edit by hand, a cut row, a merge, a wrong line ending): anyone
+// can recompute it after a deliberate edit, so it is no evidence against one; that evidence
+// is git's history and recomputing the rows (--verify).
 std::string row_seal(const std::vector<std::string>& row);
+// The seal as written before 2026-12-03, which left `checked` out: read only by
+// `gpm store-seal`, which verifies rows under it once and seals them anew.
+std::string row_seal_without_checked(const std::vector<std::string>& row);
 // The re-checks a row's `checked` cell stands for: each "recheck …" record it holds (an older
 // chain "a; b; c") plus the count it carries as "(+N earlier)"; 0 for "computed".
 std::size_t recheck_count(const std::string& checked);
@@ -120,7 +126,22 @@ class LevelCache {
   // `tail`: what the re-check did (": N units recomputed, max rel diff D").
   void restamp(std::vector<std::string>& row, const std::string& tail) const;
 
+  // What the file on disk was when this run last read or wrote it (all zero: no file).
+  struct DiskState {
+    long long dev = 0, ino = 0, size = 0, sec = 0, nsec = 0;
+    bool operator==(const DiskState&) const = default;
+  };
+  DiskState disk_state() const;
+  bool hold_lock();  // true if the lock had to be taken again
+  void merge_disk();
+  [[noreturn]] void rescue(const std::string& problem);
+  void write_file();  // the lock checked, the disk merged, the table saved
+
   std::string path_;
+  std::string program_;  // the study's (params' "program")
+  std::vector<std::pair<std::string, std::string>> params_;
+  DiskState disk_;
+  std::string reason_ = "--replace";  // why rows may be discarded: --replace or a quick cache
   TsvTable table_;
   int key_columns_;
   CacheMode mode_;
