@@ -5,7 +5,9 @@
 #      reading it already refuses a row whose seal does not match its cells, a short or long
 #      row, a duplicate, CRLF line endings or a byte-order mark, other parameters;
 #   2. verify: its cheapest units are recomputed under the current code and compared with the
-#      stored rows (numbers to 1e-9 relative, texts exactly; a non-finite number never agrees).
+#      stored rows (numbers to 1e-9 relative, texts exactly; a non-finite number never agrees);
+#   3. where its finer rows were computed matrix-free, the coarse units again by that path
+#      (errors to 1e-9 relative: the storage path the fine rows took is exercised too).
 # A file missing from the store fails, as does any check above.
 #
 # With --recheck (by hand, after a change of the core that should not change the numbers):
@@ -47,6 +49,31 @@ check() {
     # shellcheck disable=SC2086
     log+=$'\n'$("$build/$prog" "$@" $coarse --profile paper --out "$store/$file" "$mode" 2>&1) || rc=$?
     step=${mode#--}
+  fi
+  # 3. the other storage path: a file whose fine rows were computed matrix-free has its
+  #    coarse units computed matrix-free too (into a scratch file), their errors compared with
+  #    the stored (assembled) rows to 1e-9 relative, so that the path the fine rows took is
+  #    exercised by the check, not only the assembled one.
+  if [ "$rc" -eq 0 ] && grep -q $'\tmatrix_free\t' "$store/$file"; then
+    local scratch; scratch=$(mktemp -d)
+    # shellcheck disable=SC2086
+    log+=$'\n'$("$build/$prog" "$@" $coarse --profile paper --storage matrix_free --out "$scratch/mf.tsv" 2>&1) || rc=$?
+    step=matrix_free
+    if [ "$rc" -eq 0 ]; then
+      log+=$'\n'$(awk -F'\t' -v file="$file" '
+        FNR == 1 { part++ } /^#/ { next }
+        !seen[part]++ { for (i = 1; i <= NF; i++) col[part, $i] = i; next }
+        { key = ""; for (k = 1; k <= 3; k++) if ((part, keys[k]) in col) key = key "|" $col[part, keys[k]]
+          if ((part, "theta") in col) key = key "|" $col[part, "theta"]
+          e = $col[part, "rel_error"] }
+        part == 1 { mf[key] = e; next }
+        (key in mf) { n++; d = mf[key] - e; if (d < 0) d = -d; s = (e < 0 ? -e : e); r = s > 0 ? d / s : d
+                      if (r > worst) worst = r }
+        END { printf "[store] matrix-free path of %s: %d coarse rows, max relative difference of rel_error %.3g", file, n, worst
+              if (n == 0 || worst > 1e-9) { print ": DIFFERS"; exit 1 } print ": agree" }
+        BEGIN { keys[1] = "h_rule"; keys[2] = "weight"; keys[3] = "level" }' "$scratch/mf.tsv" "$store/$file") || rc=$?
+    fi
+    rm -rf "$scratch"
   fi
   grep '\[store\]\|rror' <<<"$log"
   if [ "$rc" -eq 0 ]; then checked=$((checked + 1)); else failed=$((failed + 1)); echo "   FAILED ($step, exit $rc)"; fi
