@@ -1,4 +1,5 @@
 #include "gpm/io/args.hpp"
+#include "gpm/io/text_format.hpp"
 
 #include <cctype>
 #include <cerrno>
@@ -265,16 +266,16 @@ int run_main(const std::string& program, int (*body)(int, char**), int argc, cha
     }
     return rc;
   } catch (const InputError& e) {
-    std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());
+    std::fprintf(stderr, "%s: error: %s\n", program.c_str(), clip_long_words(e.what()).c_str());
     return 2;
   } catch (const NumericalError& e) {
-    std::fprintf(stderr, "%s: numerical failure: %s\n", program.c_str(), e.what());
+    std::fprintf(stderr, "%s: numerical failure: %s\n", program.c_str(), clip_long_words(e.what()).c_str());
     return 3;
   } catch (const StoreMismatch& e) {
-    std::fprintf(stderr, "%s: store check failed: %s\n", program.c_str(), e.what());
+    std::fprintf(stderr, "%s: store check failed: %s\n", program.c_str(), clip_long_words(e.what()).c_str());
     return 4;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());
+    std::fprintf(stderr, "%s: error: %s\n", program.c_str(), clip_long_words(e.what()).c_str());
     return 1;
   }
 }

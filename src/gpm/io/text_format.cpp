@@ -19,4 +19,20 @@ std::string format_text(const char* f, ...) {
   return s;
 }
 
+std::string clip_long_words(const std::string& text, std::size_t longest) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    std::size_t j = i;
+    while (j < text.size() && text[j] != ' ' && text[j] != '\t') ++j;
+    if (j - i > longest)
+      out.append(text, i, longest) += " [... " + std::to_string(j - i) + " characters]";
+    else
+      out.append(text, i, j - i);
+    if (j < text.size()) out += text[j++];
+    i = j;
+  }
+  return out;
+}
+
 }  // namespace gpm

@@ -8,4 +8,9 @@ namespace gpm {
 
 std::string format_text(const char* format, ...) __attribute__((format(printf, 1, 2)));
 
+// A message that echoes input names the place, not the payload: every run of more than
+// `longest` characters without a space or tab (a cell, a path, an option value) is cut to its
+// first `longest` characters and " [... N characters]".  A 10 MB cell makes a line, not 10 MB.
+std::string clip_long_words(const std::string& text, std::size_t longest = 200);
+
 }  // namespace gpm

@@ -90,6 +90,7 @@ std::string checked_cell(const std::string& last, std::size_t earlier) {
 }
 
 std::string escaped(const std::string& s) {
+  if (s.size() > 200) return escaped(s.substr(0, 200)) + " [... " + std::to_string(s.size()) + " characters]";
   std::string out;
   for (unsigned char c : s) {
     if (c == '\r') out += "\\r";
@@ -345,7 +346,7 @@ std::vector<std::string> LevelCache::key_of(const std::vector<std::string>& row)
 std::string LevelCache::key_text(const std::vector<std::string>& key) const {
   std::string s;
   for (std::size_t c = 0; c < key.size(); ++c)
-    s += (c ? ", " : "") + table_.columns[c] + " " + key[c];
+    s += (c ? ", " : "") + table_.columns[c] + " " + escaped(key[c]);
   return s;
 }
 
@@ -529,8 +530,8 @@ void LevelCache::finish() {
         if (d < 0 || d > kStoreRelTol) {
           if (problems.size() < 5)
             problems.push_back(key_text(key) + ", row " + std::to_string(i + 1) + ": " +
-                               table_.columns[c] + " " + (*b[i])[c] + " in the file, " +
-                               (*a[i])[c] + " now");
+                               table_.columns[c] + " " + escaped((*b[i])[c]) + " in the file, " +
+                               escaped((*a[i])[c]) + " now");
           else
             problems.push_back("");
         }
