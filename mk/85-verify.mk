@@ -17,3 +17,19 @@ verify-report: $(VERIFY_STAMP)
 # Extra prerequisite of the paper and the supplement (the Makefile's pandoc recipe names its
 # inputs itself).
 paper/report.html paper/supplement.html: $(VERIFY_STAMP)
+
+# Every unit of the store recomputed under the current code and compared with the stored rows
+# (--verify at every stored level, the registry's arguments): hours at paper scale (the plan
+# prices it: make plan PROFILE=paper), for a machine lent for the purpose; its log goes to
+# results/verify_full.log.  make test recomputes the coarse units and a sample of the finer ones.
+.PHONY: verify-store-full
+verify-store-full: build
+	@$(BUILD)/gpm study --store-files | grep -v '^#' | tail -n +2 | \
+	  awk -F'\t' -v OFS='\t' '{ for (i = 1; i <= NF; i++) if ($$i == "") $$i = "-"; print }' | \
+	while IFS="$$(printf '\t')" read -r _s file program args census _c _sl; do \
+	  [ "$$args" = - ] && args=""; [ "$$census" = - ] && census=""; \
+	  echo "== $$(date -u +%FT%TZ) $$file"; \
+	  out=$$(nice -n 19 $(BUILD)/$$program $$args $$census --profile paper --out $(STORE)/$$file.tsv --verify 2>&1); rc=$$?; \
+	  echo "$$out" | grep '\[store\]\|rror'; [ $$rc -eq 0 ] || exit 1; \
+	done > results/verify_full.log.tmp 2>&1; rc=$$?; \
+	cat results/verify_full.log.tmp; mv results/verify_full.log.tmp results/verify_full.log; exit $$rc
