@@ -279,7 +279,9 @@ int body(int argc, char** argv) {
         hows.push_back(rechecking ? stored_propagator(*caches[todo[u].reading], {wname, fmt(todo[u].theta), fmt(k)})
                                   : how);
       }
-      const std::vector<HeatResult> rs = run_heat(p, L, settings, hows, dx);
+      const std::vector<HeatResult> rs =
+          naming_unit("Table " + ts.table + ", " + h_rule_name(h_rule) + ", " + wname + ", level " + fmt(k),
+                      [&] { return run_heat(p, L, settings, hows, dx); });
       for (std::size_t i = 0; i < here.size(); ++i) {
         const Todo& t = todo[here[i]];
         const HeatResult& res = rs[i];
@@ -310,11 +312,14 @@ int body(int argc, char** argv) {
         run.unit_done(0, head + (res.blew_up
             ? line_printf("BLOW-UP at step %ld: ||U||/||U0|| = %.3g (x%.3g in the last step)  %.2f s",
                           res.blowup_step, res.growth, res.amplification, res.seconds)
-            : res.subspace > 0
+            : (res.subspace > 0
             ? line_printf("err=%.4e Krylov m=%d  %.0f products  %.2f s", res.rel_error, res.subspace,
                           res.products, res.seconds)
             : line_printf("err=%.4e CG %.1f it/step  %.3g s/step  %.2f s", res.rel_error,
-                          res.mean_cg_iterations, res.seconds_per_step, res.seconds)));
+                          res.mean_cg_iterations, res.seconds_per_step, res.seconds)) +
+              // Not stopped is not "stable": a series that grew is said to have grown.
+              (res.growth_max > 2 ? line_printf("  (||U||/||U0|| grew to %.3g: run to T, no guard)", res.growth_max)
+                                  : std::string())));
         if (caches[t.reading]->writes() && !rates_input.empty())
           write_rates_input(*caches[t.reading], reading_path(rates_input, r));
       }

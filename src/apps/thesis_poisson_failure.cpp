@@ -107,7 +107,7 @@ std::string one_line(std::string s) {
 
 // A solve that may fail: what came back, in words and numbers.
 struct Outcome {
-  std::string status = "ok";  // ok | refused | not_positive_definite | no_convergence | non_finite
+  std::string status = "ok";  // ok | refused | not_positive_definite | unreachable_tolerance | no_convergence | non_finite
   std::string message = "-";  // the exception's text, verbatim
   int iterations = -1;
   std::vector<double> U;
@@ -115,6 +115,7 @@ struct Outcome {
 
 std::string classify(const std::string& msg) {
   if (msg.find("not positive definite") != std::string::npos) return "not_positive_definite";
+  if (msg.find("out of reach in double precision") != std::string::npos) return "unreachable_tolerance";
   if (msg.find("did not reach") != std::string::npos) return "no_convergence";
   if (msg.find("non-finite") != std::string::npos) return "non_finite";
   return "numerical_error";

@@ -89,7 +89,8 @@ int body(int argc, char** argv) {
     // Assemble −Δ_h (or keep it matrix-free), solve by CG, measure the error in Ω.
     const auto t0 = std::chrono::steady_clock::now();
     const DiscreteLaplacian L(p, V, weight(wname), h, storage, max_bytes);
-    const PoissonResult r = solve_poisson(p, L, d.f, d.g, tol);
+    const PoissonResult r = naming_unit(rule + ", " + wname + ", level " + fmt(k),
+                                        [&] { return solve_poisson(p, L, d.f, d.g, tol); });
     double err = 0;
     for (std::size_t i = 0; i < p.size(); ++i)
       if (p.in_omega[i]) err = std::max(err, std::fabs(d.g[i] - r.U[i]));

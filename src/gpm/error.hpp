@@ -17,6 +17,17 @@ struct NumericalError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A unit's computation whose numerical failure names the unit: `where` (e.g. "h10,
+// quartic_polynomial, level 9") is put before the message of a NumericalError thrown by `f`.
+template <class F>
+auto naming_unit(const std::string& where, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const NumericalError& e) {
+    throw NumericalError(where + ": " + e.what());
+  }
+}
+
 // A result store whose rows disagree with what the current code computes for the same
 // units (store.hpp: --verify, --recheck).  The message names the file, unit and column.
 struct StoreMismatch : std::runtime_error {

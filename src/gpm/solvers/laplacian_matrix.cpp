@@ -714,9 +714,19 @@ void CgState::update(Eigen::VectorXd& x, const Eigen::VectorXd& q) {
   if (!std::isfinite(pq))
     throw NumericalError(what_ + ": non-finite value p^T S p = " + cg_number(pq) +
                          " at iteration " + std::to_string(iterations_));
-  if (!(pq > 0))
+  if (!(pq > 0)) {
+    // p^T S p <= 0 once the residual sits at rounding level is rounding, not a property of
+    // S: the tolerance asked for is below what double precision reaches for this system.
+    const double rel = std::sqrt(rr_) / bnorm_;
+    if (rel <= 1e-12)
+      throw NumericalError(what_ + ": the relative residual " + cg_number(tol_) +
+                           " is out of reach in double precision (it stalled at " + cg_number(rel) +
+                           " by iteration " + std::to_string(iterations_) + ", where p^T S p = " +
+                           cg_number(pq) + " is rounding); ask for a larger --tol");
     throw NumericalError(what_ + ": the matrix is not positive definite (p^T S p = " +
-                         cg_number(pq) + " at iteration " + std::to_string(iterations_) + ")");
+                         cg_number(pq) + " at iteration " + std::to_string(iterations_) +
+                         ", relative residual " + cg_number(rel) + ")");
+  }
   const double alpha = rr_ / pq;
   x += alpha * p_;
   r_ -= alpha * q;
