@@ -42,9 +42,11 @@ $(FIGOUT)/thesis_rate_levels.svg: figures/thesis_rate_levels.gp figures/style.gp
 # read from the store or computed by the library: gpm decisions, src/gpm/studies/decisions.hpp).
 DATAFILES += $(DATA)/decisions.tsv
 $(DATA)/decisions.tsv: $(STORE_FILES) $(BUILD)/gpm tables/published/thesis_table4_7_long.tsv \
-    tables/published/thesis_table4_4_long.tsv tables/published/imoto_table1.tsv $(DATA)/store_score.tsv
+    tables/published/thesis_table4_4_long.tsv tables/published/imoto_table1.tsv $(DATA)/store_score.tsv \
+    $(wildcard results/diagnostics/*.tsv)
 	@mkdir -p $(DATA)
-	$(BUILD)/gpm decisions --store $(STORE) --published tables/published --score $(DATA)/store_score.tsv --out $@
+	$(BUILD)/gpm decisions --store $(STORE) --published tables/published --diagnostics results/diagnostics \
+	  --score $(DATA)/store_score.tsv --out $@
 
 # Figures from the store itself (paper scale, whatever the profile).
 FIGFILES += $(FIGOUT)/thesis_poisson_volumes.svg

@@ -369,6 +369,7 @@ int cmd_decisions(int argc, char** argv) {
          "with the evidence the committed result store gives; src/gpm/studies/decisions.hpp lists them.");
   a.opt("store", "results/paper", "the result store")
       .opt("published", "tables/published", "the published values (thesis_table4_N_long.tsv, imoto_table1.tsv)")
+      .opt("diagnostics", "results/diagnostics", "targeted diagnostic runs that are not studies (imoto_m5_where.tsv)")
       .opt("score", "", "the store's verdict counts (gpm store-rates --score): adds which reading each table ran")
       .output("out", "", "one row per question: question, evidence, decision (required)");
   a.parse(argc, argv, 2);
@@ -376,7 +377,7 @@ int cmd_decisions(int argc, char** argv) {
   require_directories({{"store", store}, {"published", pub}});
   std::optional<TsvTable> score;
   if (!a.str("score").empty()) score = TsvTable::load(a.str("score"));
-  TsvTable table = decisions(store, pub, score);
+  TsvTable table = decisions(store, pub, a.str("diagnostics"), score);
   table.meta = verdicts_header("gpm decisions", store, false, {{"store", store}}).meta;
   table.save(out);
   return 0;

@@ -29,7 +29,7 @@ mode=${3:---verify}
 case $mode in --verify|--recheck) ;; *) echo "verify_store.sh: unknown mode '$mode' (--verify or --recheck)" >&2; exit 2;; esac
 shift $(( $# < 3 ? $# : 3 ))
 only=" $* "
-failed=0 checked=0 missing=()
+failed=0 checked=0 missing=() seen_files=()
 
 # check FILE "CENSUS OPTIONS" "VERIFY OPTIONS" PROGRAM ARGS...
 #   CENSUS OPTIONS: empty for the profile's paper levels, or e.g. "--levels 5,6,7,10,11";
@@ -38,6 +38,7 @@ check() {
   local file=$1 census=$2 coarse=$3 prog=$4
   shift 4
   [ "$only" != "  " ] && [[ "$only" != *" $file "* ]] && return
+  seen_files+=("$file")
   if [ ! -f "$store/$file" ]; then missing+=("$file"); failed=$((failed + 1)); return; fi
   echo "== $file: $prog $*"
   local log rc=0 step
@@ -102,6 +103,17 @@ check thesis_poisson_diagnostic.tsv "--levels 7,8,9 --variants seed1,plain,seed1
   "--levels 7 --weights quartic_polynomial --variants seed1,plain,seed1_cell" thesis_poisson_diagnostic
 
 [ ${#missing[@]} -gt 0 ] && echo "MISSING from the store: ${missing[*]}"
+# A full check: every data file in the store is one of the above (a registered study's, or the
+# hand-listed diagnostic), so sealed and checked; anything else fails.
+if [ "$only" = "  " ]; then
+  for f in "$store"/*.tsv; do
+    [ -e "$f" ] || continue
+    case " ${seen_files[*]} " in *" $(basename "$f") "*) ;; *)
+      echo "NOT IN THE REGISTRY: $(basename "$f") (the store holds only sealed files of the registered studies)"
+      failed=$((failed + 1)) ;;
+    esac
+  done
+fi
 stale=$(cat "$store"/*.tsv 2>/dev/null | grep -v '^#' | grep -c 'of code ' || true)
 echo "store: $checked files pass the census and agree with the current code, $failed fail; $stale rows carried over by a recorded re-check"
 [ "$failed" -eq 0 ] && [ "$checked" -gt 0 ]

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "gpm/error.hpp"
 #include "gpm/geometry/domain.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/weights/weights.hpp"
@@ -210,4 +211,21 @@ TEST_CASE("block product with volumes per column equals the Laplacian of those v
       }
     }
   }
+}
+
+TEST_CASE("CG: p^T S p <= 0 at rounding level is an unreachable tolerance, above it an indefinite matrix",
+          "[laplacian][cg]") {
+  Eigen::VectorXd b(1), x = Eigen::VectorXd::Zero(1), q = Eigen::VectorXd::Zero(1);
+  b[0] = 1;
+  Eigen::VectorXd at_rounding(1), far(1);
+  at_rounding[0] = 1 - 1e-14;  // the residual b - Sx0 is 1e-14 of b
+  far[0] = 0.5;
+  CgState stalled(b, at_rounding, 1e-16, 100, "Poisson solve");
+  CHECK_THROWS_WITH(stalled.update(x, q), Catch::Contains("out of reach in double precision"));
+  CgState indefinite(b, far, 1e-10, 100, "Poisson solve");
+  CHECK_THROWS_WITH(indefinite.update(x, q), Catch::Contains("not positive definite"));
+  // A unit's computation names the unit in its failure.
+  CHECK_THROWS_WITH(naming_unit("h10, quartic_polynomial, level 9",
+                                [&] { return indefinite.update(x, q), 0; }),
+                    Catch::StartsWith("h10, quartic_polynomial, level 9: Poisson solve:"));
 }

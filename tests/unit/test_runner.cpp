@@ -210,3 +210,24 @@ TEST_CASE("runner: --parts saves a pass part by part and resumes it", "[unit][ru
                       Catch::Contains("--parts '" + std::string(bad) + "'"));
   }
 }
+
+TEST_CASE("runner: a part file edited or cut is named and computed again", "[unit][runner][parts]") {
+  TempDir t("gpm_runner_parts_");
+  const PassSetup s;
+  const ErrorMaxima whole = fused_error_maxima(s.p, s.V, s.h, s.req, s.fns);
+  const std::string out = t.file("p.tsv"), part = out + ".parts/level_5_one.0of4.tsv";
+  int calls = 0;
+  CHECK_THROWS_AS(run_parts(out, "4", calls, 2), NumericalError);  // parts 0 and 1 saved
+  REQUIRE(std::filesystem::exists(part));
+  // Part 0 loses its last row (or has a number changed): its seal no longer matches.
+  TsvTable p = TsvTable::load(part);
+  REQUIRE(p.get("seal"));
+  p.rows.pop_back();
+  std::filesystem::remove(part);
+  p.save(part);
+  calls = 0;
+  const ErrorMaxima m = run_parts(out, "4", calls);
+  CHECK(calls == 3);  // part 0 again, and parts 2 and 3
+  CHECK(m.error == whole.error);
+  CHECK(m.worst == whole.worst);
+}

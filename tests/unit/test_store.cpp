@@ -495,3 +495,16 @@ TEST_CASE("outputs: control characters, read-only files, temp names", "[unit][st
     CHECK(fs::exists(t.file(n)));
   CHECK_FALSE(fs::exists(stale));
 }
+
+TEST_CASE("store: a re-check whose record cannot be logged writes nothing", "[unit][store]") {
+  TempDir t("gpm_store_");
+  const std::string f = t.file("s.tsv");
+  run_study(f, CacheMode::run);
+  auto tt = TsvTable::load(f);
+  for (auto& r : tt.rows) r[tt.column("code")] = "0123456789ab";  // rows of older code
+  save_resealed(tt, f);
+  const std::string before = text_of(f);
+  fs::create_directory(t.file("rechecks.log"));  // the log cannot be appended to
+  REQUIRE_THROWS_WITH(run_study(f, CacheMode::recheck, 0, {5}), Catch::Contains("cannot append to"));
+  CHECK(text_of(f) == before);
+}

@@ -276,8 +276,9 @@ void imoto_smoothing_question(const std::string& store, const std::string& pub_d
   }
 }
 
-void imoto_where_question(const std::string& store, TsvTable& out) {
-  const std::optional<TsvTable> where = load_if(store + "/imoto_m5_where.tsv");
+// (A diagnostic of tables/imoto_where.sh, not a study's sealed store file: results/diagnostics.)
+void imoto_where_question(const std::string& store, const std::string& diagnostics, TsvTable& out) {
+  const std::optional<TsvTable> where = load_if(diagnostics + "/imoto_m5_where.tsv");
   if (!where) return;
   const auto files = imoto_realizations(store);
   const TsvTable& t = *where;
@@ -413,13 +414,14 @@ void omega_h_question(TsvTable& out) {
 
 }  // namespace
 
-TsvTable decisions(const std::string& store, const std::string& published_dir, const std::optional<TsvTable>& score) {
+TsvTable decisions(const std::string& store, const std::string& published_dir, const std::string& diagnostics,
+                   const std::optional<TsvTable>& score) {
   TsvTable out;
   out.columns = {"question", "evidence", "decision"};
   time_step_question(store, published_dir, out);
   poisson_volume_question(store, published_dir, out);
   imoto_smoothing_question(store, published_dir, out);
-  imoto_where_question(store, out);
+  imoto_where_question(store, diagnostics, out);
   if (score) readings_question(*score, out);
   omega_h_question(out);
   // Decided by the documents' definitions (and checked by unit tests), not by stored runs.

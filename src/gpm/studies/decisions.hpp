@@ -34,7 +34,7 @@ namespace gpm {
 // The rows for the store `store`, published values from `published_dir`; `score` adds the
 // readings' rows (none when absent).  InputError for a store file that cannot be read or
 // lacks a column a question needs.
-TsvTable decisions(const std::string& store, const std::string& published_dir,
+TsvTable decisions(const std::string& store, const std::string& published_dir, const std::string& diagnostics,
                    const std::optional<TsvTable>& score);
 
 }  // namespace gpm

@@ -148,7 +148,7 @@ std::vector<LevelCache*> StudyRunner::open_files(std::vector<DataFile> files,
     // A file that refuses (InputError) leaves the earlier ones' locks to their destructors.
     file_columns_.push_back(f.columns.empty() ? columns : f.columns);
     caches_.push_back(std::make_unique<LevelCache>(f.path, std::move(f.params), file_columns_.back(),
-                                                   key_columns, mode_, rank_ == 0));
+                                                   key_columns, mode_, rank_ == 0, profile_ == Profile::quick));
     paths_.push_back(f.path);
     saved_added_.push_back(0);
     if (caches_.back()->reused() > 0 && rank_ == 0)

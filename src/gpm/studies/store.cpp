@@ -154,13 +154,14 @@ double cell_difference(const std::string& a, const std::string& b, bool residual
 
 LevelCache::LevelCache(std::string path, std::vector<std::pair<std::string, std::string>> params,
                        std::vector<std::string> columns, int key_columns, CacheMode mode,
-                       bool writer)
+                       bool writer, bool quick_run)
     : path_(std::move(path)),
       key_columns_(key_columns),
       mode_(mode),
       code_(code_fingerprint()),
       made_on_(machine_summary() + (using_device() ? ", device " + device_name() : "")),
-      writer_(writer) {
+      writer_(writer),
+      quick_run_(quick_run) {
   if (path_.empty()) throw InputError("--out PATH is required (see --help)");
   for (auto& [k, v] : params)
     if (k == "program") program_ = v;
@@ -239,7 +240,7 @@ void LevelCache::load(const std::vector<std::pair<std::string, std::string>>& pa
                            old.rows.size(), mode_ == CacheMode::replace);
   // A file of the quick profile, found by a quick run, is a cache of minutes: replaced, not
   // defended.  A paper run never discards rows without --replace.
-  const bool quick_cache = old.get("profile") == "quick" && table_.get("profile") == "quick";
+  const bool quick_cache = old.get("profile") == "quick" && (quick_run_ || table_.get("profile") == "quick");
   const bool replace = (mode_ == CacheMode::replace || quick_cache) &&
                        mode_ != CacheMode::verify && mode_ != CacheMode::census;
   reason_ = mode_ == CacheMode::replace ? "--replace" : "a quick-profile cache";
@@ -274,7 +275,10 @@ void LevelCache::load(const std::vector<std::pair<std::string, std::string>>& pa
     if (row.size() != old.columns.size())
       why = std::to_string(row.size()) + " cells for " + std::to_string(old.columns.size()) + " columns";
     else if (row[cseal] != row_seal(row))
-      why = "its seal does not match its cells (edited after it was written?)";
+      why = row[cseal] == row_seal_without_checked(row)
+                ? "sealed before the seal covered `checked` (2026-12-03): seal the file anew once with "
+                  "`gpm store-seal FILE`"
+                : "its seal does not match its cells (edited after it was written?)";
     else {
       std::vector<std::string> content;
       for (std::size_t c = 0; c < row.size(); ++c)

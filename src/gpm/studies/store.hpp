@@ -84,9 +84,11 @@ class LevelCache {
   // file is of the quick profile), where what differs is dropped and replaced.
   // `writer` false: a reader only (the ranks of an MPI run other than rank 0): no lock, and
   // save() writes nothing.
+  // `quick_run`: this run is of the quick profile, so a file of the quick profile is its cache
+  // (replaced where it differs), whether or not `params` name the profile.
   LevelCache(std::string path, std::vector<std::pair<std::string, std::string>> params,
              std::vector<std::string> columns, int key_columns, CacheMode mode = CacheMode::run,
-             bool writer = true);
+             bool writer = true, bool quick_run = false);
   ~LevelCache();
   LevelCache(const LevelCache&) = delete;
   LevelCache& operator=(const LevelCache&) = delete;
@@ -153,6 +155,7 @@ class LevelCache {
   std::set<std::vector<std::string>> started_;  // units added by this run
   std::vector<std::vector<std::string>> fresh_;  // verify/recheck: the recomputed rows
   bool writer_ = true;
+  bool quick_run_ = false;
 };
 
 }  // namespace gpm
