@@ -150,6 +150,25 @@ double cell_difference(const std::string& a, const std::string& b, bool residual
   return scale > 0 ? std::fabs(x - y) / scale : 0;
 }
 
+// The exclusive lock at `lock` (created if absent), on a descriptor above the standard
+// streams (should stderr be closed, a message written to fd 2 must not land in the lock
+// file): its descriptor, or -1 if another process holds it.  InputError if it cannot be opened.
+int take_lock(const std::string& lock) {
+  int fd = ::open(lock.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+  if (fd < 0) throw InputError("cannot open lock file " + lock + ": " + std::strerror(errno));
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd);
+    return -1;
+  }
+  if (fd <= 2) {
+    const int moved = ::fcntl(fd, F_DUPFD_CLOEXEC, 3);
+    ::close(fd);
+    if (moved < 0) throw InputError("cannot hold the lock " + lock);
+    fd = moved;
+  }
+  return fd;
+}
+
 }  // namespace
 
 LevelCache::LevelCache(std::string path, std::vector<std::pair<std::string, std::string>> params,
@@ -177,22 +196,10 @@ LevelCache::LevelCache(std::string path, std::vector<std::pair<std::string, std:
     // The writer's lock: a second process on the same file is refused, not raced.
     const std::string lock = path_ + ".lock";
     if (fs::path(path_).has_parent_path()) fs::create_directories(fs::path(path_).parent_path());
-    lock_fd_ = ::open(lock.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
-    if (lock_fd_ < 0) throw InputError("cannot open lock file " + lock + ": " + std::strerror(errno));
-    if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
-      ::close(lock_fd_);
-      lock_fd_ = -1;
+    lock_fd_ = take_lock(lock);
+    if (lock_fd_ < 0)
       throw InputError("another process is writing " + path_ + " (its lock " + lock +
                        " is held); wait for it or choose another --out");
-    }
-    // The lock file is never a stream: should stderr be closed, a message written to fd 2
-    // must not land in it.
-    if (lock_fd_ <= 2) {
-      const int moved = ::fcntl(lock_fd_, F_DUPFD_CLOEXEC, 3);
-      ::close(lock_fd_);
-      lock_fd_ = moved;
-      if (lock_fd_ < 0) throw InputError("cannot hold the lock of " + path_);
-    }
   }
   for (auto& [k, v] : params) table_.set(k, v);
   params_ = params;
@@ -404,17 +411,15 @@ bool LevelCache::hold_lock() {
   if (::fstat(lock_fd_, &held) == 0 && ::stat(lock.c_str(), &now) == 0 && held.st_dev == now.st_dev &&
       held.st_ino == now.st_ino)
     return false;
-  int fd = ::open(lock.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
-  if (fd < 0 || ::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-    if (fd >= 0) ::close(fd);
+  int fd = -1;
+  try {
+    fd = take_lock(lock);
+  } catch (const InputError& e) {
+    rescue(std::string("its lock was removed or replaced while this run held it, and ") + e.what());
+  }
+  if (fd < 0)
     rescue("its lock " + lock + " was removed or replaced while this run held it, and another "
            "process holds the new one");
-  }
-  if (fd <= 2) {  // never a stream (see the constructor)
-    const int moved = ::fcntl(fd, F_DUPFD_CLOEXEC, 3);
-    ::close(fd);
-    fd = moved;
-  }
   ::close(lock_fd_);
   lock_fd_ = fd;
   std::fprintf(stderr, "[store] %s: its lock was removed or replaced while this run held it; "
