@@ -557,14 +557,24 @@ local function gather_provenance(doc)
   local chapter, files, seen, pending = nil, {}, {}, nil
   local function flush()
     if #files > 0 then
-      local inl = {pandoc.Str("Data of this chapter: ")}
-      for i, f in ipairs(files) do
-        if i > 1 then table.insert(inl, pandoc.Str(", ")) end
-        table.insert(inl, pandoc.Code(f))
+      -- The paper names only how many files and where they are listed (a list of file names
+      -- is a supplement's matter: in the paper it filled pages of its own).
+      local inl
+      if part == "paper" then
+        inl = {pandoc.Str(string.format("Data of this chapter: %d file%s, each listed with how it was made " ..
+          "(program, command, profile, seed, git revision, date, wall time) and the command that regenerates " ..
+          "each table and figure in the supplement's Appendix E, under this chapter's title.",
+          #files, #files == 1 and "" or "s"))}
+      else
+        inl = {pandoc.Str("Data of this chapter: ")}
+        for i, f in ipairs(files) do
+          if i > 1 then table.insert(inl, pandoc.Str(", ")) end
+          table.insert(inl, pandoc.Code(f))
+        end
+        table.insert(inl, pandoc.Str(". How each file was made (program, command, profile, seed, " ..
+          "git revision, date, wall time) and the command that regenerates each table and figure: " ..
+          "the last appendix, under this chapter's title."))
       end
-      table.insert(inl, pandoc.Str(". How each file was made (program, command, profile, seed, " ..
-        "git revision, date, wall time) and the command that regenerates each table and figure: " ..
-        (part == "paper" and "the supplement's" or "the") .. " last appendix, under this chapter's title."))
       -- The supplement lists everything in its appendix; its own chapters need no line.
       if part ~= "supplement" then
         table.insert(out, pandoc.Div({pandoc.Para(inl)}, pandoc.Attr("", {"provenance"})))

@@ -419,7 +419,7 @@ int body(int argc, char** argv) {
   std::vector<std::pair<std::string, std::string>> outputs = {
       {"--out", out}, {"--summary", summary_path}, {"--constants", constants_path}, {"--hypotheses", hyp_path}};
   for (const char* f : kFigureFiles) outputs.emplace_back("--fig-prefix", fig_prefix + f);
-  check_output_paths(outputs);
+  check_output_paths(outputs, run.program());
   FigureData fig;
   try {
     fig = figure_data(fig_level, seeds.front(), fig_cstar, sw.lambda_sample, args.values());

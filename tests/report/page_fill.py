@@ -2,11 +2,16 @@
 """Pages of a printed report (Chromium's PDF) that stay mostly blank.
 
 For every page the lowest point anything is drawn at (text, path, image) is found by
-following the content stream's transformation matrices; the blank share is the part of the
-printable height below it.  A page more than LIMIT blank fails, unless the next page opens
-a chapter (its first text is set at the size of a chapter title) or it is the last page.
-One line per failing page; exit 1 if any (more than N with --allow N: a ratchet for a report
-whose layout still has them, which may not gain one), 2 on a file that is not such a PDF.
+following the content stream's transformation matrices; the page's fill is the share of the
+printable height above it.  Two rules, the last page exempt from both:
+  - a page under a quarter full (MIN_FILL) fails: a stub is never a page, even at the end of
+    a chapter (tests/report/print_pdf.py lets the next chapter follow on such a page);
+  - a page more than LIMIT blank fails unless the next page opens a chapter (its first text is
+    set at the size of a chapter title): inside a chapter only a figure that does not fit
+    may leave that much of a page blank.
+One line per failing page, then a summary with the fullest and emptiest page; exit 1 if any
+(more than N with --allow N: a ratchet for a report whose layout still has them, which may
+not gain one), 2 on a file that is not such a PDF.
 usage: page_fill.py [--allow N] REPORT.pdf [LIMIT (default 0.6)] [MARGIN_PT (default 34, the 12 mm of paper/style.css)]
 """
 import re
@@ -14,6 +19,7 @@ import sys
 import zlib
 
 CHAPTER_PT = 18.0  # an h1 is 2 em of the 10 pt body; an h2 (1.5 em) stays below this
+MIN_FILL = 0.25   # no page but the last may be filled less than this
 
 
 def fail_usage(msg):
@@ -109,6 +115,73 @@ def scan(content):
     return low, top_text
 
 
+def page_refs(data, body):
+    """The page objects in reading order: the page tree's /Kids, depth first."""
+    root = re.search(rb"/Root (\d+) 0 R", data)
+    if not root:
+        fail_usage("no /Root in the PDF")
+    pages = re.search(rb"/Pages (\d+) 0 R", body(int(root.group(1))))
+    out = []
+    def walk(n):
+        o = body(n)
+        if re.match(rb"\s*<</Type /Pages\b", o):
+            for k in re.findall(rb"(\d+) 0 R", re.search(rb"/Kids \[([^\]]*)\]", o).group(1)):
+                walk(int(k))
+        else:
+            out.append(n)
+    walk(int(pages.group(1)))
+    return out
+
+
+def read_pages(path, margin=34.0):
+    """Per page in order: its object number, fill (0..1), and (y, size) of its topmost text."""
+    try:
+        data = open(path, "rb").read()
+    except OSError as e:
+        fail_usage("cannot read '%s': %s" % (path, e.strerror))
+    if not data.startswith(b"%PDF"):
+        fail_usage("'%s' is not a PDF" % path)
+    offs, body = objects(data)
+    pages = []
+    for n in page_refs(data, body):
+        o = body(n)
+        box = re.search(rb"/MediaBox \[([-\d.\s]+)\]", o)
+        refs = re.search(rb"/Contents (?:(\d+) 0 R|\[([\d\s0R]+)\])", o)
+        if not box or not refs:
+            fail_usage("page object %d without MediaBox or Contents" % n)
+        ids = [int(refs.group(1))] if refs.group(1) else [int(x) for x in re.findall(rb"(\d+) 0 R", refs.group(2))]
+        content = b"\n".join(stream(body(i)) for i in ids)
+        height = float(box.group(1).split()[3])
+        low, top = scan(content)
+        usable = height - 2 * margin
+        fill = 0.0 if low is None else 1.0 - max(0.0, min(1.0, (low - margin) / usable))
+        pages.append({"object": n, "fill": fill, "top": top, "height": height})
+    if not pages:
+        fail_usage("'%s' has no pages" % path)
+    return data, body, pages
+
+
+def destinations(data, body):
+    """Named destinations (Chromium writes one per element id a link points at): name -> (page object, y)."""
+    m = re.search(rb"/Dests (\d+) 0 R", data)
+    if not m:
+        return {}
+    return {k.decode("latin-1"): (int(p), float(y)) for k, p, y in
+            re.findall(rb"/([^\s/\[]+) \[(\d+) 0 R /XYZ [-\d.]+ ([-\d.]+)", body(int(m.group(1))))}
+
+
+def failures(pages, limit):
+    """(page number, why) for every page the rules reject."""
+    out = []
+    for i, p in enumerate(pages[:-1]):
+        nxt = pages[i + 1]["top"]
+        if p["fill"] < MIN_FILL:
+            out.append((i + 1, "%.0f %% full, under a quarter" % (100 * p["fill"])))
+        elif 1 - p["fill"] > limit and not (nxt is not None and nxt[1] >= CHAPTER_PT):
+            out.append((i + 1, "%.0f %% blank, and the next page does not open a chapter" % (100 * (1 - p["fill"]))))
+    return out
+
+
 def main():
     args, allow = sys.argv[1:], 0
     if args[:1] == ["--allow"]:
@@ -123,41 +196,18 @@ def main():
         margin = float(args[2]) if len(args) > 2 else 34.0
     except ValueError:
         fail_usage("LIMIT and MARGIN_PT must be numbers")
-    try:
-        data = open(path, "rb").read()
-    except OSError as e:
-        fail_usage("cannot read '%s': %s" % (path, e.strerror))
-    if not data.startswith(b"%PDF"):
-        fail_usage("'%s' is not a PDF" % path)
-    offs, body = objects(data)
-    pages = []
-    for n in sorted(offs):
-        o = body(n)
-        if re.match(rb"\s*<</Type /Page\b", o):
-            box = re.search(rb"/MediaBox \[([-\d.\s]+)\]", o)
-            refs = re.search(rb"/Contents (?:(\d+) 0 R|\[([\d\s0R]+)\])", o)
-            if not box or not refs:
-                fail_usage("page object %d without MediaBox or Contents" % n)
-            ids = [int(refs.group(1))] if refs.group(1) else [int(x) for x in re.findall(rb"(\d+) 0 R", refs.group(2))]
-            content = b"\n".join(stream(body(i)) for i in ids)
-            height = float(box.group(1).split()[3])
-            pages.append((height, scan(content)))
-    if not pages:
-        fail_usage("'%s' has no pages" % path)
-    bad = 0
-    for i, (height, (low, _)) in enumerate(pages):
-        usable = height - 2 * margin
-        blank = 1.0 if low is None else max(0.0, min(1.0, (low - margin) / usable))
-        if blank <= limit or i == len(pages) - 1:
-            continue
-        nxt = pages[i + 1][1][1]
-        if nxt is not None and nxt[1] >= CHAPTER_PT:
-            continue  # the next page opens a chapter
-        print("BLANK PAGE %d: %.0f %% blank, and the next page does not open a chapter" % (i + 1, 100 * blank))
-        bad += 1
-    print("page_fill: %s: %d page(s), %d mostly blank without a chapter after them%s"
-          % (path, len(pages), bad, " (%d allowed)" % allow if allow else ""))
-    sys.exit(1 if bad > allow else 0)
+    _, _, pages = read_pages(path, margin)
+    bad = failures(pages, limit)
+    for n, why in bad:
+        print("BLANK PAGE %d: %s" % (n, why))
+    body = pages[:-1] or pages
+    full = max(range(len(body)), key=lambda i: body[i]["fill"])
+    empty = min(range(len(body)), key=lambda i: body[i]["fill"])
+    print("page_fill: %s: %d page(s), %d rejected%s; fullest page %d (%.0f %% full), emptiest page %d (%.0f %%)%s"
+          % (path, len(pages), len(bad), " (%d allowed)" % allow if allow else "",
+             full + 1, 100 * body[full]["fill"], empty + 1, 100 * body[empty]["fill"],
+             ", the last page (%.0f %%) aside" % (100 * pages[-1]["fill"]) if len(pages) > 1 else ""))
+    sys.exit(1 if len(bad) > allow else 0)
 
 
 if __name__ == "__main__":

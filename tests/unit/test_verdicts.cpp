@@ -218,4 +218,14 @@ TEST_CASE("verdicts: the printed and identified boards, with the fingerprint row
   CHECK(score_cell(score, "total", "as identified", "unexplained") == "1");
   CHECK(score_cell(score, "total", "as identified", "agrees") == "0");
   CHECK(score_cell(score, "total", "as identified", "counted") == "yes");
+  // The summary groups: each verdict in one, so the groups add up to the rates on both boards.
+  CHECK(score_cell(score, "total", "as printed", "reproduced") == "1");
+  CHECK(score_cell(score, "total", "as printed", "not_explained") == "1");
+  CHECK(score_cell(score, "total", "as printed", "missing") == fmt(others));
+  CHECK(score_cell(score, "total", "as identified", "used_for_setup") == "1");
+  for (const char* board : {"as printed", "as identified"}) {
+    int sum = 0;
+    for (const std::string& g : score_groups()) sum += std::stoi(score_cell(score, "total", board, g));
+    CHECK(fmt(sum) == score_cell(score, "total", board, "rates"));
+  }
 }

@@ -106,15 +106,18 @@ void Args::check_outputs() const {
   for (auto& n : order_) {
     const Opt& o = opts_.at(n);
     if (!o.is_output || o.value.empty()) continue;
+    // A program may write its own sealed files again (a study's second and third outputs are
+    // sealed store files too); another program's are refused.
     if (o.is_store) check_output_path("--" + n, o.value, program_, /*writes=*/false);
-    else check_output_path("--" + n, o.value);
+    else check_output_path("--" + n, o.value, program_);
     outs.emplace_back("--" + n, o.value);
   }
   require_distinct_paths(outs);
 }
 
-void check_output_paths(const std::vector<std::pair<std::string, std::string>>& outputs) {
-  for (auto& [option, path] : outputs) check_output_path(option, path);
+void check_output_paths(const std::vector<std::pair<std::string, std::string>>& outputs,
+                        const std::string& owner) {
+  for (auto& [option, path] : outputs) check_output_path(option, path, owner);
   require_distinct_paths(outputs);
 }
 

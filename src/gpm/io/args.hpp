@@ -68,8 +68,10 @@ class Args {
 
 // check_output_path (tsv.hpp) for each (option, path), then require_distinct_paths over all:
 // for outputs a program derives from its options (a --prefix, the siblings of --out), which
-// parse() cannot know.
-void check_output_paths(const std::vector<std::pair<std::string, std::string>>& outputs);
+// parse() cannot know.  owner: the program running, whose own sealed store files it may
+// write again (a study's --out among them); "" for a program that writes no store file.
+void check_output_paths(const std::vector<std::pair<std::string, std::string>>& outputs,
+                        const std::string& owner = "");
 
 // Strict parse of a decimal number or an expression 2^-k; throws InputError naming `what`.
 double parse_number(const std::string& text, const std::string& what);

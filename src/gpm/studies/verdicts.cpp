@@ -19,24 +19,26 @@ namespace gpm {
 
 namespace {
 
-// Every verdict with its printed name and score column: the one place they are spelled.
+// Every verdict with its printed name, score column and the group a one-line summary counts
+// it in (reproduced, explained by a measurement, not explained, used to identify the set-up,
+// undecided, missing): the one place they are spelled.
 struct VerdictSpelling {
   Verdict verdict;
-  std::string name, column;
+  std::string name, column, group;
 };
 const std::vector<VerdictSpelling>& spellings() {
   static const std::vector<VerdictSpelling> s = {
-      {Verdict::agrees, "agrees", "agrees"},
-      {Verdict::non_convergence, "non-convergence reproduced", "non_convergence"},
-      {Verdict::in_seed_band, "inside seed band", "in_seed_band"},
-      {Verdict::checked_reason, "differs, checked reason", "checked_reason"},
-      {Verdict::explained_ours, "our rate explained, the published one not", "explained_ours"},
-      {Verdict::unexplained, "differs, unexplained", "unexplained"},
-      {Verdict::not_computed, "not computed", "not_computed"},
-      {Verdict::undefined, "undefined", "undefined"},
-      {Verdict::fingerprint, "fingerprint", "fingerprint"},
-      {Verdict::indeterminate, "indeterminate", "indeterminate"},
-      {Verdict::not_counted, "not counted", ""},
+      {Verdict::agrees, "agrees", "agrees", "reproduced"},
+      {Verdict::non_convergence, "non-convergence reproduced", "non_convergence", "reproduced"},
+      {Verdict::in_seed_band, "inside seed band", "in_seed_band", "reproduced"},
+      {Verdict::checked_reason, "differs, checked reason", "checked_reason", "explained"},
+      {Verdict::explained_ours, "our rate explained, the published one not", "explained_ours", "explained"},
+      {Verdict::unexplained, "differs, unexplained", "unexplained", "not_explained"},
+      {Verdict::not_computed, "not computed", "not_computed", "missing"},
+      {Verdict::undefined, "undefined", "undefined", "undecided"},
+      {Verdict::fingerprint, "fingerprint", "fingerprint", "used_for_setup"},
+      {Verdict::indeterminate, "indeterminate", "indeterminate", "undecided"},
+      {Verdict::not_counted, "not counted", "", ""},
   };
   return s;
 }
@@ -190,6 +192,16 @@ std::pair<Verdict, std::string> verdict_of(const StoreRate& r, const SeedBand* b
 
 const std::string& verdict_name(Verdict v) { return spelling(v).name; }
 const std::string& verdict_column(Verdict v) { return spelling(v).column; }
+const std::vector<std::string>& score_groups() {
+  static const std::vector<std::string> g = [] {
+    std::vector<std::string> out;
+    for (auto& sp : spellings())
+      if (!sp.group.empty() && std::find(out.begin(), out.end(), sp.group) == out.end()) out.push_back(sp.group);
+    return out;
+  }();
+  return g;
+}
+
 const std::vector<Verdict>& scored_verdicts() {
   static const std::vector<Verdict> v = [] {
     std::vector<Verdict> s;
@@ -420,7 +432,12 @@ void add_score_row(TsvTable& t, Tally& tally) {
   row["printed"] = tally.printed ? "yes" : "no", row["identified"] = tally.identified ? "yes" : "no";
   row["counted"] = tally.identified ? "yes" : "no";
   row["rates"] = fmt(tally.rows);
-  for (Verdict v : scored_verdicts()) row[verdict_column(v)] = fmt(tally.counts[v]);
+  std::map<std::string, int> groups;
+  for (Verdict v : scored_verdicts()) {
+    row[verdict_column(v)] = fmt(tally.counts[v]);
+    groups[spelling(v).group] += tally.counts[v];
+  }
+  for (auto& g : score_groups()) row[g] = fmt(groups[g]);
   row["mean_abs_diff"] = tally.differences ? format("%.3g", tally.sum_difference / tally.differences) : "NA";
   t.add_row(row);
 }
@@ -432,6 +449,7 @@ TsvTable score_table(const std::vector<JudgedRate>& rates, const std::string& pu
   TsvTable t;
   t.columns = {"table", "slice", "setup", "printed", "identified", "counted", "rates"};
   for (Verdict v : scored_verdicts()) t.columns.push_back(verdict_column(v));
+  for (auto& g : score_groups()) t.columns.push_back(g);
   t.columns.push_back("mean_abs_diff");
   for (Tally& s : slice_tallies(rates)) add_score_row(t, s);
   for (bool identified : {false, true}) {

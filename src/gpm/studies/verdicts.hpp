@@ -81,6 +81,10 @@ const std::string& verdict_name(Verdict v);
 const std::string& verdict_column(Verdict v);
 // Every verdict a board counts (all but not_counted), in score order.
 const std::vector<Verdict>& scored_verdicts();
+// The score's group columns (reproduced, explained, not_explained,
+// used_for_setup, undecided, missing): every scored
+// verdict in exactly one, so a summary in four counts still adds up to the rates.
+const std::vector<std::string>& score_groups();
 
 // The realizations a seed band needs before it can decide a verdict.
 inline constexpr int kSeedBandDecides = 5;
