@@ -86,7 +86,7 @@ test-paper: build
 
 # --- studies, figures, report sections -------------------------------------------------
 # The studies' data and rate-table rules, and the lists STUDIES_<group>, STUDY_FILES, … are
-# generated from the study registry (src/gpm/studies/registry.cpp) into build/studies.mk by
+# generated from the study registry (src/gpm/studies/define/registry.cpp) into build/studies.mk by
 # `make build`; mk/*.mk add what else each part of the report needs (figures, diagnostics),
 # appending to DATAFILES and FIGFILES.  Adding a study: the README, "How to add".
 # A data file is rebuilt only when its program changed (make's timestamps); inside a

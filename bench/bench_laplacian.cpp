@@ -35,7 +35,7 @@
 #include "gpm/io/tsv.hpp"
 #include "gpm/kernel/kernel.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
-#include "gpm/studies/profile.hpp"
+#include "gpm/studies/define/profile.hpp"
 #include "gpm/weights/weights.hpp"
 #include "limit_table.hpp"
 

@@ -9,8 +9,8 @@
 
 #include "gpm/kernel/kernel.hpp"
 #include "gpm/operators/fused_errors.hpp"
-#include "gpm/studies/catalog.hpp"
-#include "gpm/studies/thesis_truncation.hpp"
+#include "gpm/studies/define/catalog.hpp"
+#include "gpm/studies/define/thesis_tables.hpp"
 #include "gpm/weights/weights.hpp"
 
 namespace bench {

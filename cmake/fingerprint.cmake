@@ -1,30 +1,44 @@
 # Build-time script (cmake -P): writes OUT, a C++ source naming the git revision of the tree
 # and, for every program, the fingerprint of the code that decides its numbers.
 #
-# The fingerprint of a program is the SHA-256 (first 12 hex digits) of the SHA-256 of each
-# numerics source of the core (src/gpm, without the files that only parse options, print
-# progress, plan costs, keep the store, judge the stored rates against the published ones or
-# diagnose why they differ (checked_reasons and the heat tables' one-mode model it uses read
-# the store and write none of it; the study registry only names studies, prices them and
-# writes make rules): no stored number depends on those), of the compiler and
-# its flags (FLAGS) and of the program's own source.
-# A data row carries the fingerprint of the program that computed it (see src/gpm/studies/store.hpp):
+# The fingerprint of a program is the SHA-256 (first 12 hex digits) of the SHA-256 of every
+# core source that can change a stored number, of the compiler and its flags (FLAGS) and of
+# the program's own source.  Which core sources those are is a rule by folder, not a list:
+#   in   the numerics (geometry, weights, kernel, operators, solvers, theory), the data
+#        format (io/tsv: how a number is written) and the studies' definitions
+#        (studies/define: catalog, set-ups, each unit's level, h, volumes and time step);
+#   out  the rest of io (options, progress, provenance, text), error messages, and the
+#        rooms that run units and keep the store (studies/run), price profiles
+#        (studies/plan) and judge stored rates (studies/judge): they compute no number a
+#        row stores.
+# A core source that no rule names stops the build: a new folder is placed on purpose.
+# A data row carries the fingerprint of the program that computed it (src/gpm/studies/run/store.hpp):
 # a row is reused as current only under the same fingerprint, otherwise after a recorded
 # re-check.  OUT is rewritten only when its content changes, so an unchanged tree recompiles
 # nothing.
 #
 # Inputs: -DSRC=<source dir> -DOUT=<generated .cpp> -DFLAGS=<compiler, version, flags>
 cmake_minimum_required(VERSION 3.22)
-set(io_only args command_line error progress profile cost_model study_plan provenance store runner
-  rates rate_levels setup_identification verdicts text_format checked_reasons heat_mode_model page_verdicts decisions registry)
 file(GLOB_RECURSE core ${SRC}/src/gpm/*.cpp ${SRC}/src/gpm/*.hpp)
 list(SORT core)
 set(core_text "")
 foreach(f IN LISTS core)
-  get_filename_component(stem ${f} NAME_WE)
-  if(stem IN_LIST io_only)
+  file(RELATIVE_PATH r ${SRC}/src/gpm ${f})
+  if(r MATCHES "^(geometry|weights|kernel|operators|solvers|theory)/" OR r MATCHES "^io/tsv\\.(c|h)pp$"
+     OR r MATCHES "^studies/define/")
+    file(SHA256 ${f} h)
+    string(APPEND core_text "src/gpm/${r} ${h}\n")
+  elseif(r MATCHES "^io/" OR r MATCHES "^error\\.(c|h)pp$" OR r MATCHES "^studies/(run|plan|judge)/")
     continue()
+  else()
+    message(FATAL_ERROR "fingerprint.cmake: no rule says whether src/gpm/${r} can change a stored "
+                        "number (add its folder to the in or out rule)")
   endif()
+endforeach()
+# Program bodies that several programs share (src/apps/tables/) are program code: in.
+file(GLOB shared_bodies ${SRC}/src/apps/tables/*.cpp ${SRC}/src/apps/tables/*.hpp)
+list(SORT shared_bodies)
+foreach(f IN LISTS shared_bodies)
   file(SHA256 ${f} h)
   file(RELATIVE_PATH r ${SRC} ${f})
   string(APPEND core_text "${r} ${h}\n")

@@ -1,6 +1,6 @@
 # Optional MPI path (-DGPM_MPI=ON; off by default, never needed by make test/report): the
 # study runner deals a study's units over the ranks of an mpirun and gathers the rows on rank
-# 0 (src/gpm/studies/runner.hpp).  Debian: apt-get install libopenmpi-dev openmpi-bin.
+# 0 (src/gpm/studies/run/runner.hpp).  Debian: apt-get install libopenmpi-dev openmpi-bin.
 option(GPM_MPI "Distribute a study's units over MPI ranks (OpenMPI)" OFF)
 if(GPM_MPI)
   find_package(MPI REQUIRED COMPONENTS CXX)

@@ -7,7 +7,7 @@ DATAFILES += $(DATA)/store_rates.tsv $(DATA)/store_summary.tsv $(DATA)/store_sco
 
 # Reasons for differing rates, each with the diagnostic that checks it against the stored data,
 # and the same reasons one row per mechanism with the rows it covers (the chapter's short
-# table): gpm checked-reasons, the rules of src/gpm/studies/checked_reasons.hpp.
+# table): gpm checked-reasons, the rules of src/gpm/studies/judge/checked_reasons.hpp.
 DATAFILES += $(DATA)/checked_reasons_by_mechanism.tsv
 $(DATA)/checked_reasons.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published/thesis_table4_*_long.tsv)
 	@mkdir -p $(DATA)
@@ -17,7 +17,7 @@ $(DATA)/checked_reasons_by_mechanism.tsv: $(DATA)/checked_reasons.tsv ;
 
 # The two scoreboards (as printed, as identified) and the fingerprint evidence that identifies
 # Chapter 4's set-up (setup_identification.tsv; paper/04-setup-rule.md): gpm store-rates, the
-# verdicts of src/gpm/studies/verdicts.hpp.
+# verdicts of src/gpm/studies/judge/verdicts.hpp.
 $(DATA)/store_rates.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published/*.tsv) $(DATA)/checked_reasons.tsv
 	@mkdir -p $(DATA)
 	$(BUILD)/gpm store-rates --store $(STORE) --published tables/published --checked $(DATA)/checked_reasons.tsv \
@@ -26,7 +26,7 @@ $(DATA)/store_rates.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published
 $(DATA)/store_summary.tsv $(DATA)/store_score.tsv $(DATA)/setup_identification.tsv: $(DATA)/store_rates.tsv ;
 
 # The heat rates at every pair of stored levels and whether they approach the theory's (the
-# thesis' conjecture): gpm rate-levels, src/gpm/studies/rate_levels.hpp.
+# thesis' conjecture): gpm rate-levels, src/gpm/studies/judge/rate_levels.hpp.
 DATAFILES += $(DATA)/rate_levels.tsv $(DATA)/rate_levels_findings.tsv
 $(DATA)/rate_levels.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published/thesis_table4_*_long.tsv)
 	@mkdir -p $(DATA)
@@ -39,7 +39,7 @@ $(FIGOUT)/thesis_rate_levels.svg: figures/thesis_rate_levels.gp figures/style.gp
 	gnuplot -e "datadir='$(DATA)'; out='$@.tmp'" $< && mv $@.tmp $@
 
 # The documents' open set-up questions, with the evidence the stored runs give (every number
-# read from the store or computed by the library: gpm decisions, src/gpm/studies/decisions.hpp).
+# read from the store or computed by the library: gpm decisions, src/gpm/studies/judge/decisions.hpp).
 DATAFILES += $(DATA)/decisions.tsv
 $(DATA)/decisions.tsv: $(STORE_FILES) $(BUILD)/gpm tables/published/thesis_table4_7_long.tsv \
     tables/published/thesis_table4_4_long.tsv tables/published/imoto_table1.tsv $(DATA)/store_score.tsv \
@@ -62,7 +62,7 @@ $(DATA)/store_missing.tsv: tables/store_missing.sh $(STORE_FILES) $(DATA)/plan_p
 
 # Page one: a verdict per figure and table of the documents (tables/items.tsv), each with the
 # number that decides it: paper-scale rates from the store, the other checks from this run
-# (gpm verdicts, the rules of src/gpm/studies/page_verdicts.hpp).
+# (gpm verdicts, the rules of src/gpm/studies/judge/page_verdicts.hpp).
 DATAFILES += $(DATA)/verdicts.tsv
 $(DATA)/verdicts.tsv: $(BUILD)/gpm tables/items.tsv $(DATA)/store_score.tsv \
     $(DATA)/koba_sato_cor71.tsv $(DATA)/koba_sato_bounds.tsv $(DATA)/imoto_regularity_cover.tsv \

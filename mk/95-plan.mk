@@ -1,5 +1,5 @@
 # Cost model (issue 7, item 4): the plan of a profile — predicted pair interactions, time and
-# peak memory of every modelled study and level (src/gpm/studies/study_plan.hpp) — printed before
+# peak memory of every modelled study and level (src/gpm/studies/plan/study_plan.hpp) — printed before
 # anything runs, and, once the studies have run, the plan beside their measured times.
 #
 #   make plan PROFILE=paper   calibrate (a few seconds), print and write data/paper/plan*.tsv;

@@ -563,7 +563,7 @@ local function gather_provenance(doc)
       if part == "paper" then
         inl = {pandoc.Str(string.format("Data of this chapter: %d file%s, each listed with how it was made " ..
           "(program, command, profile, seed, git revision, date, wall time) and the command that regenerates " ..
-          "each table and figure in the supplement's Appendix E, under this chapter's title.",
+          "each table and figure in the supplement's last appendix, under this chapter's title.",
           #files, #files == 1 and "" or "s"))}
       else
         inl = {pandoc.Str("Data of this chapter: ")}

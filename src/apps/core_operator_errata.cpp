@@ -31,7 +31,7 @@
 #include "gpm/kernel/kernel.hpp"
 #include "gpm/operators/operators.hpp"
 #include "gpm/operators/testfunctions.hpp"
-#include "gpm/studies/profile.hpp"
+#include "gpm/studies/define/profile.hpp"
 #include "gpm/weights/weights.hpp"
 
 using namespace gpm;

@@ -22,10 +22,10 @@
 #include "gpm/geometry/domain.hpp"
 #include "gpm/geometry/voronoi.hpp"
 #include "gpm/io/tsv.hpp"
-#include "gpm/studies/catalog.hpp"
-#include "gpm/studies/profile.hpp"
-#include "gpm/studies/registry.hpp"
-#include "gpm/studies/runner.hpp"
+#include "gpm/studies/define/catalog.hpp"
+#include "gpm/studies/define/profile.hpp"
+#include "gpm/studies/define/registry.hpp"
+#include "gpm/studies/run/runner.hpp"
 
 using namespace gpm;
 

@@ -11,7 +11,7 @@
 #include "gpm/error.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
-#include "gpm/studies/profile.hpp"
+#include "gpm/studies/define/profile.hpp"
 #include "gpm/weights/weights.hpp"
 
 namespace {

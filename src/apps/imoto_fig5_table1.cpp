@@ -31,10 +31,10 @@
 #include "gpm/operators/norms.hpp"
 #include "gpm/operators/testfunctions.hpp"
 #include "gpm/operators/truncation.hpp"
-#include "gpm/studies/catalog.hpp"
-#include "gpm/studies/cost_model.hpp"
-#include "gpm/studies/registry.hpp"
-#include "gpm/studies/runner.hpp"
+#include "gpm/studies/define/catalog.hpp"
+#include "gpm/studies/define/cost_model.hpp"
+#include "gpm/studies/define/registry.hpp"
+#include "gpm/studies/run/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
 using namespace gpm;

@@ -37,8 +37,8 @@
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/operators/truncation.hpp"
-#include "gpm/studies/profile.hpp"
-#include "gpm/studies/runner.hpp"
+#include "gpm/studies/define/profile.hpp"
+#include "gpm/studies/run/runner.hpp"
 
 using namespace gpm;
 

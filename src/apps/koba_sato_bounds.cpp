@@ -27,8 +27,8 @@
 #include "gpm/geometry/voronoi.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
-#include "gpm/studies/profile.hpp"
-#include "gpm/studies/runner.hpp"
+#include "gpm/studies/define/profile.hpp"
+#include "gpm/studies/run/runner.hpp"
 #include "gpm/theory/koba_sato.hpp"
 #include "gpm/theory/koba_sato_cor71.hpp"
 

@@ -15,7 +15,7 @@
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/io/progress.hpp"
-#include "gpm/studies/profile.hpp"
+#include "gpm/studies/define/profile.hpp"
 #include "gpm/theory/koba_sato_cor71.hpp"
 
 using namespace gpm;

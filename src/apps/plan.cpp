@@ -21,8 +21,8 @@
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/io/progress.hpp"
-#include "gpm/studies/profile.hpp"
-#include "gpm/studies/study_plan.hpp"
+#include "gpm/studies/define/profile.hpp"
+#include "gpm/studies/plan/study_plan.hpp"
 
 using namespace gpm;
 
@@ -60,7 +60,7 @@ struct Agg {
 int body(int argc, char** argv) {
   Args a("plan",
          "Predicted pair interactions, time and peak memory of every modelled study and level\n"
-         "of a profile, printed before anything runs (see src/gpm/studies/study_plan.hpp).");
+         "of a profile, printed before anything runs (see src/gpm/studies/plan/study_plan.hpp).");
   a.opt("profile", "quick", "quick or paper")
       .output("out", "", "TSV: one row per unit of work (required)")
       .output("summary", "", "TSV: per (study, level), per study and total (optional)")

@@ -19,7 +19,7 @@
 #include "gpm/error.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
-#include "gpm/studies/study_plan.hpp"
+#include "gpm/studies/plan/study_plan.hpp"
 
 using namespace gpm;
 

@@ -4,7 +4,7 @@
 // documents' two-finest-level rate log(e₁/e₂)/log(h₁/h₂) and a least-squares slope over
 // all levels, joins them with the published values (tables/published/*.tsv, long format,
 // matched on the key columns), and marks each row other-levels, agrees, differs, undefined
-// or not-computed (the join and its statuses: src/gpm/studies/rates.hpp).
+// or not-computed (the join and its statuses: src/gpm/studies/judge/rates.hpp).
 // Two data rows with the same key and level are refused (one would silently replace the other).
 // The output is a data file like any other: the report shows it, `make test-paper` checks it.
 #include <cstdio>
@@ -14,7 +14,7 @@
 #include "gpm/error.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
-#include "gpm/studies/rates.hpp"
+#include "gpm/studies/judge/rates.hpp"
 
 using namespace gpm;
 

@@ -1,7 +1,7 @@
 // setup_identification — the rule of paper/04-setup-rule.md applied to the result store: which
 // reading of the thesis' Chapter 4 set-up (h rule, volumes, time-step rule) the documents' own
 // fingerprint (Table 4.6's θ = 0 rates) identifies.  The rule and its fingerprint:
-// src/gpm/studies/setup_identification.hpp.
+// src/gpm/studies/judge/setup_identification.hpp.
 //
 //   setup_identification --store results/paper --published tables/published/thesis_table4_6_long.tsv
 //     --out data/paper/setup_identification.tsv
@@ -11,7 +11,7 @@
 #include "gpm/error.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
-#include "gpm/studies/setup_identification.hpp"
+#include "gpm/studies/judge/setup_identification.hpp"
 
 using namespace gpm;
 

@@ -9,7 +9,7 @@
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/io/progress.hpp"
-#include "gpm/studies/profile.hpp"
+#include "gpm/studies/define/profile.hpp"
 
 using namespace gpm;
 

@@ -37,19 +37,19 @@
 #include "gpm/solvers/heat_krylov.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
-#include "gpm/studies/catalog.hpp"
-#include "gpm/studies/heat_tables.hpp"
-#include "gpm/studies/cost_model.hpp"
-#include "gpm/studies/profile.hpp"
-#include "gpm/studies/registry.hpp"
-#include "gpm/studies/runner.hpp"
+#include "gpm/studies/define/catalog.hpp"
+#include "gpm/studies/define/heat_tables.hpp"
+#include "gpm/studies/define/cost_model.hpp"
+#include "gpm/studies/define/profile.hpp"
+#include "gpm/studies/define/registry.hpp"
+#include "gpm/studies/run/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
 using namespace gpm;
 
 namespace {
 
-// --- Parameters: the tables, weights, κ and T are the catalog's (gpm/studies/heat_tables.hpp). ---
+// --- Parameters: the tables, weights, κ and T are the catalog's (gpm/studies/define/heat_tables.hpp). ---
 
 // The rows of series (weight, θ) that never blew up: the input of rate_table.
 void write_rates_input(LevelCache& cache, const std::string& path) {

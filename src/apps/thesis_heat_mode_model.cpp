@@ -2,7 +2,7 @@
 // of, predicted without solving anything, and set beside a data file's measured errors.
 //
 // The model itself (the one Fourier mode, the θ-step's amplification at the discrete decay
-// rate μ(1 + δ)(1 − ε)) is src/gpm/studies/heat_mode_model.hpp, shared with the checked
+// rate μ(1 + δ)(1 − ε)) is src/gpm/studies/judge/heat_mode_model.hpp, shared with the checked
 // reasons of gpm checked-reasons; this program writes its rows and rates to files.
 //
 //   thesis_heat_mode_model --table 4.6 --data results/paper/thesis_table4_6.tsv
@@ -15,8 +15,8 @@
 #include "gpm/error.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
-#include "gpm/studies/heat_mode_model.hpp"
-#include "gpm/studies/heat_tables.hpp"
+#include "gpm/studies/judge/heat_mode_model.hpp"
+#include "gpm/studies/define/heat_tables.hpp"
 
 using namespace gpm;
 

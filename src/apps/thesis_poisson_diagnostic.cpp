@@ -32,9 +32,9 @@
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/solvers/poisson_probes.hpp"
-#include "gpm/studies/catalog.hpp"
-#include "gpm/studies/profile.hpp"
-#include "gpm/studies/runner.hpp"
+#include "gpm/studies/define/catalog.hpp"
+#include "gpm/studies/define/profile.hpp"
+#include "gpm/studies/run/runner.hpp"
 #include "gpm/theory/smoothing.hpp"
 #include "gpm/weights/weights.hpp"
 

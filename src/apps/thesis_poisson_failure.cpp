@@ -57,8 +57,8 @@
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/solvers/poisson_probes.hpp"
-#include "gpm/studies/profile.hpp"
-#include "gpm/studies/runner.hpp"
+#include "gpm/studies/define/profile.hpp"
+#include "gpm/studies/run/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
 using namespace gpm;

@@ -32,10 +32,10 @@
 #include "gpm/solvers/heat.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/stability.hpp"
-#include "gpm/studies/catalog.hpp"
-#include "gpm/studies/profile.hpp"
-#include "gpm/studies/cost_model.hpp"
-#include "gpm/studies/runner.hpp"
+#include "gpm/studies/define/catalog.hpp"
+#include "gpm/studies/define/profile.hpp"
+#include "gpm/studies/define/cost_model.hpp"
+#include "gpm/studies/run/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
 using namespace gpm;

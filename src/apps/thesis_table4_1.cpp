@@ -10,10 +10,10 @@
 // For p = 3 both readings of h (printed, scaled) are the same formula, so only the printed one
 // runs.  Beyond the thesis: the same passes with V_i = |Ω_H|/N.
 #include "gpm/io/args.hpp"
-#include "gpm/studies/thesis_truncation.hpp"
+#include "apps/tables/thesis_truncation.hpp"
 
 // The table's weights, readings of h and levels are defined once, in thesis_table_specs()
-// (src/gpm/studies/thesis_truncation.cpp), which `make plan` and the tests read too.
+// (src/gpm/studies/run/thesis_truncation.cpp), which `make plan` and the tests read too.
 int main(int argc, char** argv) {
   return gpm::run_main("thesis_table4_1", [](int c, char** v) {
     return gpm::run_thesis_table(gpm::thesis_table_spec("thesis_table4_1"), c, v);

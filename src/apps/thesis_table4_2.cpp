@@ -7,10 +7,10 @@
 // which keeps h(2^-5) = 3.1·2^-5 as in Table 4.1.  The paper profile is heavy: the printed
 // reading at Δx = 2^-12 has about 8·10^12 neighbour pairs (see the cost file).
 #include "gpm/io/args.hpp"
-#include "gpm/studies/thesis_truncation.hpp"
+#include "apps/tables/thesis_truncation.hpp"
 
 // The table's weights, readings of h and levels are defined once, in thesis_table_specs()
-// (src/gpm/studies/thesis_truncation.cpp), which `make plan` and the tests read too.
+// (src/gpm/studies/run/thesis_truncation.cpp), which `make plan` and the tests read too.
 int main(int argc, char** argv) {
   return gpm::run_main("thesis_table4_2", [](int c, char** v) {
     return gpm::run_thesis_table(gpm::thesis_table_spec("thesis_table4_2"), c, v);

@@ -6,10 +6,10 @@
 //
 // Two readings of h: printed (h > H at Δx ≥ 2^-9) and scaled, h = 3.1 · 2^(5/4−5) Δx^(1/4).
 #include "gpm/io/args.hpp"
-#include "gpm/studies/thesis_truncation.hpp"
+#include "apps/tables/thesis_truncation.hpp"
 
 // The table's weights, readings of h and levels are defined once, in thesis_table_specs()
-// (src/gpm/studies/thesis_truncation.cpp), which `make plan` and the tests read too.
+// (src/gpm/studies/run/thesis_truncation.cpp), which `make plan` and the tests read too.
 int main(int argc, char** argv) {
   return gpm::run_main("thesis_table4_3", [](int c, char** v) {
     return gpm::run_thesis_table(gpm::thesis_table_spec("thesis_table4_3"), c, v);

@@ -26,11 +26,11 @@
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/solvers/poisson_probes.hpp"
-#include "gpm/studies/catalog.hpp"
-#include "gpm/studies/cost_model.hpp"
-#include "gpm/studies/profile.hpp"
-#include "gpm/studies/registry.hpp"
-#include "gpm/studies/runner.hpp"
+#include "gpm/studies/define/catalog.hpp"
+#include "gpm/studies/define/cost_model.hpp"
+#include "gpm/studies/define/profile.hpp"
+#include "gpm/studies/define/registry.hpp"
+#include "gpm/studies/run/runner.hpp"
 #include "gpm/weights/weights.hpp"
 
 using namespace gpm;

@@ -21,8 +21,8 @@
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/solvers/poisson_probes.hpp"
-#include "gpm/studies/heat_tables.hpp"
-#include "gpm/studies/profile.hpp"
+#include "gpm/studies/define/heat_tables.hpp"
+#include "gpm/studies/define/profile.hpp"
 #include "gpm/theory/smoothing.hpp"
 #include "gpm/weights/weights.hpp"
 

@@ -12,15 +12,15 @@
 #include "cli/commands.hpp"
 #include "gpm/error.hpp"
 #include "gpm/io/provenance.hpp"
-#include "gpm/studies/checked_reasons.hpp"
-#include "gpm/studies/decisions.hpp"
-#include "gpm/studies/page_verdicts.hpp"
-#include "gpm/studies/rate_levels.hpp"
-#include "gpm/studies/rates.hpp"
-#include "gpm/studies/registry.hpp"
-#include "gpm/studies/setup_identification.hpp"
-#include "gpm/studies/store.hpp"
-#include "gpm/studies/verdicts.hpp"
+#include "gpm/studies/judge/checked_reasons.hpp"
+#include "gpm/studies/judge/decisions.hpp"
+#include "gpm/studies/judge/page_verdicts.hpp"
+#include "gpm/studies/judge/rate_levels.hpp"
+#include "gpm/studies/judge/rates.hpp"
+#include "gpm/studies/define/registry.hpp"
+#include "gpm/studies/judge/setup_identification.hpp"
+#include "gpm/studies/run/store.hpp"
+#include "gpm/studies/judge/verdicts.hpp"
 
 namespace gpm::cli {
 
@@ -217,7 +217,7 @@ int cmd_rate_levels(int argc, char** argv) {
   Args a("gpm rate-levels",
          "The heat tables' two-level rates at every consecutive pair of stored levels (printed and\n"
          "identified reading), with seed bands, beside the published and the theory's rates; and\n"
-         "per series whether the rates approach the theory's (src/gpm/studies/rate_levels.hpp).");
+         "per series whether the rates approach the theory's (src/gpm/studies/judge/rate_levels.hpp).");
   a.opt("store", "results/paper", "the result store")
       .opt("published", "tables/published", "the published values (thesis_table4_N_long.tsv)")
       .output("out", "", "the rates per pair of levels (required)")
@@ -251,7 +251,7 @@ int cmd_rate_levels(int argc, char** argv) {
 int cmd_store_rates(int argc, char** argv) {
   Args a("gpm store-rates",
          "The documents' rates from the committed result store, with their verdicts and the two\n"
-         "scoreboards (src/gpm/studies/verdicts.hpp defines every verdict); no study is run.");
+         "scoreboards (src/gpm/studies/judge/verdicts.hpp defines every verdict); no study is run.");
   a.opt("store", "results/paper", "the result store")
       .opt("published", "tables/published", "the published values (imoto_table1.tsv, thesis_table4_N_long.tsv)")
       .opt("checked", "", "checked reasons for differing rates (gpm checked-reasons --out); default: none")
@@ -283,7 +283,7 @@ int cmd_store_rates(int argc, char** argv) {
                         {"checked_reasons", a.str("checked").empty() ? "none (no reason accepted)" : a.str("checked")},
                         {"note", "rates at the documents' levels from the committed paper-profile rows; status from "
                                  "rate_table (tolerance " + fmt(kRateTolerance) + "); verdict as listed in "
-                                 "src/gpm/studies/verdicts.hpp"}}));
+                                 "src/gpm/studies/judge/verdicts.hpp"}}));
   if (!a.str("summary").empty())
     outputs.emplace_back(
         a.str("summary"),
@@ -313,7 +313,7 @@ int cmd_checked_reasons(int argc, char** argv) {
   Args a("gpm checked-reasons",
          "Reasons for paper-scale rates that differ from the published ones, each with the\n"
          "diagnostic that checks it against the committed result store (pass or fail, and whether\n"
-         "a run restores the published rate); src/gpm/studies/checked_reasons.hpp states each rule.");
+         "a run restores the published rate); src/gpm/studies/judge/checked_reasons.hpp states each rule.");
   a.opt("store", "results/paper", "the result store")
       .opt("published", "tables/published", "the published values (thesis_table4_N_long.tsv)")
       .output("out", "", "one row per checked rate: table, slice, key, reason, evidence, check, restores (required)")
@@ -324,7 +324,7 @@ int cmd_checked_reasons(int argc, char** argv) {
   TsvTable checked = checked_reasons(store, pub, kRateTolerance);
   // The header: what the report prints under the table.
   const std::pair<std::string, std::string> note = {
-      "note", "rules and thresholds in src/gpm/studies/checked_reasons.hpp; published values from " + pub};
+      "note", "rules and thresholds in src/gpm/studies/judge/checked_reasons.hpp; published values from " + pub};
   std::vector<std::pair<std::string, TsvTable>> outputs;
   outputs.emplace_back(out, headed(checked, verdicts_header("gpm checked-reasons", store, false,
                                                             {{"store", store}, {"tolerance", fmt(kRateTolerance) + " (rates)"}, note})));
@@ -343,7 +343,7 @@ int cmd_verdicts(int argc, char** argv) {
   Args a("gpm verdicts",
          "Page one of the report: one verdict per figure and table of the documents (the items\n"
          "file), each with the number that decides it, from the store's score and this run's data\n"
-         "files; src/gpm/studies/page_verdicts.hpp states each rule and how rows are merged.");
+         "files; src/gpm/studies/judge/page_verdicts.hpp states each rule and how rows are merged.");
   a.opt("items", "tables/items.tsv", "the documents' items and the rule of each (document, item, shows, rule, section)")
       .opt("score", "", "the store's verdict counts (gpm store-rates --score; required)")
       .opt("data", "", "the folder of this run's data files (koba_sato_cor71.tsv, core_voronoi.tsv, ...; required)")
@@ -366,7 +366,7 @@ int cmd_verdicts(int argc, char** argv) {
 int cmd_decisions(int argc, char** argv) {
   Args a("gpm decisions",
          "The documents' open set-up questions (time step, volumes, smoothing, Omega_H, ...), each\n"
-         "with the evidence the committed result store gives; src/gpm/studies/decisions.hpp lists them.");
+         "with the evidence the committed result store gives; src/gpm/studies/judge/decisions.hpp lists them.");
   a.opt("store", "results/paper", "the result store")
       .opt("published", "tables/published", "the published values (thesis_table4_N_long.tsv, imoto_table1.tsv)")
       .opt("diagnostics", "results/diagnostics", "targeted diagnostic runs that are not studies (imoto_m5_where.tsv)")

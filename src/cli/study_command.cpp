@@ -8,12 +8,13 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/make_rules.hpp"
 #include "gpm/error.hpp"
 #include "gpm/geometry/influence_radius.hpp"
 #include "gpm/geometry/volumes.hpp"
 #include "gpm/io/provenance.hpp"
-#include "gpm/studies/heat_tables.hpp"
-#include "gpm/studies/registry.hpp"
+#include "gpm/studies/define/heat_tables.hpp"
+#include "gpm/studies/define/registry.hpp"
 
 namespace gpm::cli {
 

@@ -26,7 +26,7 @@
 #include "gpm/solvers/heat.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
-#include "gpm/studies/heat_tables.hpp"
+#include "gpm/studies/define/heat_tables.hpp"
 #include "gpm/weights/weights.hpp"
 
 using namespace gpm;

@@ -20,7 +20,7 @@
 #include "gpm/geometry/voronoi.hpp"
 #include "gpm/operators/fused_errors.hpp"
 #include "gpm/operators/norms.hpp"
-#include "gpm/studies/thesis_truncation.hpp"
+#include "gpm/studies/define/thesis_tables.hpp"
 
 using namespace gpm;
 

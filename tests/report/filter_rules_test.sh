@@ -46,7 +46,10 @@ for want in "Table S1 (supplement, 30 rows): A long table of Uk." "A short table
             "Section S1 (supplement): A side section" "Main text."; do
   case $paper in *"$want"*) ;; *) echo "FAIL: the paper lacks '$want'"; fail=1 ;; esac
 done
-for unwanted in "Appendix A" "Appendix E" "Side text."; do
+# The paper counts a chapter's data files and points to the supplement, which lists them.
+case $paper in *"Data of this chapter: "[0-9]*" file"*"supplement's last appendix"*) ;;
+  *) echo "FAIL: the paper does not count its chapter's data files and point to the supplement"; fail=1 ;; esac
+for unwanted in "Appendix A" "Appendix E" "Side text." "Data of this chapter: data/"; do
   case $paper in *"$unwanted"*) echo "FAIL: the paper holds '$unwanted'"; fail=1 ;; esac
 done
 for want in "Table S1. A long table of Uk." "Appendix A. Details" "Appendix E. Provenance" \

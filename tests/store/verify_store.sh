@@ -86,7 +86,7 @@ check() {
   if [ "$rc" -eq 0 ]; then checked=$((checked + 1)); else failed=$((failed + 1)); echo "   FAILED ($step, exit $rc)"; fi
 }
 
-# The store's files, from the study registry (src/gpm/studies/registry.cpp, each study's
+# The store's files, from the study registry (src/gpm/studies/define/registry.cpp, each study's
 # store_files): program and arguments, the units each must hold (census; empty: the profile's
 # paper levels) and the cheap units recomputed.
 listing=$("$build/gpm" study --store-files) || { echo "verify_store.sh: gpm study --store-files failed" >&2; exit 2; }

@@ -6,10 +6,10 @@
 #include <catch2/catch.hpp>
 
 #include "gpm/error.hpp"
-#include "gpm/studies/catalog.hpp"
-#include "gpm/studies/heat_tables.hpp"
-#include "gpm/studies/registry.hpp"
-#include "gpm/studies/thesis_truncation.hpp"
+#include "gpm/studies/define/catalog.hpp"
+#include "gpm/studies/define/heat_tables.hpp"
+#include "gpm/studies/define/registry.hpp"
+#include "gpm/studies/define/thesis_tables.hpp"
 
 using namespace gpm;
 

@@ -1,4 +1,4 @@
-// The checked reasons for differing rates (src/gpm/studies/checked_reasons.hpp) on small tables
+// The checked reasons for differing rates (src/gpm/studies/judge/checked_reasons.hpp) on small tables
 // in memory: each mechanism's pass/fail rule and its `restores` (Table 4.4's volume mismatch,
 // Table 4.3's gradient smoothing error, Table 4.2's interpolant smoothing part, the heat tables'
 // one-mode model), the heat tables' choice of the V_i = dx^2 run with the same time-step rule,
@@ -16,8 +16,8 @@
 #include "gpm/error.hpp"
 #include "gpm/operators/norms.hpp"
 #include "gpm/operators/testfunctions.hpp"
-#include "gpm/studies/checked_reasons.hpp"
-#include "gpm/studies/rates.hpp"
+#include "gpm/studies/judge/checked_reasons.hpp"
+#include "gpm/studies/judge/rates.hpp"
 #include "gpm/theory/smoothing.hpp"
 #include "gpm/weights/weights.hpp"
 

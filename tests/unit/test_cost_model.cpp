@@ -12,8 +12,8 @@
 #include "gpm/geometry/volumes.hpp"
 #include "gpm/kernel/kernel.hpp"
 #include "gpm/operators/truncation.hpp"
-#include "gpm/studies/cost_model.hpp"
-#include "gpm/studies/thesis_truncation.hpp"
+#include "gpm/studies/define/cost_model.hpp"
+#include "gpm/studies/define/thesis_tables.hpp"
 #include "gpm/weights/weights.hpp"
 
 using namespace gpm;

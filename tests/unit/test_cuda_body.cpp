@@ -25,8 +25,8 @@
 #include "gpm/kernel/kernel.hpp"
 #include "gpm/operators/fused_errors.hpp"
 #include "gpm/operators/testfunctions.hpp"
-#include "gpm/studies/catalog.hpp"
-#include "gpm/studies/thesis_truncation.hpp"
+#include "gpm/studies/define/catalog.hpp"
+#include "gpm/studies/define/thesis_tables.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/weights/weights.hpp"
 

@@ -17,8 +17,8 @@
 #include "gpm/operators/fused_errors.hpp"
 #include "gpm/solvers/heat.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
-#include "gpm/studies/catalog.hpp"
-#include "gpm/studies/thesis_truncation.hpp"
+#include "gpm/studies/define/catalog.hpp"
+#include "gpm/studies/define/thesis_tables.hpp"
 
 using namespace gpm;
 

@@ -1,4 +1,4 @@
-// Page one's verdict table (src/gpm/studies/page_verdicts.hpp) on small tables in memory: a
+// Page one's verdict table (src/gpm/studies/judge/page_verdicts.hpp) on small tables in memory: a
 // figure drawn from a table joins that table's row whether it is listed before or after it,
 // neighbouring illustrations of one document share a row (not across documents, not across
 // another row), a rate table's evidence names only the verdicts that occur on each board, the
@@ -9,7 +9,7 @@
 
 #include "gpm/error.hpp"
 #include "gpm/io/tsv.hpp"
-#include "gpm/studies/page_verdicts.hpp"
+#include "gpm/studies/judge/page_verdicts.hpp"
 
 using namespace gpm;
 

@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "gpm/studies/rate_levels.hpp"
+#include "gpm/studies/judge/rate_levels.hpp"
 
 using namespace gpm;
 

@@ -1,4 +1,4 @@
-// The study registry (src/gpm/studies/registry.hpp): every study the catalog runs is priced
+// The study registry (src/gpm/studies/define/registry.hpp): every study the catalog runs is priced
 // by one registry entry, the plan's studies are the entries' data files, and a data file is
 // read back by the entry that writes it.
 #include <catch2/catch.hpp>
@@ -8,10 +8,11 @@
 
 #include "gpm/error.hpp"
 #include "gpm/io/args.hpp"
-#include "gpm/studies/catalog.hpp"
-#include "gpm/studies/heat_tables.hpp"
-#include "gpm/studies/registry.hpp"
-#include "gpm/studies/thesis_truncation.hpp"
+#include "gpm/studies/define/catalog.hpp"
+#include "gpm/studies/define/heat_tables.hpp"
+#include "gpm/studies/define/registry.hpp"
+#include "gpm/studies/plan/study_plan.hpp"
+#include "gpm/studies/define/thesis_tables.hpp"
 
 using namespace gpm;
 

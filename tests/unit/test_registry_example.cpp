@@ -14,12 +14,14 @@
 
 #include "gpm/geometry/domain.hpp"
 #include "gpm/geometry/volumes.hpp"
+#include "cli/make_rules.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/operators/fused_errors.hpp"
-#include "gpm/studies/rates.hpp"
-#include "gpm/studies/registry.hpp"
-#include "gpm/studies/runner.hpp"
-#include "gpm/studies/verdicts.hpp"
+#include "gpm/studies/judge/rates.hpp"
+#include "gpm/studies/define/registry.hpp"
+#include "gpm/studies/plan/study_plan.hpp"
+#include "gpm/studies/run/runner.hpp"
+#include "gpm/studies/judge/verdicts.hpp"
 
 using namespace gpm;
 namespace fs = std::filesystem;

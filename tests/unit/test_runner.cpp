@@ -1,4 +1,4 @@
-// The study runner (src/gpm/studies/runner.hpp): the common options, the levels of a run, a
+// The study runner (src/gpm/studies/run/runner.hpp): the common options, the levels of a run, a
 // study of two units written, reused by a second run and checked by --verify, several data
 // files from one run, and a pass split into saved parts (--parts).
 #include <catch2/catch.hpp>
@@ -13,7 +13,7 @@
 #include "gpm/geometry/domain.hpp"
 #include "gpm/operators/fused_errors.hpp"
 #include "gpm/io/tsv.hpp"
-#include "gpm/studies/runner.hpp"
+#include "gpm/studies/run/runner.hpp"
 #include "../temp_dir.hpp"
 
 using namespace gpm;

@@ -1,4 +1,4 @@
-// The result store's rules (src/gpm/studies/store.hpp), on small files written here: a unit is
+// The result store's rules (src/gpm/studies/run/store.hpp), on small files written here: a unit is
 // reused only when complete and computed by the current code; partial units are recomputed;
 // malformed, unsealed, tampered or duplicate rows and a file of other parameters are refused
 // (the file untouched) unless --replace; a second writer is refused; --verify catches a
@@ -16,7 +16,8 @@
 #include "gpm/error.hpp"
 #include "gpm/io/provenance.hpp"
 #include "gpm/io/tsv.hpp"
-#include "gpm/studies/store.hpp"
+#include "gpm/studies/define/registry.hpp"
+#include "gpm/studies/run/store.hpp"
 #include "../temp_dir.hpp"
 
 using namespace gpm;

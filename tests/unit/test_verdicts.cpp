@@ -1,4 +1,4 @@
-// The verdicts of the store's rates (src/gpm/studies/verdicts.hpp) on small tables in memory:
+// The verdicts of the store's rates (src/gpm/studies/judge/verdicts.hpp) on small tables in memory:
 // the seed band deciding only with 5 narrow realizations, a heat series unstable at both rate
 // levels (non-convergence reproduced where the document prints an unstable run, undefined
 // where no finite rate is left), checked reasons, and the two boards with a fingerprint row.
@@ -7,8 +7,8 @@
 #include <numeric>
 
 #include "gpm/io/tsv.hpp"
-#include "gpm/studies/rates.hpp"
-#include "gpm/studies/verdicts.hpp"
+#include "gpm/studies/judge/rates.hpp"
+#include "gpm/studies/judge/verdicts.hpp"
 
 using namespace gpm;
 

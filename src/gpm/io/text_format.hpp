@@ -1,6 +1,6 @@
 // printf into a std::string of any length: evidence text that prints its numbers as the report
 // shows them (%.2f for a rate, %.3e for an error).  Text only, no number of a data row depends
-// on it (cmake/fingerprint.cmake lists it as io_only).
+// on it (io/ outside tsv is outside the code fingerprint: cmake/fingerprint.cmake).
 #pragma once
 #include <string>
 

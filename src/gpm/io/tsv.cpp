@@ -456,4 +456,19 @@ std::string join(const std::vector<std::string>& v, const std::string& sep) {
   return s;
 }
 
+TsvTable rows_where(const TsvTable& data, const std::vector<std::pair<std::string, std::string>>& where) {
+  std::vector<int> cols;
+  for (auto& [column, value] : where) cols.push_back(data.require_column(column));
+  TsvTable slice = data;
+  slice.rows.clear(), slice.row_lines.clear();
+  for (std::size_t i = 0; i < data.rows.size(); ++i) {
+    bool keep = true;
+    for (std::size_t w = 0; w < where.size(); ++w) keep = keep && data.rows[i][cols[w]] == where[w].second;
+    if (!keep) continue;
+    slice.rows.push_back(data.rows[i]);
+    if (i < data.row_lines.size()) slice.row_lines.push_back(data.row_lines[i]);
+  }
+  return slice;
+}
+
 }  // namespace gpm

@@ -120,4 +120,9 @@ inline std::string fmt(unsigned long long v) { return fmt(static_cast<long long>
 // Provenance every data file carries: git revision, build, host, date, threads.
 void add_provenance(TsvTable& t);
 
+// The rows of `data` whose cells equal every (column, value) of `where`: one slice of a study
+// file (a reading of h and volume choice) before it is joined; InputError for an unknown
+// column.
+TsvTable rows_where(const TsvTable& data, const std::vector<std::pair<std::string, std::string>>& where);
+
 }  // namespace gpm

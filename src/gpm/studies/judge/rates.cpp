@@ -1,0 +1,124 @@
+#include "gpm/studies/judge/rates.hpp"
+
+#include <cmath>
+#include <iterator>
+#include <sstream>
+
+#include "gpm/error.hpp"
+#include "gpm/io/args.hpp"
+#include "gpm/operators/norms.hpp"
+
+namespace gpm {
+
+namespace {
+
+// The key of row i: its cells in the key columns, joined by '|'.
+std::string key_of(const TsvTable& t, std::size_t i, const std::vector<int>& cols) {
+  std::string s;
+  for (std::size_t k = 0; k < cols.size(); ++k) s += (k ? "|" : "") + t.text(i, cols[k]);
+  return s;
+}
+
+// The two fixed levels of every rate, or none (the two finest of each series).
+std::vector<int> fixed_levels(const RateJoin& join, const TsvTable& pub, TsvTable& out) {
+  std::vector<int> fixed;
+  if (join.levels.empty()) return fixed;
+  std::string lv = join.levels;
+  if (lv == "published") {
+    const auto v = pub.get("rate_levels");
+    if (!v) throw InputError("--levels published: " + pub.source + " has no rate_levels");
+    lv = *v;
+  }
+  std::stringstream ss(lv);
+  for (std::string item; std::getline(ss, item, ',');)
+    fixed.push_back(static_cast<int>(parse_integer(item, "--levels", 0, 63)));
+  if (fixed.size() != 2 || !(fixed[0] < fixed[1]))
+    throw InputError("--levels: '" + lv + "' is not two increasing levels");
+  out.set("rate_levels", lv);
+  return fixed;
+}
+
+}  // namespace
+
+std::map<std::string, int> join_rates(const TsvTable& data, const TsvTable& pub,
+                                      const RateJoin& join, TsvTable& out) {
+  std::vector<int> dk, pk;
+  for (auto& k : join.keys) dk.push_back(data.require_column(k));
+  for (auto& k : join.keys) pk.push_back(pub.require_column(k));
+  const int cl = data.require_column(join.level);
+  const int cx = data.require_column(join.x);
+  const int cy = data.require_column(join.y);
+  const int cv = pub.require_column(join.value);
+  const int ct = pub.column("theoretical");
+
+  // The document's two levels, where the published file names them.
+  const std::string doc_levels = pub.get("rate_levels").value_or("");
+
+  // Per key: (level, x, y) sorted by level; where each came from, for a duplicate's message.
+  struct Point {
+    double x, y;
+    std::size_t row;
+  };
+  std::map<std::string, std::map<int, Point>> series;
+  for (std::size_t i = 0; i < data.rows.size(); ++i) {
+    const std::string key = key_of(data, i, dk);
+    const long long level = data.integer(i, cl);
+    const auto [it, fresh] = series[key].emplace(
+        static_cast<int>(level), Point{data.number(i, cx), data.number(i, cy), i});
+    if (!fresh)
+      throw InputError(data.source + ": key '" + key + "' has two rows at level " +
+                       std::to_string(level) + " (data rows " + std::to_string(it->second.row + 1) +
+                       " and " + std::to_string(i + 1) + ")");
+  }
+
+  out.columns.insert(out.columns.end(), join.keys.begin(), join.keys.end());
+  for (const char* c : {"published", "theoretical", "reproduced", "difference", "lsq_slope",
+                        "levels", "status", "reason"})
+    out.columns.push_back(c);
+  const std::vector<int> fixed = fixed_levels(join, pub, out);
+  std::map<std::string, int> counts;
+  for (std::size_t i = 0; i < pub.rows.size(); ++i) {
+    const std::string key = key_of(pub, i, pk);
+    const double published = pub.number(i, cv);
+    std::string rep = "NA", diff = "NA", lsq = "NA", levels = "", status = "not-computed", why = "";
+    auto it = series.find(key);
+    const bool have = it != series.end() &&
+                      (fixed.empty() ? it->second.size() >= 2
+                                     : it->second.count(fixed[0]) && it->second.count(fixed[1]));
+    if (have) {
+      auto last = fixed.empty() ? std::prev(it->second.end()) : it->second.find(fixed[1]);
+      auto prev = fixed.empty() ? std::prev(last) : it->second.find(fixed[0]);
+      const double rate = two_level_rate(prev->second.x, prev->second.y, last->second.x,
+                                         last->second.y);
+      std::vector<double> xs, ys;
+      for (auto& [lv, pt] : it->second) xs.push_back(pt.x), ys.push_back(pt.y);
+      rep = fmt(rate);
+      lsq = fmt(least_squares_rate(xs, ys));
+      levels = std::to_string(prev->first) + "," + std::to_string(last->first);
+      // NaN fails every comparison: tested first, or it would fall through to a reason.
+      if (!std::isfinite(rate) || !std::isfinite(published)) {
+        status = "undefined";
+      } else {
+        diff = fmt(rate - published);
+        if (!doc_levels.empty() && levels != doc_levels) {
+          status = "other-levels";
+          why = "rate from levels " + levels + "; the document's are " + doc_levels;
+        } else {
+          status = std::fabs(rate - published) <= join.tolerance ? "agrees" : "differs";
+        }
+      }
+    }
+    ++counts[status];
+    std::vector<std::string> row;
+    for (int c : pk) row.push_back(pub.text(i, c));
+    for (auto& s : {fmt(published), ct >= 0 ? pub.text(i, ct) : std::string("NA"), rep, diff, lsq,
+                    levels, status, why})
+      row.push_back(s);
+    out.add_row(row);
+  }
+  for (auto& [s, n] : counts) out.set("count_" + s, fmt(n));
+  return counts;
+}
+
+
+}  // namespace gpm

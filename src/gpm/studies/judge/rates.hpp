@@ -1,0 +1,52 @@
+// The documents' two-level rates joined with the published ones: the table behind every rate
+// table of the package.  rate_table writes it to a file for one study; gpm store-rates
+// (verdicts.hpp) builds it for every slice of the result store and judges its rows.
+//
+// Per published row (matched on the key columns), the documents' rate log(e₁/e₂)/log(h₁/h₂)
+// between two levels, a least-squares slope over all levels, and a status:
+//   other-levels   the rate comes from other levels than the document's (the published
+//                  file's rate_levels): shown, not judged — a pre-asymptotic rate from
+//                  coarser levels neither agrees nor differs with the document
+//   agrees         |reproduced − published| ≤ tolerance
+//   differs        otherwise (a reason counts only where a diagnostic computed from the data
+//                  checks it: checked_reasons.hpp, for the paper-scale store)
+//   undefined      the rate is not a number (an error ≤ 0 or not finite at one of the two
+//                  levels): no agreement can be claimed
+//   not-computed   the data have fewer than two levels for this setting.
+#pragma once
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gpm/io/tsv.hpp"
+
+namespace gpm {
+
+// |reproduced − published| that still counts as agreement: rate_table's default, and the
+// tolerance every verdict of the result store is judged with (one number, one place).
+inline constexpr double kRateTolerance = 0.15;
+
+struct RateJoin {
+  std::vector<std::string> keys;  // key columns shared by the data and the published file
+  std::string level = "level";    // the data's level column (Δx = 2^-level)
+  std::string x = "h";            // abscissa of the rate (log e against log x)
+  std::string y = "rel_error";    // error column
+  std::string value = "numerical";  // the published file's rate column
+  // The two levels of every rate: "A,B", "published" (the published file's rate_levels, the
+  // document's) or empty (the two finest of each series).
+  std::string levels;
+  double tolerance = kRateTolerance;
+};
+
+
+// Appends to `out` the columns (the keys, then published, theoretical, reproduced,
+// difference, lsq_slope, levels, status, reason) and one row per published row, in the
+// published file's order; sets `out`'s rate_levels (fixed levels) and count_<status> lines.
+// Returns the rows per status.  InputError (naming the file, by TsvTable::source) for a
+// missing column, a cell that is no number, two data rows with the same key and level, or
+// levels that are not two increasing ones.
+std::map<std::string, int> join_rates(const TsvTable& data, const TsvTable& published,
+                                      const RateJoin& join, TsvTable& out);
+
+}  // namespace gpm

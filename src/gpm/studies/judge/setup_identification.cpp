@@ -1,0 +1,139 @@
+#include "gpm/studies/judge/setup_identification.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <map>
+
+#include "gpm/error.hpp"
+#include "gpm/operators/norms.hpp"
+
+namespace gpm {
+
+namespace {
+
+// One reading of the set-up (h rule, volumes, time step): PdeSetup (heat_tables.hpp).
+using Reading = PdeSetup;
+
+// The details in the order they are decided, each with its printed value first, by name:
+// the rule compares values of any detail alike.
+const std::vector<std::pair<std::string, std::vector<std::string>>> kDetails = {
+    {"h_rule", {"h10", "h15"}}, {"volumes", {"lattice", "cell"}}, {"dt_rule", {"fit", "exact"}}};
+
+std::string detail(const Reading& r, const std::string& d) {
+  return d == "h_rule" ? h_rule_name(r.h_rule) : d == "volumes" ? pde_volumes_name(r.volumes) : dt_rule_name(r.dt_rule);
+}
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The fingerprint rate of `weight` (rows where column = value: θ = 0) between the levels l1,
+// l2, NaN where a level is missing or an error is not a positive finite number.
+double fingerprint_rate(const TsvTable& t, const std::pair<std::string, std::string>& fp, const std::string& weight,
+                        int l1, int l2) {
+  double h[2] = {NAN, NAN}, e[2] = {NAN, NAN};
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    if (t.text(i, "weight") != weight || t.text(i, fp.first) != fp.second) continue;
+    const long long k = t.integer(i, t.require_column("level"));
+    const int slot = k == l1 ? 0 : k == l2 ? 1 : -1;
+    if (slot < 0 || t.text(i, "rel_error") == "NA") continue;
+    h[slot] = t.number(i, t.require_column("h"));
+    e[slot] = t.number(i, t.require_column("rel_error"));
+  }
+  if (!(e[0] > 0 && e[1] > 0 && std::isfinite(e[0]) && std::isfinite(e[1]))) return NAN;
+  return two_level_rate(h[0], e[0], h[1], e[1]);
+}
+
+}  // namespace
+
+SetupIdentification identify_setup(const std::string& store, const RegisteredStudy& study, const TsvTable& pub) {
+  if (!study.published || study.published->fingerprint.first.empty())
+    throw InputError("study '" + study.name + "' carries no set-up fingerprint");
+  const auto& fp = study.published->fingerprint;
+  const auto levels_text = pub.get("rate_levels").value_or("");
+  int l1 = 0, l2 = 0;
+  if (std::sscanf(levels_text.c_str(), "%d,%d", &l1, &l2) != 2)
+    throw InputError(pub.source + ": no '# rate_levels = A,B' line");
+  std::map<std::string, double> published;
+  for (std::size_t i = 0; i < pub.rows.size(); ++i)
+    if (pub.text(i, fp.first) == fp.second) published[pub.text(i, "weight")] = pub.number(i, pub.require_column("numerical"));
+  if (published.empty()) throw InputError(pub.source + ": no " + fp.first + " = " + fp.second + " rate");
+
+  // --- Every reading: its θ = 0 rates and distance. -----------------------------------------
+  // The eight readings, the printed one (h10, lattice, fit) first.
+  const std::vector<Reading>& readings = pde_setups();
+  SetupIdentification id;
+  TsvTable& t = id.table;
+  t.set("program", "setup_identification");
+  t.set("rule", "paper/04-setup-rule.md: details decided in the order h_rule, volumes, dt_rule; a value "
+                "is identified when its closest reading is closer by a factor of two than every other "
+                "value's; otherwise as printed (h10, lattice, fit)");
+  // "Table 4.6, theta = 0": the study's document item without the document's name.
+  const std::string item = study.item.substr(study.item.find("Table"));
+  t.set("fingerprint", item + ", " + fp.first + " = " + fp.second + ", rates in h between levels " + levels_text);
+  t.set("distance", "mean over the weights of |ln(rate/published)|; inf: a rate missing or of the other sign");
+  t.set("store", store);
+  t.columns = {"reading", "h_rule", "volumes", "dt_rule", "file"};
+  for (const auto& entry : published) t.columns.push_back("rate_" + entry.first);
+  t.columns.push_back("distance");
+  std::map<std::string, double> distance;
+  for (const Reading& r : readings) {
+    const std::string file = study.store_file_of(r.name()).name + ".tsv";
+    const std::string path = store + "/" + file;
+    std::vector<std::string> row = {r.name(), detail(r, "h_rule"), detail(r, "volumes"), detail(r, "dt_rule"), file};
+    double sum = 0;
+    const bool present = std::filesystem::exists(path);
+    const TsvTable data = present ? TsvTable::load(path) : TsvTable{};
+    for (auto& [w, p] : published) {
+      const double rate = present ? fingerprint_rate(data, fp, w, l1, l2) : NAN;
+      row.push_back(std::isnan(rate) ? "NA" : fmt(rate));
+      if (std::isnan(rate) && (id.incomplete.empty() || id.incomplete.back() != r.name()))
+        id.incomplete.push_back(r.name());
+      sum += (rate / p > 0) ? std::fabs(std::log(rate / p)) : kInf;
+    }
+    distance[r.name()] = sum / static_cast<double>(published.size());
+    row.push_back(fmt(distance[r.name()]));
+    t.add_row(row);
+  }
+
+  // A reading not yet computed could be the closest: no decision until all are there.
+  if (!id.incomplete.empty()) {
+    t.set("identified", "NA");
+    t.set("printed", readings.front().name());
+    t.set("incomplete", "no " + fp.first + " = " + fp.second + " rate yet for " + join(id.incomplete, ", ") +
+                            ": nothing is identified until every reading has one");
+    return id;
+  }
+
+  // --- The details, one at a time. ------------------------------------------------------------
+  std::vector<Reading> left = readings;
+  for (auto& [name, values] : kDetails) {
+    std::map<std::string, double> best;
+    for (auto& v : values) best[v] = kInf;
+    for (const Reading& r : left) best[detail(r, name)] = std::min(best[detail(r, name)], distance[r.name()]);
+    std::string chosen = values.front();  // as printed unless a value stands out
+    std::string why = "as printed: no value is closer than the others by a factor of two";
+    for (auto& v : values) {
+      bool stands_out = std::isfinite(best[v]);
+      for (auto& o : values)
+        if (o != v && !(2 * best[v] < best[o])) stands_out = false;
+      if (stands_out) {
+        chosen = v;
+        char b[160];
+        std::snprintf(b, sizeof b, "identified: closest distance %.3g against %.3g for the other value", best[v],
+                      best[values[0] == v ? values[1] : values[0]]);
+        why = b;
+      }
+    }
+    std::erase_if(left, [&](const Reading& r) { return detail(r, name) != chosen; });
+    t.set("decided_" + name, chosen + " (" + why + ")");
+    id.decisions += (id.decisions.empty() ? "" : ", ") + name + " = " + chosen;
+  }
+  id.identified = left.front();
+  t.set("identified", id.identified->name());
+  t.set("printed", readings.front().name());
+  return id;
+}
+
+}  // namespace gpm

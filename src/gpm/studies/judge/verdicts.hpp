@@ -1,0 +1,192 @@
+// The documents' published rates judged against the committed result store (results/paper),
+// whatever profile the report is built for: `gpm store-rates` writes the rates with their
+// verdicts (store_rates.tsv), the two scoreboards and the verdict counts per slice
+// (store_score.tsv) and where the stored rows come from (store_summary.tsv); the report's
+// paper-scale chapter shows them and tests/paper/check_verdicts.sh holds the store to them.
+// No study is run.
+//
+// Slices.  Each stored study file is cut into slices, one per reading of h and volume choice
+// (as the profile's own rate tables are), and each slice's rates at the documents' levels are
+// joined with the published ones (rates.hpp, tolerance kRateTolerance).  `setup` says whether
+// the slice is one of the documents' own set-ups (both readings of h are: which one the thesis
+// ran is open), another jitter realization (seeds 2-6, for the seed band), or a variant beyond
+// them (uniform volumes where the thesis uses Voronoi volumes; imoto's plain grid and
+// V_i = dx^2), which has no published value to agree with.
+//
+// Verdicts of a document row, in this order (Verdict, below):
+//   agrees                      within the tolerance of the published rate, where the
+//                               documents claim convergence;
+//   non-convergence reproduced  within tolerance where the published theoretical rate is NA
+//                               (Imoto's m = 1 rows: the rate is about 0 or -1, a different
+//                               claim); or, where the document prints an unstable run
+//                               (theoretical "unstable"), ours is unstable too by a stated
+//                               measure: error above the solution (rel_error > 1) or blown up
+//                               at both rate levels, and growing as h falls (rate < 0);
+//   indeterminate               the published rate lies inside the seed band, but the band has
+//                               fewer than 5 realizations or is wider than the tolerance;
+//   inside seed band            differs for seed 1, but the published rate lies between the
+//                               smallest and largest rate of the stored seeds (at least 5, a
+//                               band no wider than the tolerance);
+//   differs, checked reason     a reason in the checked reasons (checked_reasons.hpp)
+//                               whose diagnostic passed and includes a run that restores the
+//                               published rate;
+//   our rate explained, the published one not
+//                               a passed diagnostic that accounts for our rate only;
+//   differs, unexplained        none of the above;
+//   not computed                a level missing (or only other levels than the documents', for
+//                               a reading the catalog trims);
+//   undefined                   no finite rate (a run that overflowed, or a heat series
+//                               unstable at both rate levels): never reproduced.
+// Rows of the other set-ups are `not counted`.
+//
+// Two scoreboards, each over every published rate once (paper/04-setup-rule.md):
+//   printed     the reading as the text prints it (imoto: seed 1; Tables 4.1-4.3: printed h,
+//               Voronoi volumes; Tables 4.4-4.7: h10, V_i = |Omega_H|/N, dt = T/K);
+//   identified  the reading the documents' fingerprint identifies (setup_identification.hpp:
+//               Chapter 4's h rule, volumes and time step from Table 4.6's theta = 0 rates;
+//               elsewhere as printed); the fingerprint rates themselves are counted as
+//               `fingerprint` on that board, not as reproduced.
+// `counted` = identified (the board the report leads with).
+#pragma once
+#include <map>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "gpm/io/tsv.hpp"
+#include "gpm/studies/define/heat_tables.hpp"
+#include "gpm/studies/define/registry.hpp"
+
+namespace gpm {
+
+// The verdicts, in the order the score counts them (its columns), then the rows no board
+// counts.  Each one's printed name and score column are in one table (verdicts.cpp).
+enum class Verdict {
+  agrees,
+  non_convergence,
+  in_seed_band,
+  checked_reason,
+  explained_ours,
+  unexplained,
+  not_computed,
+  undefined,
+  fingerprint,
+  indeterminate,
+  not_counted,
+};
+// "agrees", "non-convergence reproduced", …: the rates file's verdict columns.
+const std::string& verdict_name(Verdict v);
+// "agrees", "non_convergence", …: the score's column; empty for not_counted.
+const std::string& verdict_column(Verdict v);
+// Every verdict a board counts (all but not_counted), in score order.
+const std::vector<Verdict>& scored_verdicts();
+// The score's group columns (reproduced, explained, not_explained,
+// used_for_setup, undecided, missing): every scored
+// verdict in exactly one, so a summary in four counts still adds up to the rates.
+const std::vector<std::string>& score_groups();
+
+// The realizations a seed band needs before it can decide a verdict.
+inline constexpr int kSeedBandDecides = 5;
+
+// A rate's place: (table, slice, key), e.g. (thesis_table4_6, h10, "quartic_polynomial 0.5").
+using RateKey = std::tuple<std::string, std::string, std::string>;
+
+// One published rate of one stored slice, as rates.hpp joined it (cells as rate_table writes
+// them).
+struct StoreRate {
+  std::string table, slice, setup, key, published, reproduced, levels;
+  std::string status;       // rate_table's; for a set-up beyond the documents' "no published value …"
+  std::string theoretical;  // the published theoretical rate; empty where the file has none
+};
+
+// The set-ups of a slice (`setup` column) that a seed band is made of.
+inline const std::string kDocumentSetup = "document";
+inline const std::string kJitterSetup = "another jitter realization";
+
+// A StoreRate with its seed band, verdicts and boards.
+struct JudgedRate {
+  StoreRate rate;
+  std::string seed_band;  // "1.45 to 1.91 (5 seeds)", empty under two realizations
+  Verdict verdict = Verdict::not_counted;
+  std::string reason;
+  bool printed = false, identified = false;  // on the printed / identified board
+  Verdict verdict_identified = Verdict::not_counted;
+};
+
+// Heat series (weight, theta) unstable at both rate levels: their place, and the evidence
+// "unstable at both rate levels (2^-8: blew up at step 5 of 16; 2^-9: error 3.2 after 22 steps)".
+using UnstableSeries = std::map<RateKey, std::string>;
+
+// A checked reason that passed (checked_reasons.hpp): its text "reason: evidence", and
+// whether its check includes a run that restores the published rate.
+struct CheckedReason {
+  std::string text;
+  bool restores = false;
+};
+using CheckedReasons = std::map<RateKey, CheckedReason>;
+
+// --- The pieces, on tables in memory ---------------------------------------------------------
+
+// The setup of a slice of `table` (see above).
+std::string slice_setup(const std::string& table, const std::string& slice);
+// The rows of `joined` (join_rates' output for `table`'s slice `slice`) as StoreRates keyed
+// by the columns `keys` (PublishedRates::rate_key()); `claims_theoretical`: the published
+// file has a theoretical column.  With `split_by` (PublishedRates::split_by: Table 4.4 prints
+// one rate per weight for both readings of h), a row's slice is led by that column's value
+// (h10, h15_seed2, h10_cell, …).
+std::vector<StoreRate> store_rates_of(const std::string& table, const std::string& slice,
+                                      const TsvTable& joined, const std::vector<std::string>& keys,
+                                      bool claims_theoretical, const std::string& split_by = "");
+// The rows of the heat series (weight, theta) that never blew up: what a rate can come from.
+TsvTable finite_series(const TsvTable& heat);
+// The series of one heat slice (`heat`: a store file of thesis_heat) unstable at both of the
+// levels `rate_levels` ("8,9"), added to `out` under (table, slice, "weight theta").
+void add_unstable_series(const std::string& table, const std::string& slice, const TsvTable& heat,
+                         const std::string& rate_levels, UnstableSeries& out);
+// The passed reasons of a checked-reasons table (columns table, slice, key, reason, evidence,
+// check, restores).
+CheckedReasons passed_reasons(const TsvTable& checked);
+// The seed band of every rate, its verdict and its boards.  `identified`: the reading
+// setup_identification identified, none while it is undecided (then the identified board is
+// the printed one).
+std::vector<JudgedRate> judge_rates(const std::vector<StoreRate>& rates, const UnstableSeries& unstable,
+                                    const CheckedReasons& checked, double tolerance,
+                                    const std::optional<PdeSetup>& identified,
+                                    const StudyRegistry& registry = study_registry());
+
+// The rates file: columns table, slice, setup, key, published, reproduced, levels, status,
+// seed_band, verdict, reason, printed, identified, verdict_identified, counted.
+TsvTable rates_table(const std::vector<JudgedRate>& rates);
+// The verdict counts per (table, slice, setup), in the order of `rates`, with the mean
+// |reproduced - published|; then one total row per board.  A board without rows of a table
+// counts its published rates (the printed board's rows of it, else the rows of its published
+// file in `published_dir`) not computed.
+TsvTable score_table(const std::vector<JudgedRate>& rates, const std::string& published_dir,
+                     const StudyRegistry& registry = study_registry());
+
+// --- From the store ----------------------------------------------------------------------------
+
+// The published file of a table (the registry's): imoto_table1.tsv, thesis_table4_N_long.tsv.
+std::string published_file(const std::string& published_dir, const std::string& table,
+                           const StudyRegistry& registry = study_registry());
+// The slices of a study's files in the store (its store_files that are there, each cut by
+// its published rates' cut, else one slice).
+std::vector<StoreSlice> stored_slices(const RegisteredStudy& study, const std::string& store);
+// Every slice of every stored study file of the registry's studies with published rates
+// (stored_slices, then store_rates_of), in the order of their names "table.slice".
+std::vector<StoreRate> store_rates(const std::string& store, const std::string& published_dir,
+                                   double tolerance, const StudyRegistry& registry = study_registry());
+// The unstable series of every stored reading of the studies judged on finite series (heat).
+UnstableSeries store_unstable_series(const std::string& store, const std::string& published_dir,
+                                     const StudyRegistry& registry = study_registry());
+// Where the stored rows come from, file by file: rows, levels, and how many the current code
+// made (the code column is this build's fingerprint of the file's program), how many a
+// recorded re-check carried over, how many other code made; the machines they were made on.
+// Files without a code column (derived files, a script's) are left out.
+TsvTable store_summary(const std::string& store);
+// The header lines every output of gpm store-rates carries (the report prints them under each
+// table): profile (the committed store), seed, git_revision, written_utc.
+std::vector<std::pair<std::string, std::string>> store_provenance(const std::string& store);
+
+}  // namespace gpm

@@ -1,0 +1,38 @@
+#!/bin/bash
+# The code fingerprint by rule (cmake/fingerprint.cmake), on a copy of the sources: a change of
+# h in the registry (studies/define) moves the fingerprint of the programs that compute with
+# it; an edit of the judging room (studies/judge) moves none; a core source in a folder no
+# rule names stops the script, naming it.
+# usage: fingerprint_rule_test.sh SOURCE_DIR
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
+set -u
+src=${1:?usage: fingerprint_rule_test.sh SOURCE_DIR}
+t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
+mkdir -p "$t/tree"
+cp -r "$src/src" "$src/bench" "$t/tree/"
+fp() {  # fp OUT: run the script on the copy; print thesis_heat's and core_voronoi's fingerprints
+  cmake -DSRC="$t/tree" -DOUT="$1" -DFLAGS=test -P "$src/cmake/fingerprint.cmake" >/dev/null 2>"$t/err" || return 1
+  grep -o '{"\(thesis_heat\|core_voronoi\)", "[0-9a-f]*"}' "$1" | tr '\n' ' '
+}
+fail=0
+before=$(fp "$t/a.cpp") || { echo "FAIL: the script failed on the sources:"; cat "$t/err"; exit 1; }
+[ -n "$before" ] || { echo "FAIL: no fingerprint of thesis_heat or core_voronoi in the output"; exit 1; }
+# h of the heat and Poisson units scaled by 1.01 where the registry computes it.
+reg="$t/tree/src/gpm/studies/define/registry.cpp"
+grep -q 'pde_h(' "$reg" || { echo "FAIL: the registry no longer computes h with pde_h (update this test)"; exit 1; }
+sed -i '0,/pde_h(/s//1.01 * pde_h(/' "$reg"
+moved=$(fp "$t/b.cpp")
+h_before=$(grep -o '{"thesis_heat", "[0-9a-f]*"}' <<<"$before")
+h_after=$(grep -o '{"thesis_heat", "[0-9a-f]*"}' <<<"$moved")
+[ "$h_before" != "$h_after" ] || { echo "FAIL: a change of h in studies/define left thesis_heat's fingerprint as it was"; fail=1; }
+cp "$src/src/gpm/studies/define/registry.cpp" "$reg"
+# A judging edit: no stored number depends on it.
+echo "// an edit of the judging room" >> "$t/tree/src/gpm/studies/judge/verdicts.cpp"
+same=$(fp "$t/c.cpp")
+[ "$same" = "$before" ] || { echo "FAIL: an edit of studies/judge moved a fingerprint ($before -> $same)"; fail=1; }
+# A folder no rule names.
+mkdir -p "$t/tree/src/gpm/newroom" && echo "int x;" > "$t/tree/src/gpm/newroom/x.cpp"
+if fp "$t/d.cpp" >/dev/null; then echo "FAIL: a core source in an unnamed folder was accepted"; fail=1
+else grep -q "src/gpm/newroom/x.cpp" "$t/err" || { echo "FAIL: the refusal does not name the file:"; cat "$t/err"; fail=1; }; fi
+[ $fail -eq 0 ] && echo "fingerprint rule: h in define moves it, judge does not, an unnamed folder is refused"
+exit $fail
