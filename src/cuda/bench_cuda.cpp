@@ -27,6 +27,7 @@
 #include "cuda/kernel_cuda_body.hpp"
 #include "gpm/error.hpp"
 #include "gpm/geometry/domain.hpp"
+#include "gpm/geometry/influence_radius.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/kernel/kernel.hpp"
@@ -184,7 +185,7 @@ int body(int argc, char** argv) {
   if (lap_dx > 0) {
     const gpm::Particles q = gpm::jittered_grid(lap_dx, static_cast<uint64_t>(args.integer("seed")));
     const std::vector<double> Vq(q.size(), gpm::Domain{}.area_H() / static_cast<double>(q.size()));
-    const double hl = std::pow(std::pow(2.6, 4) * std::pow(2.0, -10) * lap_dx, 0.25);
+    const double hl = gpm::pde_h(gpm::HRule::h10, lap_dx);  // the thesis' printed h, one function
     const gpm::DiscreteLaplacian L(q, Vq, wl, hl, gpm::LaplacianStorage::matrix_free);
     Eigen::VectorXd x(static_cast<Eigen::Index>(L.n_unknowns())), y;
     for (Eigen::Index u = 0; u < x.size(); ++u) x[u] = std::cos(0.37 * static_cast<double>(u));
