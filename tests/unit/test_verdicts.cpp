@@ -104,6 +104,23 @@ TEST_CASE("verdicts: the seed band decides only with 5 realizations within the t
     const auto j = judge(with_seeds("1.8", {"1.9", "1.85", "1.95", "1.93"}));
     CHECK(row(j, "imoto_table1", "all", "Pi1 3").verdict == Verdict::unexplained);
   }
+  SECTION("seed 1 agrees but the band is wider than the tolerance: indeterminate, not agrees") {
+    std::vector<StoreRate> r = {rate("imoto_table1", "all", "Pi1 3", "2", "1.95", "agrees")};
+    for (const char* o : {"1.7", "2.0", "1.9", "2.05"})
+      r.push_back(rate("imoto_table1", "seed" + std::to_string(r.size() + 1), "Pi1 3", "2", o, "differs"));
+    const auto judged = judge(r);
+    const JudgedRate& j = row(judged, "imoto_table1", "all", "Pi1 3");
+    CHECK(j.verdict == Verdict::indeterminate);
+    CHECK(j.reason == "seed 1 agrees, but the band of 5 seeds is 0.35 wide, wider than the tolerance 0.15: "
+                      "the realizations cannot decide");
+  }
+  SECTION("seed 1 agrees inside a narrow band: agrees") {
+    std::vector<StoreRate> r = {rate("imoto_table1", "all", "Pi1 3", "2", "1.95", "agrees")};
+    for (const char* o : {"1.9", "2.0", "1.92", "2.01"})
+      r.push_back(rate("imoto_table1", "seed" + std::to_string(r.size() + 1), "Pi1 3", "2", o, "differs"));
+    const auto judged = judge(r);
+    CHECK(row(judged, "imoto_table1", "all", "Pi1 3").verdict == Verdict::agrees);
+  }
   SECTION("within tolerance where the document claims no convergence (NA)") {
     const auto j = judge({rate("imoto_table1", "all", "Pi1 1", "-0.1", "-0.02", "agrees", "NA")});
     CHECK(row(j, "imoto_table1", "all", "Pi1 1").verdict == Verdict::non_convergence);

@@ -151,8 +151,17 @@ std::pair<Verdict, std::string> verdict_of(const StoreRate& r, const SeedBand* b
   const auto blown = unstable.find(place);
   const bool differs = r.status.rfind("differs", 0) == 0;
   double reproduced = 0, published = 0;
-  if (r.status == "agrees")
-    return {r.theoretical == "NA" ? Verdict::non_convergence : Verdict::agrees, ""};
+  if (r.status == "agrees") {
+    if (r.theoretical == "NA") return {Verdict::non_convergence, ""};
+    // One realization agreeing decides nothing when the realizations spread wider than the
+    // tolerance: seed 1 could as well have missed (the same rule as for a differing rate).
+    if (band && band->hi - band->lo > tolerance)
+      return {Verdict::indeterminate,
+              format("seed 1 agrees, but the band of %d seeds is %.2f wide, wider than the tolerance %.2f: "
+                     "the realizations cannot decide",
+                     band->seeds, band->hi - band->lo, tolerance)};
+    return {Verdict::agrees, ""};
+  }
   if (differs && r.theoretical == "unstable" && blown != unstable.end() &&
       rate_number(r.reproduced, reproduced) && reproduced < 0 && leading_number(r.published) < 0)
     return {Verdict::non_convergence, "both unstable: " + blown->second + ", rate < 0"};
