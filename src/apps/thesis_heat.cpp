@@ -106,230 +106,295 @@ std::vector<std::pair<std::string, std::string>> heat_params(const HeatTable& ts
           {"error", "(4.2): max_k ||u-U||_l2(Omega_H) / max_k ||u||_l2(Omega_H)"}};
 }
 
-int body(int argc, char** argv) {
-  StudyRunner run("thesis_heat",
-                  "Discrete heat problem with the theta-method (thesis §4.3): relative errors (4.2)\n"
-                  "per weight, theta and level for one time-step setting (Tables 4.5-4.7), under\n"
-                  "one reading of the set-up or several (comma lists: every combination, each to\n"
-                  "its own data file, the series of one Laplacian advanced together).",
-                  "quick or paper (levels per table: heat_tables.hpp, gpm study --list)");
-  Args& a = run.args();
-  a.opt("table", "", "4.5 (dt = 0.0025h^2), 4.6 (dt = 0.5h^2) or 4.7 (dt = 0.5h) (required)")
-      .output("rates-input", "", "data file of the series that never blew up (for rate_table);\n"
-                                 "  with several readings, a pattern with {reading} as --out")
-      .opt("dt-rule", "fit", "fit: dt = T/K, K = ceil(T/dt0) (the thesis' dt = T/K); exact: dt = dt0,\n"
-                             "  K = ceil(T/dt0) steps (last step at K dt0 >= T); or both: fit,exact")
-      .opt("h-rule", "h10", "h10: h = (2.6^4 2^-10 dx)^(1/4) as printed; h15: (2.6^4 2^-15 dx)^(1/4);\n"
-                            "  or both: h10,h15")
-      .opt("volumes", "lattice", "lattice: V_i = |Omega_H|/N (thesis (A.10)); cell: V_i = dx^2; or both\n"
-                                 "  (a diagnostic: (A.10) differs from dx^2 by 0.8%, 0.13%, -0.2% at 2^-7..2^-9)")
-      .opt("tol", "1e-10", "CG relative residual per implicit step")
-      .opt("blowup", "off", "off (default): run to T, stopping only at a non-finite value, so an\n"
-                            "  unstable theta = 0 run still has the error (4.2) and a rate; or a factor:\n"
-                            "  stop when ||U^k|| > blowup * ||U^0|| (l2(Omega_H))")
-      .opt("thetas", "", "run only these theta of the table (comma list; default: all of them)")
-      .opt("weights", "", "run only these weights (comma list; default: all three)")
-      .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
-      .opt("propagator", "auto", "stepped: the theta-method step by step (the reference); krylov: the\n"
-                                 "  recurrence propagated exactly in a Krylov subspace (heat_krylov.hpp);\n"
-                                 "  auto: per series, the one with fewer predicted Laplacian products.\n"
-                                 "  --verify/--recheck recompute each row by the propagator that made it")
-      .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB)");
-  run.parse(argc, argv);
-  const HeatTable& ts = heat_table(a.str("table"));
-  // The readings: every combination of the listed choices (InputError naming a bad one).
-  std::vector<HRule> h_rules;
-  std::vector<PdeVolumes> volume_choices;
-  std::vector<DtRule> dt_rules;
-  for (auto& s : a.list("h-rule")) h_rules.push_back(parse_h_rule(s));
-  for (auto& s : a.list("volumes")) volume_choices.push_back(parse_pde_volumes(s));
-  for (auto& s : a.list("dt-rule")) dt_rules.push_back(parse_dt_rule(s));
-  const std::vector<PdeSetup> readings = pde_setup_matrix(h_rules, volume_choices, dt_rules);
-  HeatSetting hs;
-  hs.kappa = kHeatKappa;
-  hs.T = kHeatT;
-  hs.tol = a.tolerance("tol");
-  // The documents' error (4.2) is defined however large U grows: by default no guard, and a
-  // run stops early only where a value is no longer finite (reported as a blow-up).
-  const bool guarded = a.str("blowup") != "off";
-  hs.blowup_factor = guarded ? a.positive("blowup") : std::numeric_limits<double>::infinity();
-  // ||U^k|| ≤ blowup·||U^0|| holds at k = 0 only for a factor above 1.
-  if (!(hs.blowup_factor > 1)) throw InputError("--blowup must exceed 1, got " + a.str("blowup"));
-  // A subset of the table's θ: a unit is keyed by θ, so a subset run only adds units.
-  std::vector<double> thetas = ts.thetas;
-  if (!a.str("thetas").empty()) {
-    thetas = a.nums("thetas");
-    for (double th : thetas)
-      if (std::find(ts.thetas.begin(), ts.thetas.end(), th) == ts.thetas.end())
-        throw InputError("--thetas: " + fmt(th) + " is not a theta of Table " + ts.table);
-  }
-  // A subset of the weights, as of the θ: a run only adds units.
-  std::vector<std::string> weights = pde_weights();
-  if (!a.str("weights").empty()) {
-    weights = a.list("weights");
-    for (auto& w : weights)
-      if (std::find(pde_weights().begin(), pde_weights().end(), w) == pde_weights().end())
-        throw InputError("--weights: '" + w + "' is not a weight of the heat tables");
-  }
-  const auto storage = parse_laplacian_storage(a.str("storage"));
-  const HeatPropagator how = parse_heat_propagator(a.str("propagator"));
-  const bool rechecking = run.mode() == CacheMode::verify || run.mode() == CacheMode::recheck;
-  if (rechecking && a.has("propagator"))
-    throw InputError("--propagator with --verify/--recheck: each stored row is recomputed by the "
-                     "propagator that made it (its column 'propagator')");
-  const double max_bytes = a.positive("max-gb") * 1e9;
-  // The table's units (registry.cpp): one series (weight, θ) per level and h rule, in the
-  // order (level, h rule, weight, θ); --levels, else the profile's levels.  Kept: those of
-  // the chosen h rules, weights and θ.
-  const UnitScope scope{run.profile() == Profile::paper, run.levels(ts.quick, ts.paper), run.levels_given()};
-  auto chosen = [](const auto& list, const auto& v) { return std::find(list.begin(), list.end(), v) != list.end(); };
-  std::vector<StudyUnit> units;
-  std::vector<int> levels;
-  for (const StudyUnit& u : study_registry().study(heat_study_name(ts)).units(scope))
-    if (chosen(h_rules, parse_h_rule(u.part)) && chosen(weights, u.key[0]) &&
-        chosen(thetas, parse_number(u.key[1], "theta"))) {
-      units.push_back(u);
-      if (!chosen(levels, u.level)) levels.push_back(u.level);
-    }
-  require_pde_levels_fit_memory(levels, h_rules, storage, max_bytes);
-  const std::string out = run.out(), rates_input = a.str("rates-input");
-  if (readings.size() > 1 && out.find("{reading}") == std::string::npos)
-    throw InputError("--out '" + out + "' names one file for " + std::to_string(readings.size()) +
-                     " readings; put {reading} where the reading's suffix goes (e.g. "
-                     "results/paper/thesis_table4_6{reading}.tsv)");
-  if (readings.size() > 1 && !rates_input.empty() && rates_input.find("{reading}") == std::string::npos)
-    throw InputError("--rates-input '" + rates_input + "' needs {reading} too, for " +
-                     std::to_string(readings.size()) + " readings");
+// The program, in the order of the thesis' §4.3 and the deal.II step-6 style: the options,
+// the readings and series they select, one data file per reading, then per group of series
+// sharing one Laplacian (a level, an h rule and a weight): the particles, the Laplacian, the
+// θ-method (stepped or propagated) for every series of the group, one row each.
+class HeatTables {
+ public:
+  HeatTables()
+      : run_("thesis_heat",
+             "Discrete heat problem with the theta-method (thesis §4.3): relative errors (4.2)\n"
+             "per weight, theta and level for one time-step setting (Tables 4.5-4.7), under\n"
+             "one reading of the set-up or several (comma lists: every combination, each to\n"
+             "its own data file, the series of one Laplacian advanced together).",
+             "quick or paper (levels per table: heat_tables.hpp, gpm study --list)") {}
 
-  // --- The data files: one per reading, one row per (weight, θ, level). ----------------------
-  std::vector<StudyRunner::DataFile> files;
-  for (auto& r : readings) files.push_back({reading_path(out, r), heat_params(ts, run, hs, guarded, r)});
-  const std::vector<LevelCache*> caches = run.open_files(files, heat_columns(), 3);
-  const Domain dom;
-  Particles p;  // of the level being run, with the volumes of each choice
-  std::map<PdeVolumes, std::vector<double>> V;
-  int p_level = -1;
-  std::vector<std::pair<int, HRule>> checked;  // (level, h rule) whose connectivity is checked
-  for (std::size_t g = 0, next = 0; g < units.size(); g = next) {
-    // A group: the series of one (level, h rule, weight), which share one Laplacian.
-    const StudyUnit& first = units[g];
+  int run(int argc, char** argv) {
+    declare_options();
+    run_.parse(argc, argv);
+    read_choices();
+    select_units();
+    open_files();
+    for (std::size_t g = 0, next = 0; g < units_.size(); g = next) {
+      next = group_end(g);
+      advance_group(g, next);
+    }
+    return finish();
+  }
+
+ private:
+  // A series still to do of one group: its reading and θ.
+  struct Todo {
+    std::size_t reading;
+    double theta;
+  };
+
+  StudyRunner run_;
+  const HeatTable* ts_ = nullptr;
+  std::vector<HRule> h_rules_;
+  std::vector<PdeVolumes> volume_choices_;
+  std::vector<PdeSetup> readings_;
+  HeatSetting hs_;
+  bool guarded_ = false, rechecking_ = false;
+  LaplacianStorage storage_ = LaplacianStorage::automatic;
+  HeatPropagator how_ = HeatPropagator::automatic;
+  double max_bytes_ = 0;
+  std::vector<StudyUnit> units_;
+  std::string out_, rates_input_;
+  std::vector<LevelCache*> caches_;
+  const Domain dom_;
+  Particles p_;  // of the level being run, with the volumes of each choice
+  std::map<PdeVolumes, std::vector<double>> V_;
+  int p_level_ = -1;
+  std::vector<std::pair<int, HRule>> checked_;  // (level, h rule) whose connectivity is checked
+
+  void declare_options() {
+    Args& a = run_.args();
+    a.opt("table", "", "4.5 (dt = 0.0025h^2), 4.6 (dt = 0.5h^2) or 4.7 (dt = 0.5h) (required)")
+        .output("rates-input", "", "data file of the series that never blew up (for rate_table);\n"
+                                   "  with several readings, a pattern with {reading} as --out")
+        .opt("dt-rule", "fit", "fit: dt = T/K, K = ceil(T/dt0) (the thesis' dt = T/K); exact: dt = dt0,\n"
+                               "  K = ceil(T/dt0) steps (last step at K dt0 >= T); or both: fit,exact")
+        .opt("h-rule", "h10", "h10: h = (2.6^4 2^-10 dx)^(1/4) as printed; h15: (2.6^4 2^-15 dx)^(1/4);\n"
+                              "  or both: h10,h15")
+        .opt("volumes", "lattice", "lattice: V_i = |Omega_H|/N (thesis (A.10)); cell: V_i = dx^2; or both\n"
+                                   "  (a diagnostic: (A.10) differs from dx^2 by 0.8%, 0.13%, -0.2% at 2^-7..2^-9)")
+        .opt("tol", "1e-10", "CG relative residual per implicit step")
+        .opt("blowup", "off", "off (default): run to T, stopping only at a non-finite value, so an\n"
+                              "  unstable theta = 0 run still has the error (4.2) and a rate; or a factor:\n"
+                              "  stop when ||U^k|| > blowup * ||U^0|| (l2(Omega_H))")
+        .opt("thetas", "", "run only these theta of the table (comma list; default: all of them)")
+        .opt("weights", "", "run only these weights (comma list; default: all three)")
+        .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
+        .opt("propagator", "auto", "stepped: the theta-method step by step (the reference); krylov: the\n"
+                                   "  recurrence propagated exactly in a Krylov subspace (heat_krylov.hpp);\n"
+                                   "  auto: per series, the one with fewer predicted Laplacian products.\n"
+                                   "  --verify/--recheck recompute each row by the propagator that made it")
+        .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB)");
+  }
+
+  // The table, the readings (every combination of the listed choices; InputError naming a bad
+  // one) and the θ-method's settings.
+  void read_choices() {
+    Args& a = run_.args();
+    ts_ = &heat_table(a.str("table"));
+    std::vector<DtRule> dt_rules;
+    for (auto& s : a.list("h-rule")) h_rules_.push_back(parse_h_rule(s));
+    for (auto& s : a.list("volumes")) volume_choices_.push_back(parse_pde_volumes(s));
+    for (auto& s : a.list("dt-rule")) dt_rules.push_back(parse_dt_rule(s));
+    readings_ = pde_setup_matrix(h_rules_, volume_choices_, dt_rules);
+    hs_.kappa = kHeatKappa;
+    hs_.T = kHeatT;
+    hs_.tol = a.tolerance("tol");
+    // The documents' error (4.2) is defined however large U grows: by default no guard, and a
+    // run stops early only where a value is no longer finite (reported as a blow-up).
+    guarded_ = a.str("blowup") != "off";
+    hs_.blowup_factor = guarded_ ? a.positive("blowup") : std::numeric_limits<double>::infinity();
+    // ||U^k|| ≤ blowup·||U^0|| holds at k = 0 only for a factor above 1.
+    if (!(hs_.blowup_factor > 1)) throw InputError("--blowup must exceed 1, got " + a.str("blowup"));
+    storage_ = parse_laplacian_storage(a.str("storage"));
+    how_ = parse_heat_propagator(a.str("propagator"));
+    rechecking_ = run_.mode() == CacheMode::verify || run_.mode() == CacheMode::recheck;
+    if (rechecking_ && a.has("propagator"))
+      throw InputError("--propagator with --verify/--recheck: each stored row is recomputed by the "
+                       "propagator that made it (its column 'propagator')");
+    max_bytes_ = a.positive("max-gb") * 1e9;
+    out_ = run_.out(), rates_input_ = a.str("rates-input");
+    if (readings_.size() > 1 && out_.find("{reading}") == std::string::npos)
+      throw InputError("--out '" + out_ + "' names one file for " + std::to_string(readings_.size()) +
+                       " readings; put {reading} where the reading's suffix goes (e.g. "
+                       "results/paper/thesis_table4_6{reading}.tsv)");
+    if (readings_.size() > 1 && !rates_input_.empty() && rates_input_.find("{reading}") == std::string::npos)
+      throw InputError("--rates-input '" + rates_input_ + "' needs {reading} too, for " +
+                       std::to_string(readings_.size()) + " readings");
+  }
+
+  // The table's units (registry.cpp): one series (weight, θ) per level and h rule, in the
+  // order (level, h rule, weight, θ); --levels, else the profile's levels.  Kept: those of the
+  // chosen h rules, weights and θ (a subset run only adds units: a unit is keyed by them).
+  void select_units() {
+    Args& a = run_.args();
+    std::vector<double> thetas = ts_->thetas;
+    if (!a.str("thetas").empty()) {
+      thetas = a.nums("thetas");
+      for (double th : thetas)
+        if (std::find(ts_->thetas.begin(), ts_->thetas.end(), th) == ts_->thetas.end())
+          throw InputError("--thetas: " + fmt(th) + " is not a theta of Table " + ts_->table);
+    }
+    std::vector<std::string> weights = pde_weights();
+    if (!a.str("weights").empty()) {
+      weights = a.list("weights");
+      for (auto& w : weights)
+        if (std::find(pde_weights().begin(), pde_weights().end(), w) == pde_weights().end())
+          throw InputError("--weights: '" + w + "' is not a weight of the heat tables");
+    }
+    const UnitScope scope{run_.profile() == Profile::paper, run_.levels(ts_->quick, ts_->paper), run_.levels_given()};
+    std::vector<int> levels;
+    for (const StudyUnit& u : study_registry().study(heat_study_name(*ts_)).units(scope))
+      if (chosen(h_rules_, parse_h_rule(u.part)) && chosen(weights, u.key[0]) &&
+          chosen(thetas, parse_number(u.key[1], "theta"))) {
+        units_.push_back(u);
+        if (!chosen(levels, u.level)) levels.push_back(u.level);
+      }
+    require_pde_levels_fit_memory(levels, h_rules_, storage_, max_bytes_);
+  }
+
+  // The data files: one per reading, one row per (weight, θ, level).
+  void open_files() {
+    std::vector<StudyRunner::DataFile> files;
+    for (auto& r : readings_) files.push_back({reading_path(out_, r), heat_params(*ts_, run_, hs_, guarded_, r)});
+    caches_ = run_.open_files(files, heat_columns(), 3);
+  }
+
+  // The end of the group that starts at unit g: the series of one (level, h rule, weight),
+  // which share one Laplacian.
+  std::size_t group_end(std::size_t g) const {
+    std::size_t next = g;
+    while (next < units_.size() && units_[next].level == units_[g].level && units_[next].part == units_[g].part &&
+           units_[next].key[0] == units_[g].key[0])
+      ++next;
+    return next;
+  }
+
+  // The level's particles and the volumes of each choice (once per level).
+  void prepare_level(int k) {
+    if (p_level_ == k) return;
+    const double dx = std::ldexp(1.0, -k);
+    p_ = jittered_grid(dx, run_.seed());
+    for (PdeVolumes vc : volume_choices_) V_[vc] = pde_volumes(vc, p_, dx, dom_);
+    p_level_ = k;
+  }
+
+  // One group: its series still to do (every reading of its h rule, each θ), claimed as one
+  // piece of work; then one Laplacian per volumes choice that cannot share, the series run
+  // together on it, one row each.
+  void advance_group(std::size_t g, std::size_t next) {
+    const StudyUnit& first = units_[g];
     const int k = first.level;
     const HRule h_rule = parse_h_rule(first.part);
     const std::string wname = first.key[0];
-    std::vector<double> group_thetas;
-    for (next = g; next < units.size() && units[next].level == k && units[next].part == first.part &&
-                   units[next].key[0] == wname;
-         ++next)
-      group_thetas.push_back(parse_number(units[next].key[1], "theta"));
-    // The level: particles and the volumes of each choice.
-    const double dx = std::ldexp(1.0, -k);
-    if (p_level != k) {
-      p = jittered_grid(dx, run.seed());
-      for (PdeVolumes vc : volume_choices) V[vc] = pde_volumes(vc, p, dx, dom);
-      p_level = k;
-    }
-    // h and the nominal step Δt₀ of the table.
-    const double h = first.h;
-    const double dt0 = ts.c * std::pow(h, ts.p);
-    // The series still to do of this weight: (reading, θ), every reading of this h rule.
-    // They share one Laplacian (on a cluster they go to one rank together).
-    struct Todo {
-      std::size_t reading;
-      double theta;
-    };
+    const double dx = std::ldexp(1.0, -k), h = first.h;
+    const double dt0 = ts_->c * std::pow(h, ts_->p);  // the table's nominal step Δt₀
     std::vector<Todo> todo;
     double work = 0;
-    for (std::size_t r = 0; r < readings.size(); ++r) {
-      if (readings[r].h_rule != h_rule) continue;
-      for (double th : group_thetas)
-        if (!caches[r]->has({wname, fmt(th), fmt(k)}))
-          todo.push_back({r, th}), work += heat_unit_work(dx, h, dt0, hs.T, th);
+    for (std::size_t r = 0; r < readings_.size(); ++r) {
+      if (readings_[r].h_rule != h_rule) continue;
+      for (std::size_t u = g; u < next; ++u) {
+        const double th = parse_number(units_[u].key[1], "theta");
+        if (!caches_[r]->has({wname, fmt(th), fmt(k)}))
+          todo.push_back({r, th}), work += heat_unit_work(dx, h, dt0, hs_.T, th);
+      }
     }
-    if (todo.empty() || !run.claim_group(static_cast<int>(todo.size()), work)) continue;
-    if (!chosen(checked, std::make_pair(k, h_rule)))
-      require_h_connectivity(p, h), checked.push_back({k, h_rule});
-    // One Laplacian per (level, h rule, weight), built with the first series' volumes;
-    // a series of other volumes runs on it through volumes_for (the stored entries do not
-    // depend on them) where it is assembled as the half, else on a Laplacian of its own.
-    // Every series' numbers are those it gives alone.  (The readings' order keeps each
-    // volumes choice's series together, so the units finish in the order claimed.)
+    // On a cluster the group goes to one rank together.
+    if (todo.empty() || !run_.claim_group(static_cast<int>(todo.size()), work)) return;
+    prepare_level(k);
+    if (!chosen(checked_, std::make_pair(k, h_rule))) require_h_connectivity(p_, h), checked_.push_back({k, h_rule});
+    // One Laplacian per (level, h rule, weight), built with the first series' volumes; a series
+    // of other volumes runs on it through volumes_for (the stored entries do not depend on
+    // them) where it is assembled as the half, else on a Laplacian of its own.  Every series'
+    // numbers are those it gives alone.  (The readings' order keeps each volumes choice's
+    // series together, so the units finish in the order claimed.)
     const WeightFunction& w = weight(wname);
     std::vector<bool> done(todo.size(), false);
     while (std::find(done.begin(), done.end(), false) != done.end()) {
-      const PdeVolumes own =
-          readings[todo[std::find(done.begin(), done.end(), false) - done.begin()].reading].volumes;
-      const DiscreteLaplacian L(p, V[own], w, h, storage, max_bytes);
-      const bool shares = L.assembled() && storage != LaplacianStorage::full;
+      const PdeVolumes own = readings_[todo[std::find(done.begin(), done.end(), false) - done.begin()].reading].volumes;
+      const DiscreteLaplacian L(p_, V_[own], w, h, storage_, max_bytes_);
+      const bool shares = L.assembled() && storage_ != LaplacianStorage::full;
       std::map<PdeVolumes, DiscreteLaplacian::Volumes> other;
       std::vector<std::size_t> here;
       std::vector<HeatSetting> settings;
       std::vector<HeatPropagator> hows;
       for (std::size_t u = 0; u < todo.size(); ++u) {
-        const PdeSetup& r = readings[todo[u].reading];
+        const PdeSetup& r = readings_[todo[u].reading];
         if (done[u] || (r.volumes != own && !shares)) continue;
-        HeatSetting s = hs;
+        HeatSetting s = hs_;
         s.theta = todo[u].theta;
         s.dt_nominal = dt0;
         s.fit_T = r.dt_rule == DtRule::fit;
         if (r.volumes != own) {
-          if (!other.count(r.volumes)) other.emplace(r.volumes, L.volumes_for(p, w, V[r.volumes]));
+          if (!other.count(r.volumes)) other.emplace(r.volumes, L.volumes_for(p_, w, V_[r.volumes]));
           s.volumes = &other.at(r.volumes);
         }
         here.push_back(u), settings.push_back(s), done[u] = true;
-        hows.push_back(rechecking ? stored_propagator(*caches[todo[u].reading], {wname, fmt(todo[u].theta), fmt(k)})
-                                  : how);
+        hows.push_back(rechecking_ ? stored_propagator(*caches_[todo[u].reading], {wname, fmt(todo[u].theta), fmt(k)})
+                                   : how_);
       }
       const std::vector<HeatResult> rs =
-          naming_unit("Table " + ts.table + ", " + h_rule_name(h_rule) + ", " + wname + ", level " + fmt(k),
-                      [&] { return run_heat(p, L, settings, hows, dx); });
-      for (std::size_t i = 0; i < here.size(); ++i) {
-        const Todo& t = todo[here[i]];
-        const HeatResult& res = rs[i];
-        const PdeSetup& r = readings[t.reading];
-        // The row, by column name (heat_columns()); a blown-up series has no error.
-        const std::string na = "NA";
-        TsvRow row = run.row();
-        row["weight"] = wname, row["theta"] = fmt(t.theta), row["level"] = fmt(k);
-        row["dx"] = fmt(dx), row["h"] = fmt(h), row["N"] = fmt(p.size());
-        row["N_omega"] = fmt(L.n_unknowns()), row["storage"] = L.assembled() ? "assembled" : "matrix_free";
-        row["propagator"] = res.subspace > 0 ? "krylov" : "stepped", row["subspace"] = fmt(res.subspace);
-        row["K"] = fmt(static_cast<long long>(res.K)), row["dt"] = fmt(res.dt);
-        row["rel_error"] = res.blew_up ? na : fmt(res.rel_error);
-        row["rel_error_max"] = res.blew_up ? na : fmt(res.rel_error_max);
-        row["growth_max"] = fmt(res.growth_max), row["blew_up"] = res.blew_up ? "yes" : "no";
-        row["blowup_step"] = res.blew_up ? fmt(static_cast<long long>(res.blowup_step)) : na;
-        row["growth"] = res.blew_up ? fmt(res.growth) : na;
-        row["amplification"] = res.blew_up ? fmt(res.amplification) : na;
-        row["steps_done"] = fmt(static_cast<long long>(res.steps_done));
-        row["cg_mean_iterations"] = fmt(res.mean_cg_iterations);
-        row["max_rel_residual"] = fmt(res.max_rel_residual);
-        row["s_per_step"] = fmt(res.seconds_per_step), row["seconds"] = fmt(res.seconds);
-        run.add(t.reading, row);
-        const std::string head = line_printf(
-            "%s%s%s: %-28s theta=%-3g dx=2^-%d h=%.4f K=%ld ", ts.table.c_str(),
-            readings.size() > 1 ? " " : "", readings.size() > 1 ? r.name().c_str() : "",
-            wname.c_str(), t.theta, k, h, res.K);
-        run.unit_done(0, head + (res.blew_up
-            ? line_printf("BLOW-UP at step %ld: ||U||/||U0|| = %.3g (x%.3g in the last step)  %.2f s",
-                          res.blowup_step, res.growth, res.amplification, res.seconds)
-            : (res.subspace > 0
-            ? line_printf("err=%.4e Krylov m=%d  %.0f products  %.2f s", res.rel_error, res.subspace,
-                          res.products, res.seconds)
-            : line_printf("err=%.4e CG %.1f it/step  %.3g s/step  %.2f s", res.rel_error,
-                          res.mean_cg_iterations, res.seconds_per_step, res.seconds)) +
-              // Not stopped is not "stable": a series that grew is said to have grown.
-              (res.growth_max > 2 ? line_printf("  (||U||/||U0|| grew to %.3g: run to T, no guard)", res.growth_max)
-                                  : std::string())));
-        if (caches[t.reading]->writes() && !rates_input.empty())
-          write_rates_input(*caches[t.reading], reading_path(rates_input, r));
-      }
+          naming_unit("Table " + ts_->table + ", " + h_rule_name(h_rule) + ", " + wname + ", level " + fmt(k),
+                      [&] { return run_heat(p_, L, settings, hows, dx); });
+      for (std::size_t i = 0; i < here.size(); ++i) write_row(todo[here[i]], rs[i], L, wname, k, dx, h);
     }
   }
-  if (!run.finish()) return 0;
-  if (!rates_input.empty())
-    for (std::size_t r = 0; r < readings.size(); ++r)
-      write_rates_input(*caches[r], reading_path(rates_input, readings[r]));
-  return 0;
+
+  // One series' row, by column name (heat_columns()); a blown-up series has no error.
+  void write_row(const Todo& t, const HeatResult& res, const DiscreteLaplacian& L, const std::string& wname, int k,
+                 double dx, double h) {
+    const PdeSetup& r = readings_[t.reading];
+    const std::string na = "NA";
+    TsvRow row = run_.row();
+    row["weight"] = wname, row["theta"] = fmt(t.theta), row["level"] = fmt(k);
+    row["dx"] = fmt(dx), row["h"] = fmt(h), row["N"] = fmt(p_.size());
+    row["N_omega"] = fmt(L.n_unknowns()), row["storage"] = L.assembled() ? "assembled" : "matrix_free";
+    row["propagator"] = res.subspace > 0 ? "krylov" : "stepped", row["subspace"] = fmt(res.subspace);
+    row["K"] = fmt(static_cast<long long>(res.K)), row["dt"] = fmt(res.dt);
+    row["rel_error"] = res.blew_up ? na : fmt(res.rel_error);
+    row["rel_error_max"] = res.blew_up ? na : fmt(res.rel_error_max);
+    row["growth_max"] = fmt(res.growth_max), row["blew_up"] = res.blew_up ? "yes" : "no";
+    row["blowup_step"] = res.blew_up ? fmt(static_cast<long long>(res.blowup_step)) : na;
+    row["growth"] = res.blew_up ? fmt(res.growth) : na;
+    row["amplification"] = res.blew_up ? fmt(res.amplification) : na;
+    row["steps_done"] = fmt(static_cast<long long>(res.steps_done));
+    row["cg_mean_iterations"] = fmt(res.mean_cg_iterations);
+    row["max_rel_residual"] = fmt(res.max_rel_residual);
+    row["s_per_step"] = fmt(res.seconds_per_step), row["seconds"] = fmt(res.seconds);
+    run_.add(t.reading, row);
+    const std::string head = line_printf("%s%s%s: %-28s theta=%-3g dx=2^-%d h=%.4f K=%ld ", ts_->table.c_str(),
+                                         readings_.size() > 1 ? " " : "",
+                                         readings_.size() > 1 ? r.name().c_str() : "", wname.c_str(), t.theta, k,
+                                         h, res.K);
+    run_.unit_done(0, head + (res.blew_up
+        ? line_printf("BLOW-UP at step %ld: ||U||/||U0|| = %.3g (x%.3g in the last step)  %.2f s",
+                      res.blowup_step, res.growth, res.amplification, res.seconds)
+        : (res.subspace > 0
+        ? line_printf("err=%.4e Krylov m=%d  %.0f products  %.2f s", res.rel_error, res.subspace,
+                      res.products, res.seconds)
+        : line_printf("err=%.4e CG %.1f it/step  %.3g s/step  %.2f s", res.rel_error,
+                      res.mean_cg_iterations, res.seconds_per_step, res.seconds)) +
+          // Not stopped is not "stable": a series that grew is said to have grown.
+          (res.growth_max > 2 ? line_printf("  (||U||/||U0|| grew to %.3g: run to T, no guard)", res.growth_max)
+                              : std::string())));
+    if (caches_[t.reading]->writes() && !rates_input_.empty())
+      write_rates_input(*caches_[t.reading], reading_path(rates_input_, r));
+  }
+
+  // The run's end: every row gathered and written; the rates input of each reading.
+  int finish() {
+    if (!run_.finish()) return 0;  // verify/recheck: nothing more is written
+    if (!rates_input_.empty())
+      for (std::size_t r = 0; r < readings_.size(); ++r) write_rates_input(*caches_[r], reading_path(rates_input_, readings_[r]));
+    return 0;
+  }
+
+  template <class List, class V>
+  static bool chosen(const List& list, const V& v) {
+    return std::find(list.begin(), list.end(), v) != list.end();
+  }
+};
+
+int body(int argc, char** argv) {
+  HeatTables program;
+  return program.run(argc, argv);
 }
 
 }  // namespace
