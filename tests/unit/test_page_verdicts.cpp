@@ -119,7 +119,7 @@ TEST_CASE("page verdicts: the data rules", "[page_verdicts]") {
   };
   CHECK(v("cor71") == "published value wrong | 2 of 3 printed coefficients hold");
   CHECK(v("count") == "reproduced | N = 1521 at Δx = 2⁻⁵ (printed: 1521)");
-  CHECK(v("fig3") == "reproduced | r_N = 0.1414 (uniform) against 0.246 (non-uniform), same N");
+  CHECK(v("fig3") == "reproduced | covering radius 0.1414 (uniform) against 0.246 (non-uniform), same N");
   CHECK(v("bounds") == "reproduced | bound below the measured error in 0 of 15 cases (smallest bound/error 3.78)");
   CHECK(v("weights cubic_bspline,quadratic_spike") ==
         "published value wrong | norm as printed: cubic bspline 1.381; norm of the plotted (corrected) weights: "

@@ -147,7 +147,7 @@ PageVerdict data_rule_verdict(const std::string& rule, const PageDataReader& dat
     if (!rn.count("uniform")) return kNotYet;
     const double u = rn["uniform"], nu = rn.count("non-uniform") ? rn["non-uniform"] : 0;
     return {u < nu ? "reproduced" : "not reproduced",
-            format_text("r_N = %.4g (uniform) against %.4g (non-uniform), same N", u, nu)};
+            format_text("covering radius %.4g (uniform) against %.4g (non-uniform), same N", u, nu)};
   }
   if (kind == "count") {
     const TsvTable t = load("core_voronoi.tsv");
