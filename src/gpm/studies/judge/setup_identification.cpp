@@ -9,6 +9,7 @@
 
 #include "gpm/error.hpp"
 #include "gpm/operators/norms.hpp"
+#include "gpm/studies/judge/verdicts.hpp"  // kSeedBandDecides
 
 namespace gpm {
 
@@ -45,6 +46,41 @@ double fingerprint_rate(const TsvTable& t, const std::pair<std::string, std::str
   return two_level_rate(h[0], e[0], h[1], e[1]);
 }
 
+// The mean over the weights of |ln(rate/published)| of one data file (inf: a rate missing or
+// of the other sign); `rates` gets each weight's rate (NaN where none).
+double fingerprint_distance(const TsvTable& data, const std::pair<std::string, std::string>& fp,
+                            const std::map<std::string, double>& published, int l1, int l2,
+                            std::vector<double>* rates = nullptr) {
+  double sum = 0;
+  for (auto& [w, p] : published) {
+    const double rate = data.rows.empty() ? NAN : fingerprint_rate(data, fp, w, l1, l2);
+    if (rates) rates->push_back(rate);
+    sum += (rate / p > 0) ? std::fabs(std::log(rate / p)) : kInf;
+  }
+  return sum / static_cast<double>(published.size());
+}
+
+// The distances of a reading over its stored jitter realizations: seed 1 (its main file) and
+// every store file of the study whose slice is "<reading>_seed<N>" and is in the store.
+struct DistanceBand {
+  int seeds = 0;
+  double lo = kInf, hi = -kInf;
+  void add(double d) { ++seeds, lo = std::min(lo, d), hi = std::max(hi, d); }
+};
+DistanceBand distance_band(const std::string& store, const RegisteredStudy& study, const std::string& reading,
+                           double seed1, const std::pair<std::string, std::string>& fp,
+                           const std::map<std::string, double>& published, int l1, int l2) {
+  DistanceBand b;
+  b.add(seed1);
+  for (const StoreFile& f : study.store_files) {
+    if (f.slice.rfind(reading + "_seed", 0) != 0 || f.slice.size() == reading.size() + 5) continue;
+    if (f.slice.find_first_not_of("0123456789", reading.size() + 5) != std::string::npos) continue;
+    const std::string path = store + "/" + f.name + ".tsv";
+    if (std::filesystem::exists(path)) b.add(fingerprint_distance(TsvTable::load(path), fp, published, l1, l2));
+  }
+  return b;
+}
+
 }  // namespace
 
 SetupIdentification identify_setup(const std::string& store, const RegisteredStudy& study, const TsvTable& pub) {
@@ -77,23 +113,30 @@ SetupIdentification identify_setup(const std::string& store, const RegisteredStu
   t.columns = {"reading", "h_rule", "volumes", "dt_rule", "file"};
   for (const auto& entry : published) t.columns.push_back("rate_" + entry.first);
   t.columns.push_back("distance");
+  // The uncertainty of a distance: the same distance for every stored jitter realization of
+  // the reading (seed 1 and its seed files), as a band.  It does not enter the rule (written
+  // before it was asked for); it says whether each decision would stand for any realization.
+  for (const char* c : {"seeds", "distance_lo", "distance_hi"}) t.columns.push_back(c);
+  t.set("distance_band", "distance over the stored jitter realizations of the reading (seed 1 and its seed files): "
+                         "lowest, highest, how many");
   std::map<std::string, double> distance;
+  std::map<std::string, DistanceBand> band;
   for (const Reading& r : readings) {
     const std::string file = study.store_file_of(r.name()).name + ".tsv";
     const std::string path = store + "/" + file;
     std::vector<std::string> row = {r.name(), detail(r, "h_rule"), detail(r, "volumes"), detail(r, "dt_rule"), file};
-    double sum = 0;
     const bool present = std::filesystem::exists(path);
-    const TsvTable data = present ? TsvTable::load(path) : TsvTable{};
-    for (auto& [w, p] : published) {
-      const double rate = present ? fingerprint_rate(data, fp, w, l1, l2) : NAN;
+    std::vector<double> rates;
+    distance[r.name()] = fingerprint_distance(present ? TsvTable::load(path) : TsvTable{}, fp, published, l1, l2, &rates);
+    for (double rate : rates) {
       row.push_back(std::isnan(rate) ? "NA" : fmt(rate));
       if (std::isnan(rate) && (id.incomplete.empty() || id.incomplete.back() != r.name()))
         id.incomplete.push_back(r.name());
-      sum += (rate / p > 0) ? std::fabs(std::log(rate / p)) : kInf;
     }
-    distance[r.name()] = sum / static_cast<double>(published.size());
     row.push_back(fmt(distance[r.name()]));
+    const DistanceBand& b = band[r.name()] =
+        distance_band(store, study, r.name(), distance[r.name()], fp, published, l1, l2);
+    row.push_back(fmt(b.seeds)), row.push_back(fmt(b.lo)), row.push_back(fmt(b.hi));
     t.add_row(row);
   }
 
@@ -126,8 +169,41 @@ SetupIdentification identify_setup(const std::string& store, const RegisteredStu
         why = b;
       }
     }
+    // The decision's uncertainty, between the closest reading of the chosen value and the
+    // closest of each other value: firm when the chosen one's highest distance is below half
+    // the other's lowest, with five realizations of each (kSeedBandDecides, as a seed band of
+    // a rate needs); "suggested" when not; with fewer realizations, not assessed.
+    auto closest = [&](const std::string& v) {
+      const Reading* c = nullptr;
+      for (const Reading& r : left)
+        if (detail(r, name) == v && (!c || distance[r.name()] < distance[c->name()])) c = &r;
+      return c;
+    };
+    std::string robust = "yes";
+    for (auto& o : values) {
+      if (o == chosen) continue;
+      const Reading *a = closest(chosen), *b = closest(o);
+      if (!a || !b) continue;
+      const DistanceBand &ba = band[a->name()], &bb = band[b->name()];
+      char txt[200];
+      if (ba.seeds < kSeedBandDecides || bb.seeds < kSeedBandDecides) {
+        std::snprintf(txt, sizeof txt, "not assessed: %d realizations of %s, %d of %s (%d needed)", ba.seeds,
+                      a->name().c_str(), bb.seeds, b->name().c_str(), kSeedBandDecides);
+        robust = txt;
+      } else if (!(2 * ba.hi < bb.lo)) {
+        std::snprintf(txt, sizeof txt, "suggested: %s's distances %.3g-%.3g and %s's %.3g-%.3g are not a factor of two apart",
+                      a->name().c_str(), ba.lo, ba.hi, b->name().c_str(), bb.lo, bb.hi);
+        if (robust == "yes" || robust.rfind("not assessed", 0) == 0) robust = txt;
+      } else if (robust == "yes") {
+        std::snprintf(txt, sizeof txt, "firm: %s's distances %.3g-%.3g, %s's %.3g-%.3g", a->name().c_str(), ba.lo,
+                      ba.hi, b->name().c_str(), bb.lo, bb.hi);
+        robust = txt;
+      }
+    }
+    if (robust == "yes") robust = "firm";
     std::erase_if(left, [&](const Reading& r) { return detail(r, name) != chosen; });
     t.set("decided_" + name, chosen + " (" + why + ")");
+    t.set("robust_" + name, robust);
     id.decisions += (id.decisions.empty() ? "" : ", ") + name + " = " + chosen;
   }
   id.identified = left.front();
