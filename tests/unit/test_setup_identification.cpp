@@ -81,6 +81,7 @@ TEST_CASE("set-up identification: details one at a time, with their uncertainty"
     seeds("h15_cell_exact", {1.0035, 1.0040, 1.0038, 1.0042});
     seeds("h15_exact", {1.011, 1.012, 1.0125, 1.013});
     const SetupIdentification id = identify_setup(tmp.dir.string(), study, published());
+    REQUIRE(id.identified);
     CHECK(id.identified->name() == "h15_cell_exact");
     CHECK(id.table.get("robust_volumes").value().rfind("firm: h15_cell_exact's distances", 0) == 0);
     CHECK(id.table.text(7, "seeds") == "5");
@@ -91,6 +92,7 @@ TEST_CASE("set-up identification: details one at a time, with their uncertainty"
     seeds("h15_cell_exact", {1.0035, 1.0040, 1.0038, 1.0042});
     seeds("h15_exact", {1.011, 1.006, 1.0125, 1.013});
     const SetupIdentification id = identify_setup(tmp.dir.string(), study, published());
+    REQUIRE(id.identified);
     CHECK(id.identified->name() == "h15_cell_exact");
     CHECK(id.table.get("robust_volumes").value().rfind("suggested: ", 0) == 0);
   }
