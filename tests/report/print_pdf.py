@@ -14,6 +14,7 @@ usage: print_pdf.py REPORT.html OUT.pdf
 """
 import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -25,11 +26,8 @@ PASSES = 6   # prints at most; each pass can only let more chapters follow, so i
 
 
 def chromium():
-    for name in ("chromium", "chromium-browser"):
-        for d in os.environ.get("PATH", "").split(os.pathsep):
-            if os.access(os.path.join(d, name), os.X_OK):
-                return os.path.join(d, name)
-    sys.exit("print_pdf: chromium not installed (make deps installs it)")
+    found = shutil.which("chromium") or shutil.which("chromium-browser")
+    return found or sys.exit("print_pdf: chromium not installed (make deps installs it)")
 
 
 def print_to(chrome, html, pdf):
