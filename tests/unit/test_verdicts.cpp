@@ -1,6 +1,6 @@
 // The verdicts of the store's rates (src/gpm/studies/judge/verdicts.hpp) on small tables in memory:
 // the seed band deciding only with 5 narrow realizations, a heat series unstable at both rate
-// levels (non-convergence reproduced where the document prints an unstable run, undefined
+// levels (the sign only where the document prints an unstable run with another rate, undefined
 // where no finite rate is left), checked reasons, and the two boards with a fingerprint row.
 #include <catch2/catch.hpp>
 
@@ -62,7 +62,8 @@ TEST_CASE("verdicts: one name and one score column per verdict", "[unit][verdict
   CHECK(verdict_name(Verdict::in_seed_band) == "inside seed band");
   CHECK(verdict_name(Verdict::non_convergence) == "non-convergence reproduced");
   CHECK(verdict_column(Verdict::explained_ours) == "explained_ours");
-  REQUIRE(scored_verdicts().size() == 10);
+  REQUIRE(scored_verdicts().size() == 11);
+  CHECK(verdict_column(Verdict::sign_only) == "sign_only");
   CHECK(scored_verdicts().front() == Verdict::agrees);
   CHECK(scored_verdicts().back() == Verdict::indeterminate);
   CHECK(slice_setup("imoto_table1", "seed4") == kJitterSetup);
@@ -166,9 +167,11 @@ TEST_CASE("verdicts: a heat series unstable at both rate levels", "[unit][verdic
   CHECK(blown.reason.rfind("no finite rate: unstable at both rate levels (2^-8: blew up", 0) == 0);
   const JudgedRate& growing = row(j, "thesis_table4_6", "h10", "cubic 0");
   CHECK(growing.rate.status == "differs");
-  CHECK(growing.verdict == Verdict::non_convergence);
+  // -2 against -314: both blow up, but only the sign of the rate agrees.
+  CHECK(growing.verdict == Verdict::sign_only);
   CHECK(growing.reason ==
-        "both unstable: unstable at both rate levels (2^-8: error 2 after 16 steps; 2^-9: error 8 after 22 steps), rate < 0");
+        "both unstable (unstable at both rate levels (2^-8: error 2 after 16 steps; 2^-9: error 8 after 22 steps)), "
+        "rate < 0 on both sides: sign only");
   CHECK(row(j, "thesis_table4_6", "h10", "quartic_polynomial 1").verdict == Verdict::agrees);
   // Undecided identification: the identified board is the printed one, without fingerprints.
   for (auto& r : j) CHECK((r.printed && r.identified && r.verdict_identified == r.verdict));

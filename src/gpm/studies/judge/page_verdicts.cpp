@@ -44,7 +44,7 @@ std::string all_hold(long long holds, long long n) { return holds == n ? "reprod
 const std::vector<std::pair<std::string, std::string>>& verdict_words() {
   static const std::vector<std::pair<std::string, std::string>> w = {
       {"agrees", "agree"},           {"non_convergence", "non-convergence"},
-      {"in_seed_band", "in seed band"}, {"fingerprint", "fingerprint"},
+      {"sign_only", "unstable, sign only"},  {"in_seed_band", "in seed band"}, {"fingerprint", "fingerprint"},
       {"checked_reason", "checked reason"}, {"explained_ours", "ours explained"},
       {"unexplained", "unexplained"}, {"indeterminate", "indeterminate"},
       {"undefined", "undefined"},     {"not_computed", "not computed"}};

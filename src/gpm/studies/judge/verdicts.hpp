@@ -65,6 +65,7 @@ namespace gpm {
 enum class Verdict {
   agrees,
   non_convergence,
+  sign_only,
   in_seed_band,
   checked_reason,
   explained_ours,
