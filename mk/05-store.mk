@@ -3,7 +3,7 @@
 # rows, and the verdict counts.  A fresh clone's `make report` shows them at once.
 STORE_FILES := $(wildcard $(STORE)/*.tsv)
 DATAFILES += $(DATA)/store_rates.tsv $(DATA)/store_summary.tsv $(DATA)/store_score.tsv \
-             $(DATA)/checked_reasons.tsv $(DATA)/setup_identification.tsv
+             $(DATA)/checked_reasons.tsv $(DATA)/setup_identification.tsv $(DATA)/open_causes.tsv
 
 # Reasons for differing rates, each with the diagnostic that checks it against the stored data,
 # and the same reasons one row per mechanism with the rows it covers (the chapter's short
@@ -22,8 +22,8 @@ $(DATA)/store_rates.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published
 	@mkdir -p $(DATA)
 	$(BUILD)/gpm store-rates --store $(STORE) --published tables/published --checked $(DATA)/checked_reasons.tsv \
 	  --out $@ --summary $(DATA)/store_summary.tsv --score $(DATA)/store_score.tsv \
-	  --ident $(DATA)/setup_identification.tsv
-$(DATA)/store_summary.tsv $(DATA)/store_score.tsv $(DATA)/setup_identification.tsv: $(DATA)/store_rates.tsv ;
+	  --ident $(DATA)/setup_identification.tsv --causes $(DATA)/open_causes.tsv
+$(DATA)/store_summary.tsv $(DATA)/store_score.tsv $(DATA)/setup_identification.tsv $(DATA)/open_causes.tsv: $(DATA)/store_rates.tsv ;
 
 # The heat rates at every pair of stored levels and whether they approach the theory's (the
 # thesis' conjecture): gpm rate-levels, src/gpm/studies/judge/rate_levels.hpp.

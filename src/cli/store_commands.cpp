@@ -20,6 +20,7 @@
 #include "gpm/studies/define/registry.hpp"
 #include "gpm/studies/judge/setup_identification.hpp"
 #include "gpm/studies/run/store.hpp"
+#include "gpm/studies/judge/open_causes.hpp"
 #include "gpm/studies/judge/verdicts.hpp"
 
 namespace gpm::cli {
@@ -258,7 +259,9 @@ int cmd_store_rates(int argc, char** argv) {
       .output("out", "", "the rates with their verdicts and boards (required)")
       .output("summary", "", "where the stored rows come from, file by file")
       .output("score", "", "the verdict counts per table and slice, and each board's totals")
-      .output("ident", "", "setup_identification's table: the fingerprint evidence of Chapter 4's reading");
+      .output("ident", "", "setup_identification's table: the fingerprint evidence of Chapter 4's reading")
+      .output("causes", "", "the open rates of the identified board grouped by what the store says of them "
+                            "(src/gpm/studies/judge/open_causes.hpp)");
   a.parse(argc, argv, 2);
   const std::string out = a.required("out"), store = a.str("store"), pub = a.str("published");
   require_directories({{"store", store}, {"published", pub}});
@@ -296,6 +299,15 @@ int cmd_store_rates(int argc, char** argv) {
         with_header(score_table(judged, pub), "gpm store-rates (score)",
                     {{"boards", "printed: every set-up detail as the text prints it; identified: the readings of "
                                 "paper/04-setup-rule.md (fingerprint: a published rate that identified the reading)"}}));
+  if (!a.str("causes").empty())
+    outputs.emplace_back(
+        a.str("causes"),
+        with_header(open_causes(judged, kRateTolerance), "gpm store-rates (open causes)",
+                    {{"open", "identified board: differs, unexplained; both unstable, rate differs"},
+                     {"causes", "another reading gives it (a stored reading other than the identified one within the "
+                                "tolerance of the published rate); robust gap (at least " +
+                                    std::to_string(kSeedBandDecides) +
+                                    " realizations, all on one side); blow-up rate (sign only); one realization"}}));
   if (!a.str("ident").empty()) {
     ident.table.set("program", "gpm store-rates (setup_identification)");
     add_provenance(ident.table);

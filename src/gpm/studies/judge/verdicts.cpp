@@ -338,7 +338,10 @@ std::vector<JudgedRate> judge_rates(const std::vector<StoreRate>& rates, const U
     j.rate = r;
     const auto b = bands.find(band_key(r));
     const SeedBand* band = b != bands.end() && b->second.seeds >= 2 ? &b->second : nullptr;
-    if (band) j.seed_band = format("%.2f to %.2f (%d seeds)", band->lo, band->hi, band->seeds);
+    if (band) {
+      j.seed_band = format("%.2f to %.2f (%d seeds)", band->lo, band->hi, band->seeds);
+      j.band_seeds = band->seeds, j.band_lo = band->lo, j.band_hi = band->hi;
+    }
     if (r.setup == kDocumentSetup)
       std::tie(j.verdict, j.reason) = verdict_of(r, band, unstable, checked, tolerance);
     j.printed = on_board(printed, r);

@@ -109,6 +109,8 @@ inline const std::string kJitterSetup = "another jitter realization";
 struct JudgedRate {
   StoreRate rate;
   std::string seed_band;  // "1.45 to 1.91 (5 seeds)", empty under two realizations
+  int band_seeds = 0;     // the same band as numbers (0 seeds: none)
+  double band_lo = 0, band_hi = 0;
   Verdict verdict = Verdict::not_counted;
   std::string reason;
   bool printed = false, identified = false;  // on the printed / identified board

@@ -1,0 +1,90 @@
+#include "gpm/studies/judge/open_causes.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+
+namespace gpm {
+
+namespace {
+
+// A rate cell as a number; false for NA, empty, nan or inf.
+bool number(const std::string& s, double& v) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  v = std::strtod(s.c_str(), &end);
+  return end && *end == '\0' && std::isfinite(v);
+}
+
+std::string two(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2f", v);
+  return b;
+}
+
+// A stored reading of the same published rate that is not a jitter realization of another
+// reading (those make the band) and not the open rate's own slice.
+bool other_reading(const JudgedRate& j, const JudgedRate& open) {
+  return j.rate.table == open.rate.table && j.rate.key == open.rate.key && j.rate.slice != open.rate.slice &&
+         j.rate.setup != kJitterSetup && j.rate.slice.find("seed") == std::string::npos;
+}
+
+}  // namespace
+
+bool open_on_identified_board(const JudgedRate& j) {
+  return j.identified && (j.verdict_identified == Verdict::unexplained || j.verdict_identified == Verdict::sign_only);
+}
+
+OpenCause open_cause(const JudgedRate& open, const std::vector<JudgedRate>& judged, double tolerance) {
+  double published = 0, ours = 0;
+  const bool has_published = number(open.rate.published, published);
+  std::string evidence = "published " + open.rate.published;
+  if (number(open.rate.reproduced, ours)) evidence += ", ours " + two(ours);
+  if (open.band_seeds >= 2)
+    evidence += ", band " + two(open.band_lo) + " to " + two(open.band_hi) + " (" + std::to_string(open.band_seeds) +
+                " seeds)";
+
+  // The other readings: which give the published rate, and which comes nearest.
+  std::string agreeing, nearest;
+  double nearest_gap = INFINITY;
+  for (const JudgedRate& j : judged) {
+    double rate;
+    if (!has_published || !other_reading(j, open) || !number(j.rate.reproduced, rate)) continue;
+    const double gap = std::fabs(rate - published);
+    if (gap <= tolerance) agreeing += (agreeing.empty() ? "" : ", ") + j.rate.slice;
+    if (gap < nearest_gap) nearest_gap = gap, nearest = j.rate.slice + " " + two(rate);
+  }
+  if (!nearest.empty()) evidence += "; nearest other reading " + nearest;
+
+  if (open.verdict_identified == Verdict::sign_only) return {"blow-up rate: both unstable, sign only", evidence};
+  if (!agreeing.empty()) return {"another reading gives it: " + agreeing, evidence};
+  if (has_published && open.band_seeds >= kSeedBandDecides && (published < open.band_lo || published > open.band_hi))
+    return {std::string("robust gap: every realization ") + (published < open.band_lo ? "above" : "below") +
+                " the published rate",
+            evidence};
+  return {"one realization: too few seeds to tell", evidence};
+}
+
+TsvTable open_causes(const std::vector<JudgedRate>& judged, double tolerance) {
+  TsvTable t;
+  t.columns = {"table", "cause", "rates", "keys", "evidence"};
+  std::map<std::pair<std::string, std::string>, std::size_t> row_of;
+  for (const JudgedRate& j : judged) {
+    if (!open_on_identified_board(j)) continue;
+    const OpenCause c = open_cause(j, judged, tolerance);
+    const auto place = std::make_pair(j.rate.table, c.cause);
+    auto it = row_of.find(place);
+    if (it == row_of.end()) {
+      it = row_of.emplace(place, t.rows.size()).first;
+      t.rows.push_back({j.rate.table, c.cause, "0", "", ""});
+    }
+    auto& row = t.rows[it->second];
+    row[2] = std::to_string(std::stoi(row[2]) + 1);
+    row[3] += (row[3].empty() ? "" : ", ") + j.rate.key;
+    row[4] += (row[4].empty() ? "" : "; ") + j.rate.key + ": " + c.evidence;
+  }
+  return t;
+}
+
+}  // namespace gpm
