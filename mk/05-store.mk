@@ -38,6 +38,12 @@ $(FIGOUT)/thesis_rate_levels.svg: figures/thesis_rate_levels.gp figures/style.gp
 	@mkdir -p $(FIGOUT)
 	gnuplot -e "datadir='$(DATA)'; out='$@.tmp'" $< && mv $@.tmp $@
 
+# The set-up fingerprint drawn: each reading's distance from Table 4.6's theta = 0 rates.
+FIGFILES += $(FIGOUT)/setup_fingerprint.svg
+$(FIGOUT)/setup_fingerprint.svg: figures/setup_fingerprint.gp figures/style.gp $(DATA)/setup_identification.tsv
+	@mkdir -p $(FIGOUT)
+	gnuplot -e "datadir='$(DATA)'; out='$@.tmp'" $< && mv $@.tmp $@
+
 # The documents' open set-up questions, with the evidence the stored runs give (every number
 # read from the store or computed by the library: gpm decisions, src/gpm/studies/judge/decisions.hpp).
 DATAFILES += $(DATA)/decisions.tsv
