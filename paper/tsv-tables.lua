@@ -338,7 +338,34 @@ end
 -- hyphen or a slash ("other-|levels", "1.5e-|16"), so a piece holding one is kept on one
 -- line (class nobr, paper/style.css).  A long identifier (thesis_table4_5_h15) may wrap after
 -- an underscore, a long formula after a plus: a zero-width space marks those points.
+-- The plain-text math of data files ("V_i = rho_i/m_i", "lambda0", "sin 2pi(x+y)", "eps_grad")
+-- as the reader should see it: Greek names as letters, a one-letter subscript as a subscript
+-- character, dx and dt as Δx and Δt.  Whole words only (never inside "piecewise" or
+-- "thesis_table4_4"), and never in a command line or a file name, which must stay typable.
+local GREEK = {alpha = "α", beta = "β", gamma = "γ", delta = "δ", eps = "ε", epsilon = "ε",
+               theta = "θ", kappa = "κ", lambda = "λ", mu = "μ", nu = "ν", pi = "π", rho = "ρ",
+               sigma = "σ", tau = "τ", phi = "φ", omega = "ω", Omega = "Ω", Delta = "Δ"}
+local SUBSCRIPT = {i = "ᵢ", j = "ⱼ", k = "ₖ", m = "ₘ", n = "ₙ", h = "ₕ", x = "ₓ",
+                   ["0"] = "₀", ["1"] = "₁", ["2"] = "₂", ["3"] = "₃"}
+local function ascii_math(v)
+  if v:find("--", 1, true) or v:find("%.%a%a%a?$") or v:find("%.%a%a%a?[%s,;)]") then return v end
+  v = v:gsub("%f[%a]eps_grad%f[%A]", "ε∇")
+  v = v:gsub("%f[%a](%a+)(%d*)_?(%w?)%f[%W]", function(word, digits, sub)
+    local g = GREEK[word]
+    if not g then return nil end
+    if sub ~= "" and digits == "" then
+      return g .. (SUBSCRIPT[sub] or "_" .. sub)
+    end
+    if sub ~= "" then return nil end
+    return g .. digits
+  end)
+  v = v:gsub("%f[%w](%a)_(%w)%f[%W]", function(x, sub) return SUBSCRIPT[sub] and x .. SUBSCRIPT[sub] or nil end)
+  v = v:gsub("%f[%a]d([xt])%f[%A]", "Δ%1")
+  return v
+end
+
 local function cell_inlines(v)
+  v = ascii_math(v)
   -- The author's name as a word (a program's label "imoto §5 (Π1)"), not inside a file name,
   -- an identifier or a command line, is set capitalized.
   if not v:find(" --", 1, true) then v = v:gsub("%f[%w_/%-]imoto%f[^%w_%-]", "Imoto") end

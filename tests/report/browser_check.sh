@@ -10,6 +10,8 @@
 #   * text in a figure that prints below 8 pt (the base size of each SVG <text>, scaled by
 #     the width the figure takes on the page; 1 px = 0.75 pt at the A4 printable width),
 #   * a table cell in which a word or a number wraps onto a second line,
+#   * plain-text math in a table cell (V_i, rho, lambda0, 2pi) outside code, a command line or
+#     a file name,
 #   * a raw caret exponent (2^-8, ^{...}) or a bare nan in the text outside code, where the
 #     reader should see a superscript, or a word saying what failed.
 # The checks run as a script injected into a copy of the page; Chromium's --dump-dom brings
@@ -113,6 +115,19 @@ window.addEventListener('load', function () {
       if (raw) out.push('RAW TEXT "' + raw[0] + '": ' + flat(node.data).slice(0, 60));
     });
   }
+  // Plain-text math in a table cell ("V_i = rho_i/m_i", "lambda0", "2pi"): the tables' filter
+  // (paper/tsv-tables.lua, ascii_math) sets it as symbols; a command line or a file name stays.
+  document.querySelectorAll('td, th').forEach(function (cell) {
+    if (cell.querySelector('code')) return;
+    var t = cell.textContent.replace(/\u200B/g, '');
+    if (/--|\.[a-z]{2,3}\b/.test(t)) return;
+    var raw = t.match(/(^|[^A-Za-z])(rho|lambda|eps|epsilon|theta|kappa|delta|sigma|mu|Omega|\d*pi)([^A-Za-z]|$)/) ||
+              t.match(/(^|[^\w])[A-Za-z]_[a-z0-9]([^\w]|$)/);
+    if (raw) {
+      var tb = cell.closest('table'), c = tb && tb.querySelector('caption');
+      out.push('RAW MATH "' + raw[0].trim() + '" in a table: ' + flat(c ? c.textContent : '').slice(0, 60));
+    }
+  });
   document.querySelectorAll('span.math').forEach(function (m) {
     if (!m.querySelector('math')) out.push('FORMULA not converted to MathML: ' + flat(m.textContent).slice(0, 60));
   });
