@@ -255,8 +255,12 @@ int cmd_store_rates(int argc, char** argv) {
          "scoreboards (src/gpm/studies/judge/verdicts.hpp defines every verdict); no study is run.");
   a.opt("store", "results/paper", "the result store")
       .opt("published", "tables/published", "the published values (imoto_table1.tsv, thesis_table4_N_long.tsv)")
-      .opt("checked", "", "checked reasons for differing rates (gpm checked-reasons --out); default: none")
+      .opt("checked", "", "checked reasons for differing rates from a file (gpm checked-reasons --out); default: "
+                          "computed here from the store (checked_reasons.hpp)")
+      .flag("no-reasons", "judge without any checked reason (every differing rate unexplained)")
       .output("out", "", "the rates with their verdicts and boards (required)")
+      .output("reasons", "", "the checked reasons computed here, one row per checked rate (gpm checked-reasons --out)")
+      .output("reasons-by-mechanism", "", "the same reasons, one row per mechanism")
       .output("summary", "", "where the stored rows come from, file by file")
       .output("score", "", "the verdict counts per table and slice, and each board's totals")
       .output("ident", "", "setup_identification's table: the fingerprint evidence of Chapter 4's reading")
@@ -265,8 +269,16 @@ int cmd_store_rates(int argc, char** argv) {
   a.parse(argc, argv, 2);
   const std::string out = a.required("out"), store = a.str("store"), pub = a.str("published");
   require_directories({{"store", store}, {"published", pub}});
-  const CheckedReasons checked =
-      a.str("checked").empty() ? CheckedReasons{} : passed_reasons(TsvTable::load(a.str("checked")));
+  // The checked reasons: from a file when one is named, else computed from the same store in
+  // this pass (one read of the store judges every rate; the reasons' files are outputs).
+  if (a.has("no-reasons") && !a.str("checked").empty())
+    throw InputError("--no-reasons and --checked " + a.str("checked") + ": choose one");
+  const bool computed = a.str("checked").empty() && !a.has("no-reasons");
+  if (!computed && (!a.str("reasons").empty() || !a.str("reasons-by-mechanism").empty()))
+    throw InputError("--reasons and --reasons-by-mechanism write the reasons computed here: not with --checked or --no-reasons");
+  const TsvTable reasons = computed ? checked_reasons(store, pub, kRateTolerance)
+                           : a.has("no-reasons") ? TsvTable{} : TsvTable::load(a.str("checked"));
+  const CheckedReasons checked = a.has("no-reasons") ? CheckedReasons{} : passed_reasons(reasons);
 
   // The reading of Chapter 4 that Table 4.6's theta = 0 rates identify (paper/04-setup-rule.md).
   const RegisteredStudy& fp = fingerprint_study(study_registry());
@@ -283,7 +295,9 @@ int cmd_store_rates(int argc, char** argv) {
   outputs.emplace_back(
       out, with_header(rates_table(judged), "gpm store-rates",
                        {{"store", store},
-                        {"checked_reasons", a.str("checked").empty() ? "none (no reason accepted)" : a.str("checked")},
+                        {"checked_reasons", a.has("no-reasons") ? "none (no reason accepted)"
+                                            : computed ? "computed from the store in this pass (checked_reasons.hpp)"
+                                                       : a.str("checked")},
                         {"note", "rates at the documents' levels from the committed paper-profile rows; status from "
                                  "rate_table (tolerance " + fmt(kRateTolerance) + "); verdict as listed in "
                                  "src/gpm/studies/judge/verdicts.hpp"}}));
@@ -299,6 +313,19 @@ int cmd_store_rates(int argc, char** argv) {
         with_header(score_table(judged, pub), "gpm store-rates (score)",
                     {{"boards", "printed: every set-up detail as the text prints it; identified: the readings of "
                                 "paper/04-setup-rule.md (fingerprint: a published rate that identified the reading)"}}));
+  const std::pair<std::string, std::string> reasons_note = {
+      "note", "rules and thresholds in src/gpm/studies/judge/checked_reasons.hpp; published values from " + pub};
+  if (!a.str("reasons").empty())
+    outputs.emplace_back(a.str("reasons"),
+                         headed(reasons, verdicts_header("gpm store-rates (checked reasons)", store, false,
+                                                         {{"store", store},
+                                                          {"tolerance", fmt(kRateTolerance) + " (rates)"},
+                                                          reasons_note})));
+  if (!a.str("reasons-by-mechanism").empty())
+    outputs.emplace_back(a.str("reasons-by-mechanism"),
+                         headed(reasons_by_mechanism(reasons),
+                                verdicts_header("gpm store-rates (checked reasons by mechanism)", store, false,
+                                                {{"sources", a.str("reasons")}, reasons_note})));
   if (!a.str("causes").empty())
     outputs.emplace_back(
         a.str("causes"),

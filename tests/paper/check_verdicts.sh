@@ -3,7 +3,7 @@
 # (results/paper) against its published value, on both scoreboards of gpm store-rates (the
 # reading as printed and the one the documents' fingerprint identifies; each published
 # rate once per board, counted from tables/published).  The verdicts are computed from the stored rows
-# exactly as the report computes them (gpm checked-reasons, gpm store-rates):
+# exactly as the report computes them (gpm store-rates, one pass with its checked reasons):
 # agrees, non-convergence reproduced, inside the seed band, or differs with a checked reason.
 # A rate that differs without a checked reason (or an unstable run whose rate agrees in sign
 # only) must be listed, with what is open about it, in
@@ -19,8 +19,7 @@ build=$(cd "$1" && pwd)
 cd "$2"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-"$build/gpm" checked-reasons --store results/paper --out "$tmp/checked.tsv"
-"$build/gpm" store-rates --store results/paper --checked "$tmp/checked.tsv" --out "$tmp/rates.tsv" \
+"$build/gpm" store-rates --store results/paper --out "$tmp/rates.tsv" \
   --score "$tmp/score.tsv"
 # Both boards must cover every published rate once.  How many there are, from the published
 # files: a rate file is one with a `# rate_levels` line; where the document's printed form lies

@@ -5,7 +5,7 @@
 #                 names only the verdicts that occur on each board, and a figure drawn from a
 #                 table that has no rates row is refused (exit 2, one line).
 # (The same rules on tables in memory: tests/unit/test_page_verdicts.cpp; the reasons collapsed
-# per mechanism are gpm checked-reasons': tests/unit/test_checked_reasons.cpp.)
+# per mechanism are gpm store-rates' (checked_reasons.hpp): tests/unit/test_checked_reasons.cpp.)
 # usage: report_tables_test.sh SOURCE_DIR BUILD_DIR
 . "$(dirname "$0")/fixture_env.sh"  # LC_ALL=C, src, fx, tmp
 gpm=${2:?usage: report_tables_test.sh SOURCE_DIR BUILD_DIR}/gpm
