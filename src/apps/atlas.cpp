@@ -107,183 +107,213 @@ std::string g3(double v) {
   return buf;
 }
 
-int body(int argc, char** argv) {
-  Args a("atlas",
-         "Accuracy against cost: join a study's errors with the wall times and pair counts\n"
-         "its own runs recorded; write the atlas and, per target error, the cheapest\n"
-         "configuration observed.");
-  a.opt("data", "", "comma-separated data files of one study (same columns)");
-  a.opt("study", "", "name of the study (goes into the header)");
-  a.opt("task", "", "comma-separated columns that define a task (operator, function); may be empty");
-  a.opt("config", "", "comma-separated configuration columns; meta:KEY reads a header value");
-  a.opt("level", "level", "level column");
-  a.opt("error", "rel_error", "error column");
-  a.opt("time", "time_s", "time column, or col+col to add columns (pass + Voronoi)");
-  a.opt("pairs", "", "pair-count column (empty: not recorded, written NA)");
-  a.opt("filter", "", "keep rows with col=value (comma-separated conditions, all must hold)");
-  a.opt("time-note", "", "what the time of a row measures (goes into the header)");
-  a.opt("pairs-note", "", "what the pair count of a row counts (goes into the header)");
-  a.opt("targets", "1e-2,1e-3,1e-4", "target relative errors of the reading");
-  a.output("out", "", "atlas TSV");
-  a.output("reading", "", "reading TSV (cheapest configuration per task and target)");
-  a.parse(argc, argv);
-  for (const char* req : {"data", "study", "config", "out", "reading"})
-    if (a.str(req).empty()) throw InputError(std::string("--") + req + " is required");
-  const auto t0 = std::chrono::steady_clock::now();
-  const auto files = a.list("data");
-  const auto task_f = fields(a.str("task").empty() ? std::vector<std::string>{} : a.list("task"));
-  const auto conf_f = fields(a.list("config"));
-  const auto time_cols = split(a.str("time"), '+');
-  const auto targets = a.nums("targets");
-  for (double t : targets)
-    if (!(t > 0)) throw InputError("--targets: every target must be > 0, got " + fmt(t));
-  std::vector<std::pair<std::string, std::string>> conds;
-  if (!a.str("filter").empty())
-    for (auto& c : a.list("filter")) {
-      const auto eq = c.find('=');
-      if (eq == std::string::npos) throw InputError("--filter: expected col=value, got '" + c + "'");
-      conds.emplace_back(c.substr(0, eq), c.substr(eq + 1));
-    }
-
-  // Read every row of every file; keep those that pass the filter and have a finite error.
-  std::vector<Point> pts;
-  TsvTable first;
-  std::vector<std::string> revs, walls;
-  std::size_t dropped = 0;
-  for (std::size_t fi = 0; fi < files.size(); ++fi) {
-    const auto& file = files[fi];
-    const TsvTable t = TsvTable::load(file);
-    if (fi == 0) first = t;
-    revs.push_back(t.get("git_revision").value_or("?"));
-    walls.push_back(t.get("wall_time_s").value_or("?"));
-    const int lc = t.require_column(a.str("level")), ec = t.require_column(a.str("error"));
-    std::vector<int> tc;
-    for (auto& c : time_cols) tc.push_back(t.require_column(c));
-    const int pc = a.str("pairs").empty() ? -1 : t.require_column(a.str("pairs"));
-    std::vector<int> fc;
-    for (auto& [c, v] : conds) fc.push_back(t.require_column(c));
-    for (std::size_t i = 0; i < t.rows.size(); ++i) {
-      const auto& r = t.rows[i];
-      bool keep = true;
-      for (std::size_t k = 0; k < conds.size(); ++k) keep = keep && r[fc[k]] == conds[k].second;
-      if (!keep) continue;
-      Point p;
-      for (auto& f : task_f) p.task_vals.push_back(value(t, r, f, file));
-      for (auto& f : conf_f) p.config_vals.push_back(value(t, r, f, file));
-      p.task = label(task_f, p.task_vals);
-      p.config = label(conf_f, p.config_vals);
-      p.level = r[lc];
-      p.err = number(t, i, ec);
-      p.time = 0;
-      for (int c : tc) p.time += number(t, i, c);
-      p.pairs = pc < 0 ? std::numeric_limits<double>::quiet_NaN() : number(t, i, pc);
-      if (!std::isfinite(p.err) || !std::isfinite(p.time)) {
-        ++dropped;
-        continue;
+// The program: options, then the rows of the study's files, then the two tables.
+class Atlas {
+ public:
+  Atlas(int argc, char** argv)
+      : a_("atlas",
+           "Accuracy against cost: join a study's errors with the wall times and pair counts\n"
+           "its own runs recorded; write the atlas and, per target error, the cheapest\n"
+           "configuration observed."),
+        argc_(argc), argv_(argv) {
+    a_.opt("data", "", "comma-separated data files of one study (same columns)");
+    a_.opt("study", "", "name of the study (goes into the header)");
+    a_.opt("task", "", "comma-separated columns that define a task (operator, function); may be empty");
+    a_.opt("config", "", "comma-separated configuration columns; meta:KEY reads a header value");
+    a_.opt("level", "level", "level column");
+    a_.opt("error", "rel_error", "error column");
+    a_.opt("time", "time_s", "time column, or col+col to add columns (pass + Voronoi)");
+    a_.opt("pairs", "", "pair-count column (empty: not recorded, written NA)");
+    a_.opt("filter", "", "keep rows with col=value (comma-separated conditions, all must hold)");
+    a_.opt("time-note", "", "what the time of a row measures (goes into the header)");
+    a_.opt("pairs-note", "", "what the pair count of a row counts (goes into the header)");
+    a_.opt("targets", "1e-2,1e-3,1e-4", "target relative errors of the reading");
+    a_.output("out", "", "atlas TSV");
+    a_.output("reading", "", "reading TSV (cheapest configuration per task and target)");
+    a_.parse(argc, argv);
+    for (const char* req : {"data", "study", "config", "out", "reading"})
+      if (a_.str(req).empty()) throw InputError(std::string("--") + req + " is required");
+    files_ = a_.list("data");
+    task_f_ = fields(a_.str("task").empty() ? std::vector<std::string>{} : a_.list("task"));
+    conf_f_ = fields(a_.list("config"));
+    time_cols_ = split(a_.str("time"), '+');
+    targets_ = a_.nums("targets");
+    for (double t : targets_)
+      if (!(t > 0)) throw InputError("--targets: every target must be > 0, got " + fmt(t));
+    if (!a_.str("filter").empty())
+      for (auto& c : a_.list("filter")) {
+        const auto eq = c.find('=');
+        if (eq == std::string::npos) throw InputError("--filter: expected col=value, got '" + c + "'");
+        conds_.emplace_back(c.substr(0, eq), c.substr(eq + 1));
       }
-      pts.push_back(std::move(p));
-    }
   }
-  if (pts.empty()) throw InputError("no rows with a finite error and time in " + a.str("data"));
 
-  // Header shared by both outputs: this program's options, the sources' provenance.
-  auto header = [&](TsvTable& out) {
+  int run() {
+    read_points();
+    TsvTable atlas = atlas_table(), reading = reading_table();
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    atlas.set("wall_time_s", fmt(wall));
+    reading.set("wall_time_s", fmt(wall));
+    atlas.save(a_.str("out"));
+    reading.save(a_.str("reading"));
+    std::fprintf(stderr, "atlas %s: %zu rows, %zu tasks -> %s, %s\n", a_.str("study").c_str(),
+                 pts_.size(), tasks_.size(), a_.str("out").c_str(), a_.str("reading").c_str());
+    return 0;
+  }
+
+ private:
+  Args a_;
+  int argc_;
+  char** argv_;
+  const std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
+  std::vector<std::string> files_, time_cols_;
+  std::vector<Field> task_f_, conf_f_;
+  std::vector<double> targets_;
+  std::vector<std::pair<std::string, std::string>> conds_;  // --filter's (column, value)
+  std::vector<Point> pts_;
+  TsvTable first_;  // the first file (its profile and seed go into the header)
+  std::vector<std::string> revs_, walls_, tasks_;
+  std::size_t dropped_ = 0;
+
+  // Every row of every file that passes the filter and has a finite error and time.
+  void read_points() {
+    for (std::size_t fi = 0; fi < files_.size(); ++fi) {
+      const auto& file = files_[fi];
+      const TsvTable t = TsvTable::load(file);
+      if (fi == 0) first_ = t;
+      revs_.push_back(t.get("git_revision").value_or("?"));
+      walls_.push_back(t.get("wall_time_s").value_or("?"));
+      const int lc = t.require_column(a_.str("level")), ec = t.require_column(a_.str("error"));
+      std::vector<int> tc;
+      for (auto& c : time_cols_) tc.push_back(t.require_column(c));
+      const int pc = a_.str("pairs").empty() ? -1 : t.require_column(a_.str("pairs"));
+      std::vector<int> fc;
+      for (auto& [c, v] : conds_) fc.push_back(t.require_column(c));
+      for (std::size_t i = 0; i < t.rows.size(); ++i) {
+        const auto& r = t.rows[i];
+        bool keep = true;
+        for (std::size_t k = 0; k < conds_.size(); ++k) keep = keep && r[fc[k]] == conds_[k].second;
+        if (!keep) continue;
+        Point p;
+        for (auto& f : task_f_) p.task_vals.push_back(value(t, r, f, file));
+        for (auto& f : conf_f_) p.config_vals.push_back(value(t, r, f, file));
+        p.task = label(task_f_, p.task_vals);
+        p.config = label(conf_f_, p.config_vals);
+        p.level = r[lc];
+        p.err = number(t, i, ec);
+        p.time = 0;
+        for (int c : tc) p.time += number(t, i, c);
+        p.pairs = pc < 0 ? std::numeric_limits<double>::quiet_NaN() : number(t, i, pc);
+        if (!std::isfinite(p.err) || !std::isfinite(p.time)) {
+          ++dropped_;
+          continue;
+        }
+        pts_.push_back(std::move(p));
+      }
+    }
+    if (pts_.empty()) throw InputError("no rows with a finite error and time in " + a_.str("data"));
+
+    for (auto& p : pts_)
+      if (std::find(tasks_.begin(), tasks_.end(), p.task) == tasks_.end()) tasks_.push_back(p.task);
+  }
+
+  // The header both outputs share: this program's options, the sources' provenance.
+  void header(TsvTable& out) const {
     out.set("program", "atlas");
-    out.set("study", a.str("study"));
-    for (auto& [k, v] : a.values()) out.set(k, v);
+    out.set("study", a_.str("study"));
+    for (auto& [k, v] : a_.values()) out.set(k, v);
     std::vector<std::string> argv_s;
-    for (int i = 0; i < argc; ++i) {  // quoted where the shell would split it
-      std::string w = argv[i];
+    for (int i = 0; i < argc_; ++i) {  // quoted where the shell would split it
+      std::string w = argv_[i];
       argv_s.push_back(w.find_first_of(" ;()") == std::string::npos ? w : "'" + w + "'");
     }
     out.set("command", join(argv_s, " "));
     for (const char* k : {"profile", "seed"})
-      if (auto v = first.get(k)) out.set(k, *v);
-    out.set("sources", join(files, ","));
-    out.set("source_programs", first.get("program").value_or("?"));
-    out.set("source_git_revisions", join(revs, ","));
-    out.set("source_wall_time_s", join(walls, ","));
-    out.set("rows_dropped_nonfinite", fmt(static_cast<long long>(dropped)));
+      if (auto v = first_.get(k)) out.set(k, *v);
+    out.set("sources", join(files_, ","));
+    out.set("source_programs", first_.get("program").value_or("?"));
+    out.set("source_git_revisions", join(revs_, ","));
+    out.set("source_wall_time_s", join(walls_, ","));
+    out.set("rows_dropped_nonfinite", fmt(static_cast<long long>(dropped_)));
     add_provenance(out);
-  };
-
-  TsvTable atlas;
-  header(atlas);
-  atlas.columns = {"task", "config", "level", "rel_error", "time_s", "pairs"};
-  for (auto& f : task_f) atlas.columns.push_back(f.name);
-  for (auto& f : conf_f) atlas.columns.push_back(f.name);
-  // By position, not by name (TsvRow): the field columns are named by --task/--config and may
-  // repeat a fixed name (--config level), which a named row could not tell apart; the row
-  // follows the same order as the column list just above.
-  for (auto& p : pts) {
-    std::vector<std::string> r = {p.task, p.config, p.level, fmt(p.err), fmt(p.time),
-                                  std::isnan(p.pairs) ? "NA" : fmt(p.pairs)};
-    r.insert(r.end(), p.task_vals.begin(), p.task_vals.end());
-    r.insert(r.end(), p.config_vals.begin(), p.config_vals.end());
-    atlas.add_row(std::move(r));
   }
 
-  // The reading: per task and target, the cheapest row reaching the target (ties in time —
-  // configurations timed as one unit — go to the smaller error), and the cheapest row of
-  // any other configuration, so the reader sees the margin.  Not reached: the smallest
-  // error observed, so the table says how far the profile got.
-  TsvTable reading;
-  header(reading);
-  reading.columns = {"task", "target", "reached", "config", "level", "rel_error", "time_s",
-                     "pairs", "next_config", "next_time_s", "time_ratio", "reading"};
-  std::vector<std::string> tasks;
-  for (auto& p : pts)
-    if (std::find(tasks.begin(), tasks.end(), p.task) == tasks.end()) tasks.push_back(p.task);
-  auto better = [](const Point* a, const Point& b) {
-    return !a || b.time < a->time || (b.time == a->time && b.err < a->err);
-  };
-  for (auto& task : tasks)
-    for (double target : targets) {
-      const Point* best = nullptr;
-      for (auto& p : pts)
-        if (p.task == task && p.err <= target && better(best, p)) best = &p;
-      if (!best) {
-        const Point* low = nullptr;
-        for (auto& p : pts)
-          if (p.task == task && (!low || p.err < low->err)) low = &p;
-        TsvRow row = reading.named_row();
-        row["task"] = task, row["target"] = g3(target), row["reached"] = "no";
-        row["config"] = low->config, row["level"] = low->level, row["rel_error"] = fmt(low->err);
-        row["time_s"] = fmt(low->time), row["pairs"] = std::isnan(low->pairs) ? "NA" : fmt(low->pairs);
-        row["next_config"] = "NA", row["next_time_s"] = "NA", row["time_ratio"] = "NA";
-        row["reading"] = "not reached; smallest error observed " + g3(low->err) + " (" + low->config +
-                         ", level " + low->level + ")";
-        reading.add_row(row);
-        continue;
-      }
-      const Point* next = nullptr;
-      for (auto& p : pts)
-        if (p.task == task && p.err <= target && p.config != best->config && better(next, p))
-          next = &p;
-      const double ratio = next && best->time > 0 ? next->time / best->time
-                                                  : std::numeric_limits<double>::quiet_NaN();
-      std::string text = best->config + " at level " + best->level + ": " + g3(best->time) + " s";
-      if (!next) text += "; no other choice reaches it";
-      else if (next->time == best->time)  // one timed unit covered both
-        text += "; " + next->config + " reaches it in the same timed unit";
-      else text += "; next other choice " + next->config + " takes " + g3(ratio) + "x as long";
-      TsvRow row = reading.named_row();
-      row["task"] = task, row["target"] = g3(target), row["reached"] = "yes";
-      row["config"] = best->config, row["level"] = best->level, row["rel_error"] = fmt(best->err);
-      row["time_s"] = fmt(best->time), row["pairs"] = std::isnan(best->pairs) ? "NA" : fmt(best->pairs);
-      row["next_config"] = next ? next->config : "NA", row["next_time_s"] = next ? fmt(next->time) : "NA";
-      row["time_ratio"] = g3(ratio), row["reading"] = text;
-      reading.add_row(row);
+  // One row per (task, configuration, level).
+  TsvTable atlas_table() const {
+    TsvTable t;
+    header(t);
+    t.columns = {"task", "config", "level", "rel_error", "time_s", "pairs"};
+    for (auto& f : task_f_) t.columns.push_back(f.name);
+    for (auto& f : conf_f_) t.columns.push_back(f.name);
+    // By position, not by name (TsvRow): the field columns are named by --task/--config and may
+    // repeat a fixed name (--config level), which a named row could not tell apart; the row
+    // follows the same order as the column list just above.
+    for (auto& p : pts_) {
+      std::vector<std::string> r = {p.task, p.config, p.level, fmt(p.err), fmt(p.time),
+                                    std::isnan(p.pairs) ? "NA" : fmt(p.pairs)};
+      r.insert(r.end(), p.task_vals.begin(), p.task_vals.end());
+      r.insert(r.end(), p.config_vals.begin(), p.config_vals.end());
+      t.add_row(std::move(r));
     }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  atlas.set("wall_time_s", fmt(wall));
-  reading.set("wall_time_s", fmt(wall));
-  atlas.save(a.str("out"));
-  reading.save(a.str("reading"));
-  std::fprintf(stderr, "atlas %s: %zu rows, %zu tasks -> %s, %s\n", a.str("study").c_str(),
-               pts.size(), tasks.size(), a.str("out").c_str(), a.str("reading").c_str());
-  return 0;
-}
+
+    return t;
+  }
+
+  // Per task and target, the cheapest row reaching the target (ties in time — configurations
+  // timed as one unit — go to the smaller error), and the cheapest row of any other
+  // configuration, so the reader sees the margin.  Not reached: the smallest error observed,
+  // so the table says how far the profile got.
+  TsvTable reading_table() const {
+    TsvTable t;
+    header(t);
+    t.columns = {"task", "target", "reached", "config", "level", "rel_error", "time_s",
+                       "pairs", "next_config", "next_time_s", "time_ratio", "reading"};
+    auto better = [](const Point* a, const Point& b) {
+      return !a || b.time < a->time || (b.time == a->time && b.err < a->err);
+    };
+    for (auto& task : tasks_)
+      for (double target : targets_) {
+        const Point* best = nullptr;
+        for (auto& p : pts_)
+          if (p.task == task && p.err <= target && better(best, p)) best = &p;
+        if (!best) {
+          const Point* low = nullptr;
+          for (auto& p : pts_)
+            if (p.task == task && (!low || p.err < low->err)) low = &p;
+          TsvRow row = t.named_row();
+          row["task"] = task, row["target"] = g3(target), row["reached"] = "no";
+          row["config"] = low->config, row["level"] = low->level, row["rel_error"] = fmt(low->err);
+          row["time_s"] = fmt(low->time), row["pairs"] = std::isnan(low->pairs) ? "NA" : fmt(low->pairs);
+          row["next_config"] = "NA", row["next_time_s"] = "NA", row["time_ratio"] = "NA";
+          row["reading"] = "not reached; smallest error observed " + g3(low->err) + " (" + low->config +
+                           ", level " + low->level + ")";
+          t.add_row(row);
+          continue;
+        }
+        const Point* next = nullptr;
+        for (auto& p : pts_)
+          if (p.task == task && p.err <= target && p.config != best->config && better(next, p))
+            next = &p;
+        const double ratio = next && best->time > 0 ? next->time / best->time
+                                                    : std::numeric_limits<double>::quiet_NaN();
+        std::string text = best->config + " at level " + best->level + ": " + g3(best->time) + " s";
+        if (!next) text += "; no other choice reaches it";
+        else if (next->time == best->time)  // one timed unit covered both
+          text += "; " + next->config + " reaches it in the same timed unit";
+        else text += "; next other choice " + next->config + " takes " + g3(ratio) + "x as long";
+        TsvRow row = t.named_row();
+        row["task"] = task, row["target"] = g3(target), row["reached"] = "yes";
+        row["config"] = best->config, row["level"] = best->level, row["rel_error"] = fmt(best->err);
+        row["time_s"] = fmt(best->time), row["pairs"] = std::isnan(best->pairs) ? "NA" : fmt(best->pairs);
+        row["next_config"] = next ? next->config : "NA", row["next_time_s"] = next ? fmt(next->time) : "NA";
+        row["time_ratio"] = g3(ratio), row["reading"] = text;
+        t.add_row(row);
+      }
+    return t;
+  }
+};
+
+int body(int argc, char** argv) { return Atlas(argc, argv).run(); }
 
 }  // namespace
 

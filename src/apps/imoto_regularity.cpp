@@ -170,136 +170,158 @@ LpResult voronoi_deviation(const Particles& p, const VoronoiCells& c,
   return r;
 }
 
-int body(int argc, char** argv) {
+// The program: the covering radius over levels and seeds (with the counter-example), then the
+// Voronoi deviation by the LP per level; each unit a row of its file, skipped when stored.
+class Regularity {
+ public:
   // The runner owns the options, the three data files (cache, store checks, header stamp),
   // the progress lines and the closing lines; --out is the covering radii.
-  StudyRunner run("imoto_regularity",
-                  "imoto Sec. 3/5 regularity indicators: covering radius r_N over levels and seeds\n"
-                  "with a counter-example to r_N <= sqrt(2)(1+1/4)dx/2, and the Voronoi deviation\n"
-                  "d_N by the LP of Appendix B (GLPK) with (r_N + d_N)/h^m for m = 1, 3, 5.",
-                  "quick or paper (both: r_N at 2^-5..2^-10, the LP at 2^-5 and 2^-6)",
-                  StudyRunner::Kind::units_without_seed);
-  Args& args = run.args();
-  args.output("out-example", "", "counter-example TSV (required)")
-      .output("out-deviation", "", "Voronoi-deviation TSV (required)")
-      .opt("seeds", "1,2,3,4,5", "comma-separated jitter seeds for r_N")
-      .opt("lp-seed", "1", "jitter seed of the LP (the seed of imoto_fig5_table1)")
-      .opt("lp-method", "interior", "interior (GLPK interior point) or simplex (slow; a check)")
-      .opt("lp-levels", "", "comma-separated LP levels; default: by profile");
-  run.parse(argc, argv);
-  for (const char* o : {"out-example", "out-deviation"}) args.required(o);
-  const Profile profile = run.profile();
-  const std::vector<int> cover_levels = run.levels(kCoverLevels, kCoverLevels, 3, 12);
-  const std::vector<uint64_t> seeds = args.seeds("seeds");
-  const uint64_t lp_seed = args.seed("lp-seed");
-  const std::string method = args.str("lp-method");
-  if (method != "interior" && method != "simplex")
-    throw InputError("--lp-method: unknown '" + method + "'; valid: interior, simplex");
-  const bool simplex = method == "simplex";
-  std::vector<int> lp_levels = pick(profile, kQuickLpLevels, kPaperLpLevels);
-  if (!args.str("lp-levels").empty()) {
-    lp_levels.clear();
-    for (double v : args.nums("lp-levels")) {
-      if (v != std::floor(v) || v < 3 || v > 9)
-        throw InputError("--lp-levels: " + fmt(v) + " is not an integer in [3, 9]");
-      lp_levels.push_back(static_cast<int>(v));
-    }
-  }
-  const Domain dom;
-
-  // --- The data files: rows are reused where a file's parameters agree; every unit is keyed
-  // by its first three columns: (level, dx, seed) of a covering radius and of a level's LP
-  // (all its transport radii), (case, level, seed) of a counter-example row.
-  const std::string jitter = "|eta| < 1/4, counter-based hash of (seed,i,j), mirrored at the edge";
-  const std::vector<LevelCache*> files = run.open_files(
-      {{run.out(), {{"program", "imoto_regularity"}, {"part", "covering radius"}, {"H", fmt(dom.H)},
-                    {"jitter", jitter}, {"claim_r_over_dx", fmt(kClaimR)}},
-        {"level", "dx", "seed", "N", "r_N_over_dx", "r_N_omega_over_dx", "claim_over_dx", "claim_holds",
-         "worst_x", "worst_y", "far_x", "far_y", "time_s"}},
-       {args.str("out-example"), {{"program", "imoto_regularity"}, {"part", "counter-example to the r_N claim"},
-                                  {"H", fmt(dom.H)}, {"jitter", jitter}, {"claim_r_over_dx", fmt(kClaimR)}},
-        {"case", "level", "seed", "particle", "node_i", "node_j", "eta_1", "eta_2", "x", "y", "vertex_x",
-         "vertex_y", "dist_over_dx", "nearest_over_dx", "claim_over_dx"}},
-       {args.str("out-deviation"),
-        {{"program", "imoto_regularity"}, {"part", "Voronoi deviation"}, {"H", fmt(dom.H)}, {"jitter", jitter},
-         {"claim_d_over_dx", fmt(kClaimD)}, {"volumes", "V_i = |Omega_H|/N"},
-         {"lp", "Appendix B; GLPK " + method + "; areas/dx^2, distances/dx; transport restricted to "
-                "|x_i - x_j| < R; converged: same optimum (1e-6 rel.) as the previous R"},
-         {"ratio", "(r_N + d_N)/h^m with h = 2.6 * 2^(5/m-5) * dx^(1/m)"}},
-        {"level", "dx", "seed", "N", "R_over_dx", "variables", "status", "d_N_over_dx", "converged",
-         "r_N_over_dx", "claim_d_over_dx", "ratio_m1", "ratio_m3", "ratio_m5", "time_s"}}},
-      {}, 3);
-  LevelCache& cov = *files[0];
-  LevelCache& ex = *files[1];
-  LevelCache& dev = *files[2];
-
-  // --- Covering radius over levels and seeds; the counter-example from the coarsest level's
-  // first seed (its worst cell overall and in Ω). ------------------------------------------
-  const char* kCases[] = {"worst cell", "worst cell of a particle in Omega"};
-  for (int level : cover_levels) {
-    const double dx = std::ldexp(1.0, -level);
-    for (uint64_t seed : seeds) {
-      const std::string s = fmt(static_cast<long long>(seed));
-      const bool example = level == cover_levels.front() && seed == seeds.front();
-      const bool todo = !cov.has({fmt(level), fmt(dx), s}) ||
-                        (example && (!ex.has({kCases[0], fmt(level), s}) || !ex.has({kCases[1], fmt(level), s})));
-      if (!todo || !run.claim()) continue;
-      const auto t0 = std::chrono::steady_clock::now();
-      const Particles p = jittered_grid(dx, seed, 0.25, dom);
-      const VoronoiCells c = voronoi_cells(p, dom, true);
-      std::size_t wo = 0;  // worst cell among the particles in Ω
-      for (std::size_t i = 0; i < p.size(); ++i)
-        if (p.in_omega[i] && (!p.in_omega[wo] || c.cover[i] > c.cover[wo])) wo = i;
-      double fx = 0, fy = 0;
-      farthest_vertex(c, p, c.worst, fx, fy);
-      const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      TsvRow row = run.row(0);
-      row["level"] = fmt(level), row["dx"] = fmt(dx), row["seed"] = s;
-      row["N"] = fmt(p.size()), row["r_N_over_dx"] = fmt(c.covering_radius / dx);
-      row["r_N_omega_over_dx"] = fmt(c.cover[wo] / dx), row["claim_over_dx"] = fmt(kClaimR);
-      row["claim_holds"] = c.covering_radius / dx <= kClaimR ? "1" : "0";
-      row["worst_x"] = fmt(p.x[c.worst]), row["worst_y"] = fmt(p.y[c.worst]);
-      row["far_x"] = fmt(fx), row["far_y"] = fmt(fy), row["time_s"] = fmt(secs);
-      run.add(0, row);
-      if (example)
-        for (auto [name, i] : {std::pair<const char*, std::size_t>{kCases[0], c.worst}, {kCases[1], wo}}) {
-          double vx = 0, vy = 0;
-          farthest_vertex(c, p, i, vx, vy);
-          std::size_t nearest = 0;
-          const double dn = nearest_particle(p, vx, vy, nearest);
-          TsvRow e = run.row(1);
-          e["case"] = name, e["level"] = fmt(level), e["seed"] = s;
-          e["particle"] = fmt(i), e["node_i"] = fmt(p.gi[i]), e["node_j"] = fmt(p.gj[i]);
-          e["eta_1"] = fmt(p.x[i] / dx - p.gi[i]), e["eta_2"] = fmt(p.y[i] / dx - p.gj[i]);
-          e["x"] = fmt(p.x[i]), e["y"] = fmt(p.y[i]), e["vertex_x"] = fmt(vx), e["vertex_y"] = fmt(vy);
-          e["dist_over_dx"] = fmt(std::hypot(vx - p.x[i], vy - p.y[i]) / dx);
-          e["nearest_over_dx"] = fmt(dn / dx), e["claim_over_dx"] = fmt(kClaimR);
-          run.add(1, e);
-        }
-      run.unit_done(0, line_printf("level %d seed %s N=%zu r_N/dx=%.4f (Omega %.4f) %.2fs", level, s.c_str(),
-                                   p.size(), c.covering_radius / dx, c.cover[wo] / dx, secs));
+  Regularity(int argc, char** argv)
+      : run_("imoto_regularity",
+             "imoto Sec. 3/5 regularity indicators: covering radius r_N over levels and seeds\n"
+             "with a counter-example to r_N <= sqrt(2)(1+1/4)dx/2, and the Voronoi deviation\n"
+             "d_N by the LP of Appendix B (GLPK) with (r_N + d_N)/h^m for m = 1, 3, 5.",
+             "quick or paper (both: r_N at 2^-5..2^-10, the LP at 2^-5 and 2^-6)",
+             StudyRunner::Kind::units_without_seed) {
+    Args& args = run_.args();
+    args.output("out-example", "", "counter-example TSV (required)")
+        .output("out-deviation", "", "Voronoi-deviation TSV (required)")
+        .opt("seeds", "1,2,3,4,5", "comma-separated jitter seeds for r_N")
+        .opt("lp-seed", "1", "jitter seed of the LP (the seed of imoto_fig5_table1)")
+        .opt("lp-method", "interior", "interior (GLPK interior point) or simplex (slow; a check)")
+        .opt("lp-levels", "", "comma-separated LP levels; default: by profile");
+    run_.parse(argc, argv);
+    for (const char* o : {"out-example", "out-deviation"}) args.required(o);
+    cover_levels_ = run_.levels(kCoverLevels, kCoverLevels, 3, 12);
+    seeds_ = args.seeds("seeds");
+    lp_seed_ = args.seed("lp-seed");
+    method_ = args.str("lp-method");
+    if (method_ != "interior" && method_ != "simplex")
+      throw InputError("--lp-method: unknown '" + method_ + "'; valid: interior, simplex");
+    simplex_ = method_ == "simplex";
+    lp_levels_ = pick(run_.profile(), kQuickLpLevels, kPaperLpLevels);
+    if (!args.str("lp-levels").empty()) {
+      lp_levels_.clear();
+      for (double v : args.nums("lp-levels")) {
+        if (v != std::floor(v) || v < 3 || v > 9)
+          throw InputError("--lp-levels: " + fmt(v) + " is not an integer in [3, 9]");
+        lp_levels_.push_back(static_cast<int>(v));
+      }
     }
   }
 
-  // --- Voronoi deviation by the LP, one unit per level: the transport radius widened until
-  // the optimum no longer changes. --------------------------------------------------------
-  for (int level : lp_levels) {
+  int run() {
+    open_files();
+    for (int level : cover_levels_)
+      for (uint64_t seed : seeds_) covering_unit(level, seed);
+    for (int level : lp_levels_) deviation_unit(level);
+    run_.finish();
+    return 0;
+  }
+
+ private:
+  StudyRunner run_;
+  std::vector<int> cover_levels_, lp_levels_;
+  std::vector<uint64_t> seeds_;
+  uint64_t lp_seed_ = 1;
+  std::string method_;
+  bool simplex_ = false;
+  const Domain dom_{};
+  LevelCache* cov_ = nullptr;  // covering radii
+  LevelCache* ex_ = nullptr;   // the counter-example
+  LevelCache* dev_ = nullptr;  // the Voronoi deviation
+  static constexpr const char* kCases[] = {"worst cell", "worst cell of a particle in Omega"};
+
+  // The data files: rows are reused where a file's parameters agree; every unit is keyed by
+  // its first three columns: (level, dx, seed) of a covering radius and of a level's LP (all
+  // its transport radii), (case, level, seed) of a counter-example row.
+  void open_files() {
+    const std::string jitter = "|eta| < 1/4, counter-based hash of (seed,i,j), mirrored at the edge";
+    const std::vector<LevelCache*> files = run_.open_files(
+        {{run_.out(), {{"program", "imoto_regularity"}, {"part", "covering radius"}, {"H", fmt(dom_.H)},
+                      {"jitter", jitter}, {"claim_r_over_dx", fmt(kClaimR)}},
+          {"level", "dx", "seed", "N", "r_N_over_dx", "r_N_omega_over_dx", "claim_over_dx", "claim_holds",
+           "worst_x", "worst_y", "far_x", "far_y", "time_s"}},
+         {run_.args().str("out-example"), {{"program", "imoto_regularity"}, {"part", "counter-example to the r_N claim"},
+                                    {"H", fmt(dom_.H)}, {"jitter", jitter}, {"claim_r_over_dx", fmt(kClaimR)}},
+          {"case", "level", "seed", "particle", "node_i", "node_j", "eta_1", "eta_2", "x", "y", "vertex_x",
+           "vertex_y", "dist_over_dx", "nearest_over_dx", "claim_over_dx"}},
+         {run_.args().str("out-deviation"),
+          {{"program", "imoto_regularity"}, {"part", "Voronoi deviation"}, {"H", fmt(dom_.H)}, {"jitter", jitter},
+           {"claim_d_over_dx", fmt(kClaimD)}, {"volumes", "V_i = |Omega_H|/N"},
+           {"lp", "Appendix B; GLPK " + method_ + "; areas/dx^2, distances/dx; transport restricted to "
+                  "|x_i - x_j| < R; converged: same optimum (1e-6 rel.) as the previous R"},
+           {"ratio", "(r_N + d_N)/h^m with h = 2.6 * 2^(5/m-5) * dx^(1/m)"}},
+          {"level", "dx", "seed", "N", "R_over_dx", "variables", "status", "d_N_over_dx", "converged",
+           "r_N_over_dx", "claim_d_over_dx", "ratio_m1", "ratio_m3", "ratio_m5", "time_s"}}},
+        {}, 3);
+    cov_ = files[0], ex_ = files[1], dev_ = files[2];
+  }
+
+  // The covering radius of one (level, seed); the counter-example from the coarsest level's
+  // first seed (its worst cell overall and in Omega).
+  void covering_unit(int level, uint64_t seed) {
     const double dx = std::ldexp(1.0, -level);
-    if (dev.has({fmt(level), fmt(dx), fmt(lp_seed)}) || !run.claim()) continue;
-    const Particles p = jittered_grid(dx, static_cast<uint64_t>(lp_seed), 0.25, dom);
-    const VoronoiCells c = voronoi_cells(p, dom, false);
-    const std::vector<double> V = uniform_volumes(p, dom);
+    const std::string s = fmt(static_cast<long long>(seed));
+    const bool example = level == cover_levels_.front() && seed == seeds_.front();
+    const bool todo = !cov_->has({fmt(level), fmt(dx), s}) ||
+                      (example && (!ex_->has({kCases[0], fmt(level), s}) || !ex_->has({kCases[1], fmt(level), s})));
+    if (!todo || !run_.claim()) return;
+    const auto t0 = std::chrono::steady_clock::now();
+    const Particles p = jittered_grid(dx, seed, 0.25, dom_);
+    const VoronoiCells c = voronoi_cells(p, dom_, true);
+    std::size_t wo = 0;  // worst cell among the particles in Ω
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.in_omega[i] && (!p.in_omega[wo] || c.cover[i] > c.cover[wo])) wo = i;
+    double fx = 0, fy = 0;
+    farthest_vertex(c, p, c.worst, fx, fy);
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    TsvRow row = run_.row(0);
+    row["level"] = fmt(level), row["dx"] = fmt(dx), row["seed"] = s;
+    row["N"] = fmt(p.size()), row["r_N_over_dx"] = fmt(c.covering_radius / dx);
+    row["r_N_omega_over_dx"] = fmt(c.cover[wo] / dx), row["claim_over_dx"] = fmt(kClaimR);
+    row["claim_holds"] = c.covering_radius / dx <= kClaimR ? "1" : "0";
+    row["worst_x"] = fmt(p.x[c.worst]), row["worst_y"] = fmt(p.y[c.worst]);
+    row["far_x"] = fmt(fx), row["far_y"] = fmt(fy), row["time_s"] = fmt(secs);
+    run_.add(0, row);
+    if (example)
+      for (auto [name, i] : {std::pair<const char*, std::size_t>{kCases[0], c.worst}, {kCases[1], wo}}) {
+        double vx = 0, vy = 0;
+        farthest_vertex(c, p, i, vx, vy);
+        std::size_t nearest = 0;
+        const double dn = nearest_particle(p, vx, vy, nearest);
+        TsvRow e = run_.row(1);
+        e["case"] = name, e["level"] = fmt(level), e["seed"] = s;
+        e["particle"] = fmt(i), e["node_i"] = fmt(p.gi[i]), e["node_j"] = fmt(p.gj[i]);
+        e["eta_1"] = fmt(p.x[i] / dx - p.gi[i]), e["eta_2"] = fmt(p.y[i] / dx - p.gj[i]);
+        e["x"] = fmt(p.x[i]), e["y"] = fmt(p.y[i]), e["vertex_x"] = fmt(vx), e["vertex_y"] = fmt(vy);
+        e["dist_over_dx"] = fmt(std::hypot(vx - p.x[i], vy - p.y[i]) / dx);
+        e["nearest_over_dx"] = fmt(dn / dx), e["claim_over_dx"] = fmt(kClaimR);
+        run_.add(1, e);
+      }
+    run_.unit_done(0, line_printf("level %d seed %s N=%zu r_N/dx=%.4f (Omega %.4f) %.2fs", level, s.c_str(),
+                                 p.size(), c.covering_radius / dx, c.cover[wo] / dx, secs));
+  }
+
+  // The Voronoi deviation of one level by the LP: the transport radius widened until the
+  // optimum no longer changes.
+  void deviation_unit(int level) {
+    const double dx = std::ldexp(1.0, -level);
+    if (dev_->has({fmt(level), fmt(dx), fmt(lp_seed_)}) || !run_.claim()) return;
+    const Particles p = jittered_grid(dx, static_cast<uint64_t>(lp_seed_), 0.25, dom_);
+    const VoronoiCells c = voronoi_cells(p, dom_, false);
+    const std::vector<double> V = uniform_volumes(p, dom_);
     double prev = NAN, last = NAN, secs = 0;
     for (double R : kRadii) {
-      const LpResult r = voronoi_deviation(p, c, V, dx, R, simplex);
+      const LpResult r = voronoi_deviation(p, c, V, dx, R, simplex_);
       secs += r.seconds, last = r.d_over_dx;
       // Converged: the optimum at this R equals the one at the previous R (the interior
-      // point stops at a relative gap of ~1e-8, so 1e-6 relative; 1e-9 for the simplex).
-      const double tol = simplex ? 1e-9 : 1e-6;
+      // point stops at a relative gap of ~1e-8, so 1e-6 relative; 1e-9 for the simplex_).
+      const double tol = simplex_ ? 1e-9 : 1e-6;
       const bool conv = std::isfinite(prev) && std::isfinite(r.d_over_dx) &&
                         std::fabs(r.d_over_dx - prev) <= tol * std::fabs(prev);
-      TsvRow row = run.row(2);
-      row["level"] = fmt(level), row["dx"] = fmt(dx), row["seed"] = fmt(lp_seed);
+      TsvRow row = run_.row(2);
+      row["level"] = fmt(level), row["dx"] = fmt(dx), row["seed"] = fmt(lp_seed_);
       row["N"] = fmt(p.size()), row["R_over_dx"] = fmt(R), row["variables"] = fmt(r.variables);
       row["status"] = r.status, row["d_N_over_dx"] = fmt(r.d_over_dx), row["converged"] = conv ? "1" : "0";
       row["r_N_over_dx"] = fmt(c.covering_radius / dx), row["claim_d_over_dx"] = fmt(kClaimD);
@@ -307,18 +329,18 @@ int body(int argc, char** argv) {
       for (double m : kOrders)
         row["ratio_m" + fmt(m)] = fmt((c.covering_radius + r.d_over_dx * dx) / std::pow(imoto_h(m, dx), m));
       row["time_s"] = fmt(r.seconds);
-      run.add(2, row);
+      run_.add(2, row);
       // A level's LP takes minutes: a line per radius.
       std::fprintf(stderr, "[imoto_regularity] LP level %d R=%g dx: %zu variables, %s, d_N/dx=%.6g %.2fs\n",
                    level, R, r.variables, r.status.c_str(), r.d_over_dx, r.seconds);
       if (conv) break;
       prev = r.d_over_dx;
     }
-    run.unit_done(0, line_printf("LP level %d: d_N/dx = %.6g at the last radius, %.1fs", level, last, secs));
+    run_.unit_done(0, line_printf("LP level %d: d_N/dx = %.6g at the last radius, %.1fs", level, last, secs));
   }
-  run.finish();
-  return 0;
-}
+};
+
+int body(int argc, char** argv) { return Regularity(argc, argv).run(); }
 
 }  // namespace
 

@@ -363,140 +363,169 @@ TsvTable summary_of(const TsvTable& cases, const std::vector<int>& levels, const
   return ts;
 }
 
-int body(int argc, char** argv) {
+// The program: the options and the sweep, then the data files, one unit per (level, seed),
+// and the summary and Figures 1-2's data from the stored case rows.
+class Bounds {
+ public:
   // No --seed: the seeds are a list of the study's own (one unit per level and seed).
-  StudyRunner run("koba_sato_bounds",
-                  "Koba & Sato Theorems 1.3-1.6 on jittered-grid Voronoi cells: the error of the four\n"
-                  "operators at a_k against the theorems' bounds with constants computed from the cells.",
-                  "quick (level 8, 1 seed, 4 sites) or paper (levels 8-9, 3 seeds, 8 sites)",
-                  StudyRunner::Kind::units_without_seed);
-  Args& args = run.args();
-  args.opt("seeds", "", "comma-separated jitter seeds (default: by profile)")
-      .opt("sites", "", "particles a_k per tessellation, 1..64 (default: by profile)")
-      .opt("cstars", kCStars, "C* = h / r_sigma values (> 1)")
-      .opt("lambdas", "0.25,0.5,0.75", "lambda values in (0,1)")
-      .opt("weights", "step,Pi1,quadratic_spike", "step and/or registry weights, w(x) = W(|x|/h) on the annulus")
-      .opt("functions", "sin2pi,wave,quartic,linear", "test functions")
-      .output("summary", "", "summary TSV (default: OUT with _summary.tsv)")
-      .output("constants", "", "constants TSV (default: OUT with _constants.tsv)")
-      .output("hypotheses", "", "hypotheses TSV (default: OUT with _hypotheses.tsv)")
-      .opt("fig-prefix", "", "prefix of the Figure 1-2 data files (default: DIR(OUT)/koba_sato_fig)")
-      .opt("fig-level", "4", "level of the tessellation drawn in Figures 1-2, 2..10")
-      .opt("fig-cstar", "3", "C* drawn in Figures 1-2 (> 1)");
-  run.parse(argc, argv);
-  const std::string out = run.out();
-  const bool quick = run.profile() == Profile::quick;
-  const auto or_default = [&](const std::string& key, const std::string& def) {
-    return args.str(key).empty() ? def : args.str(key);
-  };
-  const std::string summary_path = or_default("summary", sibling(out, "_summary.tsv"));
-  const std::string constants_path = or_default("constants", sibling(out, "_constants.tsv"));
-  const std::string hyp_path = or_default("hypotheses", sibling(out, "_hypotheses.tsv"));
-  const std::string fig_prefix = or_default("fig-prefix", dir_of(out) + "/koba_sato_fig");
+  Bounds(int argc, char** argv)
+      : run_("koba_sato_bounds",
+             "Koba & Sato Theorems 1.3-1.6 on jittered-grid Voronoi cells: the error of the four\n"
+             "operators at a_k against the theorems' bounds with constants computed from the cells.",
+             "quick (level 8, 1 seed, 4 sites) or paper (levels 8-9, 3 seeds, 8 sites)",
+             StudyRunner::Kind::units_without_seed) {
+    run_.args().opt("seeds", "", "comma-separated jitter seeds (default: by profile)")
+        .opt("sites", "", "particles a_k per tessellation, 1..64 (default: by profile)")
+        .opt("cstars", kCStars, "C* = h / r_sigma values (> 1)")
+        .opt("lambdas", "0.25,0.5,0.75", "lambda values in (0,1)")
+        .opt("weights", "step,Pi1,quadratic_spike", "step and/or registry weights, w(x) = W(|x|/h) on the annulus")
+        .opt("functions", "sin2pi,wave,quartic,linear", "test functions")
+        .output("summary", "", "summary TSV (default: OUT with _summary.tsv)")
+        .output("constants", "", "constants TSV (default: OUT with _constants.tsv)")
+        .output("hypotheses", "", "hypotheses TSV (default: OUT with _hypotheses.tsv)")
+        .opt("fig-prefix", "", "prefix of the Figure 1-2 data files (default: DIR(OUT)/koba_sato_fig)")
+        .opt("fig-level", "4", "level of the tessellation drawn in Figures 1-2, 2..10")
+        .opt("fig-cstar", "3", "C* drawn in Figures 1-2 (> 1)");
+    run_.parse(argc, argv);
+    out_ = run_.out();
+    const bool quick = run_.profile() == Profile::quick;
+    const auto or_default = [&](const std::string& key, const std::string& def) {
+      return args().str(key).empty() ? def : args().str(key);
+    };
+    summary_path_ = or_default("summary", sibling(out_, "_summary.tsv"));
+    constants_path_ = or_default("constants", sibling(out_, "_constants.tsv"));
+    hyp_path_ = or_default("hypotheses", sibling(out_, "_hypotheses.tsv"));
+    fig_prefix_ = or_default("fig-prefix", dir_of(out_) + "/koba_sato_fig");
 
-  // --- The sweep: levels and seeds (the units), sites, C*, λ, weights and functions. --------
-  const std::vector<int> levels = run.levels(kQuickLevels, kPaperLevels, 6, 10);
-  const std::vector<uint64_t> seeds = parse_seeds(or_default("seeds", quick ? kQuickSeeds : kPaperSeeds), "--seeds");
-  Sweep sw;
-  sw.n_sites = args.str("sites").empty() ? (quick ? kQuickSites : kPaperSites) : args.integer("sites", 1, 64);
-  sw.cstars = args.nums("cstars"), sw.lambdas = args.nums("lambdas");
-  for (double c : sw.cstars)
-    if (!(c > 1)) throw InputError("--cstars: C* must exceed 1 (h > r_sigma), got " + fmt(c));
-  for (double l : sw.lambdas)
-    if (!(l > 0 && l < 1)) throw InputError("--lambdas: lambda must lie in (0, 1), got " + fmt(l));
-  sw.weights = args.list("weights");
-  for (auto& n : args.list("functions")) sw.funcs.push_back(&ks_function(n));
-  for (auto& n : sw.weights) ks_weight(n, 0.1, 1.0);  // unknown or non-Lipschitz: fail now
-  if (levels.empty() || seeds.empty() || sw.cstars.empty() || sw.lambdas.empty() || sw.weights.empty() ||
-      sw.funcs.empty())
-    throw InputError("every list option needs at least one value");
-  sw.lambda_sample = std::find(sw.lambdas.begin(), sw.lambdas.end(), 0.5) != sw.lambdas.end() ? 0.5 : sw.lambdas.front();
-  const int fig_level = static_cast<int>(args.integer("fig-level", 2, 10));
-  const double fig_cstar = args.num("fig-cstar");
-  if (!(fig_cstar > 1))
-    throw InputError("--fig-cstar: C* must exceed 1 (h > r_sigma), got " + args.str("fig-cstar"));
-  // Every file of the run, the defaults derived from --out included, before any work.
-  std::vector<std::pair<std::string, std::string>> outputs = {
-      {"--out", out}, {"--summary", summary_path}, {"--constants", constants_path}, {"--hypotheses", hyp_path}};
-  for (const char* f : kFigureFiles) outputs.emplace_back("--fig-prefix", fig_prefix + f);
-  check_output_paths(outputs, run.program());
-  FigureData fig;
-  try {
-    fig = figure_data(fig_level, seeds.front(), fig_cstar, sw.lambda_sample, args.values());
-  } catch (const InputError& e) {
-    throw InputError("--fig-level " + args.str("fig-level") + " with --fig-cstar " + args.str("fig-cstar") + ": " +
-                     e.what());
+    // The sweep: levels and seeds (the units), sites, C*, λ, weights and functions.
+    levels_ = run_.levels(kQuickLevels, kPaperLevels, 6, 10);
+    seeds_ = parse_seeds(or_default("seeds", quick ? kQuickSeeds : kPaperSeeds), "--seeds");
+    sw_.n_sites = args().str("sites").empty() ? (quick ? kQuickSites : kPaperSites) : args().integer("sites", 1, 64);
+    sw_.cstars = args().nums("cstars"), sw_.lambdas = args().nums("lambdas");
+    for (double c : sw_.cstars)
+      if (!(c > 1)) throw InputError("--cstars: C* must exceed 1 (h > r_sigma), got " + fmt(c));
+    for (double l : sw_.lambdas)
+      if (!(l > 0 && l < 1)) throw InputError("--lambdas: lambda must lie in (0, 1), got " + fmt(l));
+    sw_.weights = args().list("weights");
+    for (auto& n : args().list("functions")) sw_.funcs.push_back(&ks_function(n));
+    for (auto& n : sw_.weights) ks_weight(n, 0.1, 1.0);  // unknown or non-Lipschitz: fail now
+    if (levels_.empty() || seeds_.empty() || sw_.cstars.empty() || sw_.lambdas.empty() || sw_.weights.empty() ||
+        sw_.funcs.empty())
+      throw InputError("every list option needs at least one value");
+    sw_.lambda_sample =
+        std::find(sw_.lambdas.begin(), sw_.lambdas.end(), 0.5) != sw_.lambdas.end() ? 0.5 : sw_.lambdas.front();
+    const int fig_level = static_cast<int>(args().integer("fig-level", 2, 10));
+    const double fig_cstar = args().num("fig-cstar");
+    if (!(fig_cstar > 1))
+      throw InputError("--fig-cstar: C* must exceed 1 (h > r_sigma), got " + args().str("fig-cstar"));
+    // Every file of the run, the defaults derived from --out included, before any work.
+    std::vector<std::pair<std::string, std::string>> outputs = {
+        {"--out", out_}, {"--summary", summary_path_}, {"--constants", constants_path_}, {"--hypotheses", hyp_path_}};
+    for (const char* f : kFigureFiles) outputs.emplace_back("--fig-prefix", fig_prefix_ + f);
+    check_output_paths(outputs, run_.program());
+    try {
+      fig_ = figure_data(fig_level, seeds_.front(), fig_cstar, sw_.lambda_sample, args().values());
+    } catch (const InputError& e) {
+      throw InputError("--fig-level " + args().str("fig-level") + " with --fig-cstar " + args().str("fig-cstar") + ": " +
+                       e.what());
+    }
   }
 
-  // --- The data files: the cases, the hypotheses, the constants; what a row depends on. ------
-  const Domain dom;
-  std::vector<std::pair<std::string, std::string>> params = {
-      {"program", "koba_sato_bounds"}, {"profile", profile_name(run.profile())},
-      {"sites", fmt(sw.n_sites)}, {"cstars", args.str("cstars")}, {"lambdas", args.str("lambdas")},
-      {"weights", args.str("weights")}, {"functions", args.str("functions")}, {"H", fmt(dom.H)},
-      {"particles", "jittered grid, |eta| < 1/4, mirrored into Omega_H (core)"},
-      {"r_sigma", "max_i max_{y in sigma_i} |y - a_i| over ALL cells of Omega_H (the paper's definition)"},
-      {"delta", "min(r_sigma/2, dist(a_k, boundary of sigma_k))"},
-      {"sites_rule", "particles nearest to points on the circle |x - (1/2,1/2)| = 0.1"},
-      {"error", "|f(a_k) - Pi f|, |grad f - grad~ f| (Euclidean), |lap f - lap~ f|, |lap f - box~ f|"},
-      {"bound", "right-hand sides of Theorems 1.3-1.6 with c1..c12 from the cells; "
-                "laplacian_with_c8 adds 4 c8 |f|_C1 from Lemma 5.2 (5.4)"},
-      {"cor_bound", "Corollary 7.1's general formulas at the measured r_sigma, C*, lambda "
-                    "(step weight only; its assumptions are not those of real cells)"}};
-  for (auto* f : sw.funcs)
-    params.emplace_back("f_" + f->name, f->formula + "; |f|_C0..C3 = " + fmt(f->seminorm[0]) + ", " +
-                                            fmt(f->seminorm[1]) + ", " + fmt(f->seminorm[2]) + ", " +
-                                            fmt(f->seminorm[3]));
-  auto with = [&](std::vector<std::pair<std::string, std::string>> extra) {
-    auto p = params;
-    p.insert(p.end(), extra.begin(), extra.end());
-    return p;
-  };
-  const std::vector<LevelCache*> files = run.open_files(
-      {{out, params, kCaseColumns},
-       {hyp_path,
-        with({{"covering", "B_h(a_k) covered by the closed cells of R-bar(a_k,h) iff uncovered area <= 1e-12 pi h^2"},
-              {"eq_2_6", "(2.6): sup_{y in sigma_i}|y - a_i| <= |a_k - a_i| for i in R(a_k,h)"},
-              {"lemma_2_11", "(2.11): |sum_R int_{sigma_i} w - sum_R V_i w(a_k - a_i)| <= pi L_w r_sigma h^2"}}),
-        kHypothesisColumns},
-       {constants_path, with({{"sample", "first level, first seed, site 0, lambda = " + fmt(sw.lambda_sample)}}),
-        kConstantColumns}},
-      kCaseColumns, 2);
+  int run() {
+    open_files();
+    units();
+    if (!run_.finish()) return 0;  // verify/recheck: nothing more is written
+    write_summary_and_figures();
+    return 0;
+  }
 
-  // --- The units: one tessellation per (level, seed); a unit is done when every file has it. -
-  run.expect(static_cast<double>(levels.size() * seeds.size() * sw.n_sites * sw.cstars.size()), "cases");
-  for (int level : levels)
-    for (uint64_t seed : seeds) {
-      const bool sample = level == levels.front() && seed == seeds.front();
-      const std::vector<std::string> key = {fmt(level), fmt(static_cast<long long>(seed))};
-      if ((files[kCases]->has(key) && files[kHypotheses]->has(key) && (!sample || files[kConstants]->has(key))) ||
-          !run.claim())
-        continue;
-      const long long cases = run_unit(run, level, seed, sw, sample);
-      run.unit_done(static_cast<double>(cases),
-                    line_printf("level %d seed %llu: %lld cases (sites x C*)", level,
-                                static_cast<unsigned long long>(seed), cases));
-    }
-  if (!run.finish()) return 0;  // verify/recheck: nothing more is written
+ private:
+  StudyRunner run_;
+  std::string out_, summary_path_, constants_path_, hyp_path_, fig_prefix_;
+  std::vector<int> levels_;
+  std::vector<uint64_t> seeds_;
+  Sweep sw_;
+  FigureData fig_;
+  const Domain dom_{};
+  std::vector<std::pair<std::string, std::string>> params_;  // what a row depends on
+  std::vector<LevelCache*> files_;
 
-  // --- The summary (from the case rows) and Figures 1-2's data. -----------------------------
-  TsvTable ts = summary_of(files[kCases]->table(), levels, seeds, sw.weights);
-  ts.set("program", "koba_sato_bounds");
-  for (auto& [k, v] : params) ts.set(k, v);
-  std::vector<std::string> lv, sd;  // the units summarized
-  for (int l : levels) lv.push_back(fmt(l));
-  for (auto x : seeds) sd.push_back(fmt(static_cast<long long>(x)));
-  ts.set("levels_used", join(lv, ","));
-  ts.set("seeds_used", join(sd, ","));
-  add_provenance(ts);
-  ts.save(summary_path);
-  fig.particles.save(fig_prefix + kFigureFiles[0]);
-  fig.cells.save(fig_prefix + kFigureFiles[1]);
-  fig.circles.save(fig_prefix + kFigureFiles[2]);
-  std::fprintf(stderr, "[koba_sato_bounds] %s bound violations -> %s\n",
-               ts.get("violations_total").value_or("?").c_str(), summary_path.c_str());
-  return 0;
-}
+  Args& args() { return run_.args(); }
+
+  // The data files: the cases, the hypotheses, the constants; what a row depends on.
+  void open_files() {
+    params_ = {
+        {"program", "koba_sato_bounds"}, {"profile", profile_name(run_.profile())},
+        {"sites", fmt(sw_.n_sites)}, {"cstars", args().str("cstars")}, {"lambdas", args().str("lambdas")},
+        {"weights", args().str("weights")}, {"functions", args().str("functions")}, {"H", fmt(dom_.H)},
+        {"particles", "jittered grid, |eta| < 1/4, mirrored into Omega_H (core)"},
+        {"r_sigma", "max_i max_{y in sigma_i} |y - a_i| over ALL cells of Omega_H (the paper's definition)"},
+        {"delta", "min(r_sigma/2, dist(a_k, boundary of sigma_k))"},
+        {"sites_rule", "particles nearest to points on the circle |x - (1/2,1/2)| = 0.1"},
+        {"error", "|f(a_k) - Pi f|, |grad f - grad~ f| (Euclidean), |lap f - lap~ f|, |lap f - box~ f|"},
+        {"bound", "right-hand sides of Theorems 1.3-1.6 with c1..c12 from the cells; "
+                  "laplacian_with_c8 adds 4 c8 |f|_C1 from Lemma 5.2 (5.4)"},
+        {"cor_bound", "Corollary 7.1's general formulas at the measured r_sigma, C*, lambda "
+                      "(step weight only; its assumptions are not those of real cells)"}};
+    for (auto* f : sw_.funcs)
+      params_.emplace_back("f_" + f->name, f->formula + "; |f|_C0..C3 = " + fmt(f->seminorm[0]) + ", " +
+                                              fmt(f->seminorm[1]) + ", " + fmt(f->seminorm[2]) + ", " +
+                                              fmt(f->seminorm[3]));
+    auto with = [&](std::vector<std::pair<std::string, std::string>> extra) {
+      auto p = params_;
+      p.insert(p.end(), extra.begin(), extra.end());
+      return p;
+    };
+    files_ = run_.open_files(
+        {{out_, params_, kCaseColumns},
+         {hyp_path_,
+          with({{"covering", "B_h(a_k) covered by the closed cells of R-bar(a_k,h) iff uncovered area <= 1e-12 pi h^2"},
+                {"eq_2_6", "(2.6): sup_{y in sigma_i}|y - a_i| <= |a_k - a_i| for i in R(a_k,h)"},
+                {"lemma_2_11", "(2.11): |sum_R int_{sigma_i} w - sum_R V_i w(a_k - a_i)| <= pi L_w r_sigma h^2"}}),
+          kHypothesisColumns},
+         {constants_path_, with({{"sample", "first level, first seed, site 0, lambda = " + fmt(sw_.lambda_sample)}}),
+          kConstantColumns}},
+        kCaseColumns, 2);
+  }
+
+  // One tessellation per (level, seed); a unit is done when every file has it.
+  void units() {
+    run_.expect(static_cast<double>(levels_.size() * seeds_.size() * sw_.n_sites * sw_.cstars.size()), "cases");
+    for (int level : levels_)
+      for (uint64_t seed : seeds_) {
+        const bool sample = level == levels_.front() && seed == seeds_.front();
+        const std::vector<std::string> key = {fmt(level), fmt(static_cast<long long>(seed))};
+        if ((files_[kCases]->has(key) && files_[kHypotheses]->has(key) && (!sample || files_[kConstants]->has(key))) ||
+            !run_.claim())
+          continue;
+        const long long cases = run_unit(run_, level, seed, sw_, sample);
+        run_.unit_done(static_cast<double>(cases),
+                      line_printf("level %d seed %llu: %lld cases (sites x C*)", level,
+                                  static_cast<unsigned long long>(seed), cases));
+      }
+  }
+
+  // The summary (from the case rows) and Figures 1-2's data.
+  void write_summary_and_figures() {
+    TsvTable ts = summary_of(files_[kCases]->table(), levels_, seeds_, sw_.weights);
+    ts.set("program", "koba_sato_bounds");
+    for (auto& [k, v] : params_) ts.set(k, v);
+    std::vector<std::string> lv, sd;  // the units summarized
+    for (int l : levels_) lv.push_back(fmt(l));
+    for (auto x : seeds_) sd.push_back(fmt(static_cast<long long>(x)));
+    ts.set("levels_used", join(lv, ","));
+    ts.set("seeds_used", join(sd, ","));
+    add_provenance(ts);
+    ts.save(summary_path_);
+    fig_.particles.save(fig_prefix_ + kFigureFiles[0]);
+    fig_.cells.save(fig_prefix_ + kFigureFiles[1]);
+    fig_.circles.save(fig_prefix_ + kFigureFiles[2]);
+    std::fprintf(stderr, "[koba_sato_bounds] %s bound violations -> %s\n",
+                 ts.get("violations_total").value_or("?").c_str(), summary_path_.c_str());
+  }
+};
+
+int body(int argc, char** argv) { return Bounds(argc, argv).run(); }
 
 }  // namespace
 

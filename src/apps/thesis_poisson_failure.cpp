@@ -230,186 +230,225 @@ DenseFacts dense_facts(const DiscreteLaplacian& L) {
   return d;
 }
 
-int body(int argc, char** argv) {
+// The program: part (a) over levels, readings of h and weights, part (b) over levels, seeds and
+// radii; each unit a row of its data file, skipped when the file has it (a rerun resumes).
+class PoissonFailure {
+ public:
   // The runner owns the options, both data files (cache, store checks, header stamp), the
   // progress lines and the closing lines; --out is part (a), --out-sweep part (b).
-  StudyRunner run("thesis_poisson_failure",
-                  "Where the discrete Poisson problem (thesis (2.2)) fails: (a) a weight that changes\n"
-                  "sign (cubic spike vs quartic polynomial): sign pattern, CG, maximum principle,\n"
-                  "smallest eigenvalue; (b) h below the h-connectivity threshold: refusal and the\n"
-                  "unchecked solve.  --seed and --levels are part (a)'s.",
-                  "quick (levels 4-6, sweep at 2^-5, 4 seeds) or paper (levels 5-8, sweep at "
-                  "2^-5..2^-7, 8 seeds)");
-  Args& a = run.args();
-  a.output("out-sweep", "", "data file of part (b), the h sweep (required)");
-  run.parse(argc, argv);
-  if (a.str("out-sweep").empty()) throw InputError("--out-sweep PATH is required (see --help)");
-  const Profile prof = run.profile();
-  const uint64_t seed = run.seed();
-  const int dense_max = prof == Profile::quick ? kQuickDenseMax : kPaperDenseMax;
-  const Domain dom;
-  const TestFunction& u = test_function("sin2pi");
+  PoissonFailure(int argc, char** argv)
+      : run_("thesis_poisson_failure",
+             "Where the discrete Poisson problem (thesis (2.2)) fails: (a) a weight that changes\n"
+             "sign (cubic spike vs quartic polynomial): sign pattern, CG, maximum principle,\n"
+             "smallest eigenvalue; (b) h below the h-connectivity threshold: refusal and the\n"
+             "unchecked solve.  --seed and --levels are part (a)'s.",
+             "quick (levels 4-6, sweep at 2^-5, 4 seeds) or paper (levels 5-8, sweep at "
+             "2^-5..2^-7, 8 seeds)") {
+    run_.args().output("out-sweep", "", "data file of part (b), the h sweep (required)");
+    run_.parse(argc, argv);
+    if (run_.args().str("out-sweep").empty()) throw InputError("--out-sweep PATH is required (see --help)");
+    prof_ = run_.profile();
+    seed_ = run_.seed();
+    dense_max_ = prof_ == Profile::quick ? kQuickDenseMax : kPaperDenseMax;
+  }
 
-  // --- The data files, both opened at once (the runner keeps one set of files per run): --
-  // (a) one row per (reading of h, weight, level), (b) one row per (level, seed, h/dx);
-  // each cached, so a rerun skips finished rows.
-  const std::vector<LevelCache*> files = run.open_files(
-      {{run.out(), {{"program", "thesis_poisson_failure"}, {"part", "a: weight sign"},
-                 {"profile", profile_name(prof)}, {"seed", fmt(static_cast<long long>(seed))},
-                 {"tol", fmt(kTol)}, {"max_iter", fmt(kMaxIter)},
-                 {"dense_max_unknowns", fmt(dense_max)}, {"function", "sin2pi"},
-                 {"volumes", "uniform |Omega_H|/N"},
-                 {"h10", "(2.6^4 2^-10 dx)^(1/4)"}, {"h15", "(2.6^4 2^-15 dx)^(1/4)"},
-                 {"probe_source", "f=-1 at particle nearest (0.5,0.5), g=0; max_Omega U/max|U|"},
-                 {"probe_boundary",
-                  "f=0, g=-1 at the outside particle with the smallest column sum of M; "
-                  "max_Omega U/max|U| (mp_boundary) and max_Omega U (mp_boundary_abs)"},
-                 {"green_min", "min entry of (-M_OO)^-1 / max |entry| (dense levels)"},
-                 {"harmonic_min", "min entry of (-M_OO)^-1 M_OB / max |entry| (dense levels)"}},
-                {"h_rule", "weight", "level", "dx", "h", "h_over_dx", "N", "N_omega",
-                 "negative_offdiag", "not_dominant", "positive_diag", "cg_status",
-                 "cg_iterations", "rel_error", "cg_message", "mp_source", "mp_boundary",
-                 "mp_boundary_abs",
-                 "lambda_min", "lambda_max", "green_min", "harmonic_min", "seconds"}},
-       {a.str("out-sweep"), {{"program", "thesis_poisson_failure"}, {"part", "b: h sweep"},
-                 {"profile", profile_name(prof)}, {"seed", seed_list(prof)},
-                 {"weight", kSweepWeight},
-                 {"tol", fmt(kTol)}, {"max_iter", fmt(kMaxIter)}, {"function", "sin2pi"},
-                 {"volumes", "uniform |Omega_H|/N"},
-                 {"h_star", "smallest h with h-connectivity (50 bisection steps in [0.1,3] dx)"},
-                 {"near_threshold", "rows at 0.98, 0.99, 0.995, 1.005, 1.02 h* per seed"},
-                 {"true_residual", "|-Delta_h U - f|_2 / |f + M_OB g|_2 over Omega, recomputed"}},
-                {"level", "seed", "h_over_dx", "dx", "h", "N_omega", "h_star_over_dx",
-                 "connected", "unconnected", "isolated", "checked_status", "checked_message",
-                 "unchecked_status", "unchecked_iterations", "rel_error", "max_abs_U", "true_residual",
-                 "unchecked_message", "seconds"}}},
-      {}, 3);
-  LevelCache& ca = *files[0];
-  LevelCache& cb = *files[1];
+  int run() {
+    open_files();
+    weight_sign();
+    h_sweep();
+    run_.finish();
+    return 0;
+  }
 
-  // --- (a) A weight that changes sign. ----------------------------------------------------
-  for (int k : run.levels(kQuickLevels, kPaperLevels)) {
+ private:
+  StudyRunner run_;
+  Profile prof_{};
+  uint64_t seed_ = 1;
+  int dense_max_ = 0;
+  const Domain dom_{};
+  const TestFunction& u_ = test_function("sin2pi");
+  LevelCache* ca_ = nullptr;  // part (a)'s rows
+  LevelCache* cb_ = nullptr;  // part (b)'s rows
+
+  // The data files, both opened at once (the runner keeps one set of files per run): (a) one
+  // row per (reading of h, weight, level), (b) one row per (level, seed, h/dx); each cached,
+  // so a rerun skips finished rows.
+  void open_files() {
+    const std::vector<LevelCache*> files = run_.open_files(
+        {{run_.out(), {{"program", "thesis_poisson_failure"}, {"part", "a: weight sign"},
+                   {"profile", profile_name(prof_)}, {"seed", fmt(static_cast<long long>(seed_))},
+                   {"tol", fmt(kTol)}, {"max_iter", fmt(kMaxIter)},
+                   {"dense_max_unknowns", fmt(dense_max_)}, {"function", "sin2pi"},
+                   {"volumes", "uniform |Omega_H|/N"},
+                   {"h10", "(2.6^4 2^-10 dx)^(1/4)"}, {"h15", "(2.6^4 2^-15 dx)^(1/4)"},
+                   {"probe_source", "f=-1 at particle nearest (0.5,0.5), g=0; max_Omega U/max|U|"},
+                   {"probe_boundary",
+                    "f=0, g=-1 at the outside particle with the smallest column sum of M; "
+                    "max_Omega U/max|U| (mp_boundary) and max_Omega U (mp_boundary_abs)"},
+                   {"green_min", "min entry of (-M_OO)^-1 / max |entry| (dense levels)"},
+                   {"harmonic_min", "min entry of (-M_OO)^-1 M_OB / max |entry| (dense levels)"}},
+                  {"h_rule", "weight", "level", "dx", "h", "h_over_dx", "N", "N_omega",
+                   "negative_offdiag", "not_dominant", "positive_diag", "cg_status",
+                   "cg_iterations", "rel_error", "cg_message", "mp_source", "mp_boundary",
+                   "mp_boundary_abs",
+                   "lambda_min", "lambda_max", "green_min", "harmonic_min", "seconds"}},
+         {run_.args().str("out-sweep"), {{"program", "thesis_poisson_failure"}, {"part", "b: h sweep"},
+                   {"profile", profile_name(prof_)}, {"seed", seed_list(prof_)},
+                   {"weight", kSweepWeight},
+                   {"tol", fmt(kTol)}, {"max_iter", fmt(kMaxIter)}, {"function", "sin2pi"},
+                   {"volumes", "uniform |Omega_H|/N"},
+                   {"h_star", "smallest h with h-connectivity (50 bisection steps in [0.1,3] dx)"},
+                   {"near_threshold", "rows at 0.98, 0.99, 0.995, 1.005, 1.02 h* per seed"},
+                   {"true_residual", "|-Delta_h U - f|_2 / |f + M_OB g|_2 over Omega, recomputed"}},
+                  {"level", "seed", "h_over_dx", "dx", "h", "N_omega", "h_star_over_dx",
+                   "connected", "unconnected", "isolated", "checked_status", "checked_message",
+                   "unchecked_status", "unchecked_iterations", "rel_error", "max_abs_U", "true_residual",
+                   "unchecked_message", "seconds"}}},
+        {}, 3);
+    ca_ = files[0], cb_ = files[1];
+  }
+
+  // (a) A weight that changes sign: per level one particle set, volumes, data and probes,
+  // shared by both weights and both readings of h.
+  void weight_sign() {
+    for (int k : run_.levels(kQuickLevels, kPaperLevels)) {
+      const double dx = std::ldexp(1.0, -k);
+      const Particles p = jittered_grid(dx, seed_);
+      const auto V = uniform_volumes(p, dom_);
+      const PoissonData problem = poisson_data(p, u_);
+      std::vector<double> f_src(p.size(), 0.0);
+      f_src[nearest(p, 0.5, 0.5, true)] = -1;
+      for (HRule rule : pde_h_rules())
+        for (const auto& wname : kWeights)
+          if (!ca_->has({h_rule_name(rule), wname, fmt(k)}) && run_.claim())
+            weight_sign_unit(k, p, V, problem, f_src, rule, wname);
+    }
+  }
+
+  // One (level, reading of h, weight): sign pattern, the smooth problem of Table 4.4, the two
+  // maximum-principle probes and, on small levels, the dense facts.
+  void weight_sign_unit(int k, const Particles& p, const std::vector<double>& V, const PoissonData& problem,
+                        const std::vector<double>& f_src, HRule rule_id, const std::string& wname) {
     const double dx = std::ldexp(1.0, -k);
-    // Particles, volumes, data and probes: shared by both weights and readings of h.
-    const Particles p = jittered_grid(dx, seed);
-    const auto V = uniform_volumes(p, dom);
-    const auto [f, g, umax] = poisson_data(p, u);
-    std::vector<double> zero(p.size(), 0.0), f_src(p.size(), 0.0);
-    f_src[nearest(p, 0.5, 0.5, true)] = -1;
-    for (HRule rule_id : pde_h_rules())
-      for (const auto& wname : kWeights) {
-        const std::string rule = h_rule_name(rule_id);  // the data file's h_rule
-        if (ca.has({rule, wname, fmt(k)}) || !run.claim()) continue;
-        const auto t0 = std::chrono::steady_clock::now();
-        const double h = pde_h(rule_id, dx);
-        const DiscreteLaplacian L(p, V, weight(wname), h, LaplacianStorage::assembled);
-        std::vector<double> g_bnd(p.size(), 0.0);
-        g_bnd[most_negative_boundary_particle(L)] = -1;
-        const SignPattern sp = sign_pattern(L);
-        // The smooth problem of Table 4.4, then the two maximum-principle probes.
-        const Outcome sol = try_solve(p, L, f, g, true);
-        double err = NAN;
-        if (sol.status == "ok") {
-          err = 0;
-          for (std::size_t i = 0; i < p.size(); ++i)
-            if (p.in_omega[i]) err = std::max(err, std::fabs(g[i] - sol.U[i]));
-          err /= umax;
-        }
-        const Outcome src = try_solve(p, L, f_src, zero, true);
-        const Outcome bnd = try_solve(p, L, zero, g_bnd, true);
-        DenseFacts df;
-        if (static_cast<int>(L.n_unknowns()) <= dense_max) df = dense_facts(L);
-        const double secs = seconds_since(t0);
-        auto probe = [&](const Outcome& o) {
-          return o.status == "ok" ? fmt(rise_above_zero(p, o.U)) : std::string("nan");
-        };
-        TsvRow row = run.row(0);
-        row["h_rule"] = rule, row["weight"] = wname, row["level"] = fmt(k), row["dx"] = fmt(dx);
-        row["h"] = fmt(h), row["h_over_dx"] = fmt(h / dx), row["N"] = fmt(p.size());
-        row["N_omega"] = fmt(L.n_unknowns()), row["negative_offdiag"] = fmt(sp.negative_offdiag);
-        row["not_dominant"] = fmt(sp.not_dominant), row["positive_diag"] = fmt(sp.positive_diag);
-        row["cg_status"] = sol.status, row["cg_iterations"] = fmt(sol.iterations);
-        row["rel_error"] = fmt(err), row["cg_message"] = sol.message;
-        row["mp_source"] = probe(src), row["mp_boundary"] = probe(bnd);
-        row["mp_boundary_abs"] = bnd.status == "ok" ? fmt(omega_max(p, bnd.U)) : "nan";
-        row["lambda_min"] = fmt(df.lambda_min), row["lambda_max"] = fmt(df.lambda_max);
-        row["green_min"] = fmt(df.green_min), row["harmonic_min"] = fmt(df.harmonic_min);
-        row["seconds"] = fmt(secs);
-        run.add(0, row);
-        run.unit_done(0, line_printf("(a) %s %-18s dx=2^-%d h/dx=%.2f neg.off=%.3f CG %s (%d it) "
-                                     "err=%.3g  mp src=%s bnd=%s  lmin=%.4g green_min=%.3g  %.1f s",
-                                     rule.c_str(), wname.c_str(), k, h / dx, sp.negative_offdiag,
-                                     sol.status.c_str(), sol.iterations, err, probe(src).c_str(),
-                                     probe(bnd).c_str(), df.lambda_min, df.green_min, secs));
+    const std::string rule = h_rule_name(rule_id);  // the data file's h_rule
+    const auto& [f, g, umax] = problem;
+    const std::vector<double> zero(p.size(), 0.0);
+    const auto t0 = std::chrono::steady_clock::now();
+    const double h = pde_h(rule_id, dx);
+    const DiscreteLaplacian L(p, V, weight(wname), h, LaplacianStorage::assembled);
+    std::vector<double> g_bnd(p.size(), 0.0);
+    g_bnd[most_negative_boundary_particle(L)] = -1;
+    const SignPattern sp = sign_pattern(L);
+    // The smooth problem of Table 4.4, then the two maximum-principle probes.
+    const Outcome sol = try_solve(p, L, f, g, true);
+    double err = NAN;
+    if (sol.status == "ok") {
+      err = 0;
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.in_omega[i]) err = std::max(err, std::fabs(g[i] - sol.U[i]));
+      err /= umax;
+    }
+    const Outcome src = try_solve(p, L, f_src, zero, true);
+    const Outcome bnd = try_solve(p, L, zero, g_bnd, true);
+    DenseFacts df;
+    if (static_cast<int>(L.n_unknowns()) <= dense_max_) df = dense_facts(L);
+    const double secs = seconds_since(t0);
+    auto probe = [&](const Outcome& o) {
+      return o.status == "ok" ? fmt(rise_above_zero(p, o.U)) : std::string("nan");
+    };
+    TsvRow row = run_.row(0);
+    row["h_rule"] = rule, row["weight"] = wname, row["level"] = fmt(k), row["dx"] = fmt(dx);
+    row["h"] = fmt(h), row["h_over_dx"] = fmt(h / dx), row["N"] = fmt(p.size());
+    row["N_omega"] = fmt(L.n_unknowns()), row["negative_offdiag"] = fmt(sp.negative_offdiag);
+    row["not_dominant"] = fmt(sp.not_dominant), row["positive_diag"] = fmt(sp.positive_diag);
+    row["cg_status"] = sol.status, row["cg_iterations"] = fmt(sol.iterations);
+    row["rel_error"] = fmt(err), row["cg_message"] = sol.message;
+    row["mp_source"] = probe(src), row["mp_boundary"] = probe(bnd);
+    row["mp_boundary_abs"] = bnd.status == "ok" ? fmt(omega_max(p, bnd.U)) : "nan";
+    row["lambda_min"] = fmt(df.lambda_min), row["lambda_max"] = fmt(df.lambda_max);
+    row["green_min"] = fmt(df.green_min), row["harmonic_min"] = fmt(df.harmonic_min);
+    row["seconds"] = fmt(secs);
+    run_.add(0, row);
+    run_.unit_done(0, line_printf("(a) %s %-18s dx=2^-%d h/dx=%.2f neg.off=%.3f CG %s (%d it) "
+                                 "err=%.3g  mp src=%s bnd=%s  lmin=%.4g green_min=%.3g  %.1f s",
+                                 rule.c_str(), wname.c_str(), k, h / dx, sp.negative_offdiag,
+                                 sol.status.c_str(), sol.iterations, err, probe(src).c_str(),
+                                 probe(bnd).c_str(), df.lambda_min, df.green_min, secs));
+  }
+
+  // (b) h below the connectivity threshold: per level and seed, the grid's threshold h* and
+  // radii on a fixed grid of h/dx and just below and above h*.
+  void h_sweep() {
+    for (int k : pick(prof_, kQuickSweepLevels, kPaperSweepLevels))
+      for (int s : pick(prof_, kQuickSeeds, kPaperSeeds)) {
+        const double dx = std::ldexp(1.0, -k);
+        const Particles p = jittered_grid(dx, static_cast<uint64_t>(s));
+        const auto V = uniform_volumes(p, dom_);
+        const PoissonData problem = poisson_data(p, u_);
+        const double h_star = h_connectivity_threshold(p, dx);
+        std::vector<double> radii;
+        for (double c : kRatios) radii.push_back(c * dx);
+        for (double c : kNearThreshold) radii.push_back(c * h_star);
+        for (double h : radii)
+          if (!cb_->has({fmt(k), fmt(s), fmt(h / dx)}) && run_.claim()) sweep_unit(k, s, p, V, problem, h_star, h);
       }
   }
 
-  // --- (b) h below the connectivity threshold. ---------------------------------------------
-  for (int k : pick(prof, kQuickSweepLevels, kPaperSweepLevels))
-    for (int s : pick(prof, kQuickSeeds, kPaperSeeds)) {
-      const double dx = std::ldexp(1.0, -k);
-      const Particles p = jittered_grid(dx, static_cast<uint64_t>(s));
-      const auto V = uniform_volumes(p, dom);
-      const auto [f, g, umax] = poisson_data(p, u);
-      // The threshold of this grid, and radii just below and above it.
-      const double h_star = h_connectivity_threshold(p, dx);
-      std::vector<double> radii;
-      for (double c : kRatios) radii.push_back(c * dx);
-      for (double c : kNearThreshold) radii.push_back(c * h_star);
-      for (double h : radii) {
-        const double c = h / dx;
-        if (cb.has({fmt(k), fmt(s), fmt(c)}) || !run.claim()) continue;
-        const auto t0 = std::chrono::steady_clock::now();
-        const ConnectivityResult con = h_connectivity(p, h);
-        const DiscreteLaplacian L(p, V, weight(kSweepWeight), h, LaplacianStorage::assembled);
-        long long isolated = 0;  // rows of M that are all zero: no neighbour within h
-        for (Eigen::Index r = 0; r < L.diagonal().size(); ++r) isolated += L.diagonal()[r] == 0;
-        const Outcome chk = try_solve(p, L, f, g, true);
-        const Outcome unc = try_solve(p, L, f, g, false);
-        double err = NAN, big = NAN, true_res = NAN;
-        if (unc.status == "ok") {
-          // CG stops on its recursively updated residual; recompute ‖−Δ_h U − f‖₂ over Ω
-          // relative to the right-hand side ‖f + M_ΩB g̃‖₂ (V is uniform, D cancels).
-          Eigen::VectorXd full(static_cast<Eigen::Index>(p.size())), ghat(full.size()), mu, mg;
-          for (std::size_t i = 0; i < p.size(); ++i)
-            full[i] = unc.U[i], ghat[i] = p.in_omega[i] ? 0.0 : g[i];
-          L.apply_full(full, mu);
-          L.apply_full(ghat, mg);
-          double rr = 0, bb = 0;
-          for (std::size_t q = 0; q < L.omega().size(); ++q) {
-            const double fq = f[L.omega()[q]];
-            rr += (mu[q] + fq) * (mu[q] + fq);
-            bb += (fq + mg[q]) * (fq + mg[q]);
-          }
-          true_res = std::sqrt(rr / bb);
-          err = 0, big = 0;
-          for (std::size_t i = 0; i < p.size(); ++i)
-            if (p.in_omega[i])
-              err = std::max(err, std::fabs(g[i] - unc.U[i])),
-              big = std::max(big, std::fabs(unc.U[i]));
-          err /= umax;
-        }
-        const double secs = seconds_since(t0);
-        TsvRow row = run.row(1);
-        row["level"] = fmt(k), row["seed"] = fmt(s), row["h_over_dx"] = fmt(c), row["dx"] = fmt(dx);
-        row["h"] = fmt(h), row["N_omega"] = fmt(L.n_unknowns()), row["h_star_over_dx"] = fmt(h_star / dx);
-        row["connected"] = con.connected ? "yes" : "no", row["unconnected"] = fmt(con.unconnected.size());
-        row["isolated"] = fmt(isolated), row["checked_status"] = chk.status;
-        row["checked_message"] = chk.message, row["unchecked_status"] = unc.status;
-        row["unchecked_iterations"] = fmt(unc.iterations), row["rel_error"] = fmt(err);
-        row["max_abs_U"] = fmt(big), row["true_residual"] = fmt(true_res);
-        row["unchecked_message"] = unc.message, row["seconds"] = fmt(secs);
-        run.add(1, row);
-        run.unit_done(0, line_printf("(b) dx=2^-%d seed %d h/dx=%.2f (h*/dx=%.3f) %s, %zu unconnected, "
-                                     "%lld isolated; checked: %s; unchecked: %s err=%.3g  %.2f s",
-                                     k, s, c, h_star / dx, con.connected ? "connected" : "NOT connected",
-                                     con.unconnected.size(), isolated, chk.status.c_str(), unc.status.c_str(),
-                                     err, secs));
+  // One (level, seed, h): connectivity, the checked solve (refuses) and the unchecked one.
+  void sweep_unit(int k, int s, const Particles& p, const std::vector<double>& V, const PoissonData& problem,
+                  double h_star, double h) {
+    const double dx = std::ldexp(1.0, -k), c = h / dx;
+    const auto& [f, g, umax] = problem;
+    const auto t0 = std::chrono::steady_clock::now();
+    const ConnectivityResult con = h_connectivity(p, h);
+    const DiscreteLaplacian L(p, V, weight(kSweepWeight), h, LaplacianStorage::assembled);
+    long long isolated = 0;  // rows of M that are all zero: no neighbour within h
+    for (Eigen::Index r = 0; r < L.diagonal().size(); ++r) isolated += L.diagonal()[r] == 0;
+    const Outcome chk = try_solve(p, L, f, g, true);
+    const Outcome unc = try_solve(p, L, f, g, false);
+    double err = NAN, big = NAN, true_res = NAN;
+    if (unc.status == "ok") {
+      // CG stops on its recursively updated residual; recompute ‖−Δ_h U − f‖₂ over Ω
+      // relative to the right-hand side ‖f + M_ΩB g̃‖₂ (V is uniform, D cancels).
+      Eigen::VectorXd full(static_cast<Eigen::Index>(p.size())), ghat(full.size()), mu, mg;
+      for (std::size_t i = 0; i < p.size(); ++i)
+        full[i] = unc.U[i], ghat[i] = p.in_omega[i] ? 0.0 : g[i];
+      L.apply_full(full, mu);
+      L.apply_full(ghat, mg);
+      double rr = 0, bb = 0;
+      for (std::size_t q = 0; q < L.omega().size(); ++q) {
+        const double fq = f[L.omega()[q]];
+        rr += (mu[q] + fq) * (mu[q] + fq);
+        bb += (fq + mg[q]) * (fq + mg[q]);
       }
+      true_res = std::sqrt(rr / bb);
+      err = 0, big = 0;
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.in_omega[i])
+          err = std::max(err, std::fabs(g[i] - unc.U[i])),
+          big = std::max(big, std::fabs(unc.U[i]));
+      err /= umax;
     }
-  run.finish();
-  return 0;
-}
+    const double secs = seconds_since(t0);
+    TsvRow row = run_.row(1);
+    row["level"] = fmt(k), row["seed"] = fmt(s), row["h_over_dx"] = fmt(c), row["dx"] = fmt(dx);
+    row["h"] = fmt(h), row["N_omega"] = fmt(L.n_unknowns()), row["h_star_over_dx"] = fmt(h_star / dx);
+    row["connected"] = con.connected ? "yes" : "no", row["unconnected"] = fmt(con.unconnected.size());
+    row["isolated"] = fmt(isolated), row["checked_status"] = chk.status;
+    row["checked_message"] = chk.message, row["unchecked_status"] = unc.status;
+    row["unchecked_iterations"] = fmt(unc.iterations), row["rel_error"] = fmt(err);
+    row["max_abs_U"] = fmt(big), row["true_residual"] = fmt(true_res);
+    row["unchecked_message"] = unc.message, row["seconds"] = fmt(secs);
+    run_.add(1, row);
+    run_.unit_done(0, line_printf("(b) dx=2^-%d seed %d h/dx=%.2f (h*/dx=%.3f) %s, %zu unconnected, "
+                                 "%lld isolated; checked: %s; unchecked: %s err=%.3g  %.2f s",
+                                 k, s, c, h_star / dx, con.connected ? "connected" : "NOT connected",
+                                 con.unconnected.size(), isolated, chk.status.c_str(), unc.status.c_str(),
+                                 err, secs));
+  }
+};
+
+int body(int argc, char** argv) { return PoissonFailure(argc, argv).run(); }
 
 }  // namespace
 
