@@ -22,6 +22,23 @@ TEST_CASE("two-level and least-squares rates recover a power law", "[norms]") {
   CHECK(std::isnan(two_level_rate(0.1, 0.0, 0.05, 1.0)));
 }
 
+TEST_CASE("the least-squares rate's 95 % interval is Student's t times the slope's standard error", "[norms]") {
+  // log e = 2 log h + r with residuals (d, -2d, d) at log h = 0, 1, 2: orthogonal to the
+  // centred abscissa, so the slope stays 2; SSR = 6 d^2, Sxx = 2, one degree of freedom.
+  const double d = 0.1;
+  const std::vector<double> r = {d, -2 * d, d};
+  std::vector<double> h, e;
+  for (int k = 0; k < 3; ++k) h.push_back(std::exp(k)), e.push_back(std::exp(2.0 * k + r[k]));
+  const RateFit fit = least_squares_fit(h, e);
+  CHECK(fit.points == 3);
+  CHECK(fit.slope == Approx(2.0).epsilon(1e-12));
+  CHECK(fit.half95 == Approx(12.706204736174705 * std::sqrt(6 * d * d / 2)).epsilon(1e-9));
+  // An exact power law has no scatter; two points have no interval; a zero error is skipped.
+  CHECK(least_squares_fit({0.1, 0.05, 0.025}, {1e-2, 2.5e-3, 6.25e-4}).half95 == Approx(0).margin(1e-12));
+  CHECK(std::isnan(least_squares_fit({0.1, 0.05}, {1e-2, 2.5e-3}).half95));
+  CHECK(least_squares_fit({0.1, 0.05, 0.025}, {1e-2, 0.0, 6.25e-4}).points == 2);
+}
+
 TEST_CASE("discrete max norms respect the mask and refuse non-finite values", "[norms]") {
   std::vector<double> a = {1, -5, 2}, b = {1, 1, 1};
   std::vector<uint8_t> m = {1, 0, 1};

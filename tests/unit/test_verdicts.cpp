@@ -173,6 +173,9 @@ TEST_CASE("verdicts: a heat series unstable at both rate levels", "[unit][verdic
         "both unstable (unstable at both rate levels (2^-8: error 2 after 16 steps; 2^-9: error 8 after 22 steps)), "
         "rate < 0 on both sides: sign only");
   CHECK(row(j, "thesis_table4_6", "h10", "quartic_polynomial 1").verdict == Verdict::agrees);
+  // The least-squares slope beside the two-level rate: two levels fit exactly, no interval.
+  CHECK(row(j, "thesis_table4_6", "h10", "quartic_polynomial 1").rate.lsq == "2.00 (2 levels)");
+  CHECK(blown.rate.lsq.empty());
   // Undecided identification: the identified board is the printed one, without fingerprints.
   for (auto& r : j) CHECK((r.printed && r.identified && r.verdict_identified == r.verdict));
 }
@@ -212,7 +215,7 @@ TEST_CASE("verdicts: the printed and identified boards, with the fingerprint row
 
   const TsvTable rates = rates_table(j);
   CHECK(rates.columns == std::vector<std::string>{"table", "slice", "setup", "key", "published", "reproduced",
-                                                  "levels", "status", "seed_band", "verdict", "reason", "printed",
+                                                  "levels", "lsq", "status", "seed_band", "verdict", "reason", "printed",
                                                   "identified", "verdict_identified", "counted"});
   const std::string published_dir = std::string(GPM_SOURCE_DIR) + "/tables/published";
   const TsvTable score = score_table(j, published_dir);

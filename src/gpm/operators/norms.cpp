@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include <gsl/gsl_cdf.h>
+
 #include "gpm/error.hpp"
 
 namespace gpm {
@@ -37,17 +39,35 @@ double two_level_rate(double h1, double e1, double h2, double e2) {
   return std::log(e1 / e2) / std::log(h1 / h2);
 }
 
-double least_squares_rate(const std::vector<double>& h, const std::vector<double>& e) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  int n = 0;
-  for (std::size_t k = 0; k < h.size() && k < e.size(); ++k) {
-    if (!(h[k] > 0 && e[k] > 0)) continue;
-    const double x = std::log(h[k]), y = std::log(e[k]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y, ++n;
+RateFit least_squares_fit(const std::vector<double>& h, const std::vector<double>& e) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> xs, ys;
+  for (std::size_t k = 0; k < h.size() && k < e.size(); ++k)
+    if (h[k] > 0 && e[k] > 0 && std::isfinite(h[k]) && std::isfinite(e[k]))
+      xs.push_back(std::log(h[k])), ys.push_back(std::log(e[k]));
+  RateFit fit{nan, nan, static_cast<int>(xs.size())};
+  if (fit.points < 2) return fit;
+  // Centred sums: the slope and its residual scatter without cancellation.
+  double mx = 0, my = 0;
+  for (std::size_t k = 0; k < xs.size(); ++k) mx += xs[k], my += ys[k];
+  mx /= fit.points, my /= fit.points;
+  double sxx = 0, sxy = 0;
+  for (std::size_t k = 0; k < xs.size(); ++k) sxx += (xs[k] - mx) * (xs[k] - mx), sxy += (xs[k] - mx) * (ys[k] - my);
+  if (!(sxx > 0)) return fit;
+  fit.slope = sxy / sxx;
+  if (fit.points < 3) return fit;  // two points fit exactly: no scatter to measure
+  double ssr = 0;
+  for (std::size_t k = 0; k < xs.size(); ++k) {
+    const double r = ys[k] - my - fit.slope * (xs[k] - mx);
+    ssr += r * r;
   }
-  if (n < 2) return std::numeric_limits<double>::quiet_NaN();
-  const double den = n * sxx - sx * sx;
-  return den != 0 ? (n * sxy - sx * sy) / den : std::numeric_limits<double>::quiet_NaN();
+  const int dof = fit.points - 2;
+  fit.half95 = gsl_cdf_tdist_Pinv(0.975, dof) * std::sqrt(ssr / dof / sxx);
+  return fit;
+}
+
+double least_squares_rate(const std::vector<double>& h, const std::vector<double>& e) {
+  return least_squares_fit(h, e).slope;
 }
 
 }  // namespace gpm

@@ -17,7 +17,16 @@ double max_abs_diff(const std::vector<double>& a, const std::vector<double>& b,
 
 // log(e1/e2) / log(h1/h2): the documents' "numerical convergence rate".
 double two_level_rate(double h1, double e1, double h2, double e2);
-// Least-squares slope of log e against log h.
+// Least-squares slope of log e against log h over the points with h, e > 0, and the half-width
+// of its 95 % confidence interval (Student's t with points − 2 degrees of freedom: the scatter
+// of the points about the line, so a series whose rate drifts with the level gets a wide
+// interval).  Slope NaN under two points; half-width NaN under three.
+struct RateFit {
+  double slope, half95;
+  int points;
+};
+RateFit least_squares_fit(const std::vector<double>& h, const std::vector<double>& e);
+// Its slope alone.
 double least_squares_rate(const std::vector<double>& h, const std::vector<double>& e);
 
 }  // namespace gpm

@@ -73,14 +73,14 @@ std::map<std::string, int> join_rates(const TsvTable& data, const TsvTable& pub,
 
   out.columns.insert(out.columns.end(), join.keys.begin(), join.keys.end());
   for (const char* c : {"published", "theoretical", "reproduced", "difference", "lsq_slope",
-                        "levels", "status", "reason"})
+                        "lsq_half95", "lsq_points", "levels", "status", "reason"})
     out.columns.push_back(c);
   const std::vector<int> fixed = fixed_levels(join, pub, out);
   std::map<std::string, int> counts;
   for (std::size_t i = 0; i < pub.rows.size(); ++i) {
     const std::string key = key_of(pub, i, pk);
     const double published = pub.number(i, cv);
-    std::string rep = "NA", diff = "NA", lsq = "NA", levels = "", status = "not-computed", why = "";
+    std::string rep = "NA", diff = "NA", lsq = "NA", half = "NA", points = "0", levels = "", status = "not-computed", why = "";
     auto it = series.find(key);
     const bool have = it != series.end() &&
                       (fixed.empty() ? it->second.size() >= 2
@@ -93,7 +93,8 @@ std::map<std::string, int> join_rates(const TsvTable& data, const TsvTable& pub,
       std::vector<double> xs, ys;
       for (auto& [lv, pt] : it->second) xs.push_back(pt.x), ys.push_back(pt.y);
       rep = fmt(rate);
-      lsq = fmt(least_squares_rate(xs, ys));
+      const RateFit fit = least_squares_fit(xs, ys);
+      lsq = fmt(fit.slope), half = fmt(fit.half95), points = fmt(static_cast<long long>(fit.points));
       levels = std::to_string(prev->first) + "," + std::to_string(last->first);
       // NaN fails every comparison: tested first, or it would fall through to a reason.
       if (!std::isfinite(rate) || !std::isfinite(published)) {
@@ -112,7 +113,7 @@ std::map<std::string, int> join_rates(const TsvTable& data, const TsvTable& pub,
     std::vector<std::string> row;
     for (int c : pk) row.push_back(pub.text(i, c));
     for (auto& s : {fmt(published), ct >= 0 ? pub.text(i, ct) : std::string("NA"), rep, diff, lsq,
-                    levels, status, why})
+                    half, points, levels, status, why})
       row.push_back(s);
     out.add_row(row);
   }

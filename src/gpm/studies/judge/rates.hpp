@@ -3,7 +3,8 @@
 // (verdicts.hpp) builds it for every slice of the result store and judges its rows.
 //
 // Per published row (matched on the key columns), the documents' rate log(e₁/e₂)/log(h₁/h₂)
-// between two levels, a least-squares slope over all levels, and a status:
+// between two levels, a least-squares slope over all levels with the half-width of its 95 %
+// interval and the number of levels it fits (lsq_slope, lsq_half95, lsq_points), and a status:
 //   other-levels   the rate comes from other levels than the document's (the published
 //                  file's rate_levels): shown, not judged — a pre-asymptotic rate from
 //                  coarser levels neither agrees nor differs with the document
@@ -41,7 +42,7 @@ struct RateJoin {
 
 
 // Appends to `out` the columns (the keys, then published, theoretical, reproduced,
-// difference, lsq_slope, levels, status, reason) and one row per published row, in the
+// difference, lsq_slope, lsq_half95, lsq_points, levels, status, reason) and one row per published row, in the
 // published file's order; sets `out`'s rate_levels (fixed levels) and count_<status> lines.
 // Returns the rows per status.  InputError (naming the file, by TsvTable::source) for a
 // missing column, a cell that is no number, two data rows with the same key and level, or

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "gpm/error.hpp"
+#include "gpm/io/args.hpp"
 #include "gpm/io/provenance.hpp"
 #include "gpm/studies/judge/rates.hpp"
 
@@ -234,6 +235,26 @@ std::string slice_setup(const std::string& table, const std::string& slice) {
   return kDocumentSetup;
 }
 
+namespace {
+// A joined row's least-squares slope as StoreRate::lsq writes it.
+std::string lsq_text(const TsvTable& joined, std::size_t i) {
+  // A cell that holds no number (NA: the series has under two levels) gives NaN.
+  auto cell = [&](const char* name) {
+    const int c = joined.column(name);
+    double v = NAN;
+    return c >= 0 && read_decimal(joined.text(i, c), v) ? v : NAN;
+  };
+  const double slope = cell("lsq_slope"), half = cell("lsq_half95"), points = cell("lsq_points");
+  if (!std::isfinite(slope)) return "";
+  char buf[64];
+  if (std::isfinite(half))
+    std::snprintf(buf, sizeof buf, "%.2f \u00b1 %.2f (%.0f levels)", slope, half, points);
+  else
+    std::snprintf(buf, sizeof buf, "%.2f (%.0f levels)", slope, points);
+  return buf;
+}
+}  // namespace
+
 std::vector<StoreRate> store_rates_of(const std::string& table, const std::string& slice,
                                       const TsvTable& joined, const std::vector<std::string>& keys,
                                       bool claims_theoretical, const std::string& split_by) {
@@ -247,6 +268,7 @@ std::vector<StoreRate> store_rates_of(const std::string& table, const std::strin
     r.published = joined.text(i, "published");
     r.reproduced = joined.text(i, "reproduced");
     r.levels = joined.text(i, "levels");
+    r.lsq = lsq_text(joined, i);
     r.status = setup == kDocumentSetup ? joined.text(i, "status") : "no published value for this set-up";
     // Only a printed NA means "no convergence claimed" (rate_table writes NA where the
     // published file has no theoretical column).
@@ -356,13 +378,13 @@ std::vector<JudgedRate> judge_rates(const std::vector<StoreRate>& rates, const U
 
 TsvTable rates_table(const std::vector<JudgedRate>& rates) {
   TsvTable t;
-  t.columns = {"table",  "slice",     "setup",   "key",     "published",  "reproduced",         "levels", "status",
+  t.columns = {"table",  "slice",     "setup",   "key",     "published",  "reproduced",         "levels", "lsq", "status",
                "seed_band", "verdict", "reason", "printed", "identified", "verdict_identified", "counted"};
   for (const JudgedRate& j : rates) {
     TsvRow row = t.named_row();
     row["table"] = j.rate.table, row["slice"] = j.rate.slice, row["setup"] = j.rate.setup;
     row["key"] = j.rate.key, row["published"] = j.rate.published, row["reproduced"] = j.rate.reproduced;
-    row["levels"] = j.rate.levels, row["status"] = j.rate.status, row["seed_band"] = j.seed_band;
+    row["levels"] = j.rate.levels, row["lsq"] = j.rate.lsq, row["status"] = j.rate.status, row["seed_band"] = j.seed_band;
     row["verdict"] = verdict_name(j.verdict), row["reason"] = j.reason;
     row["printed"] = j.printed ? "yes" : "no", row["identified"] = j.identified ? "yes" : "no";
     row["verdict_identified"] = verdict_name(j.verdict_identified);
