@@ -345,8 +345,14 @@ end
 local GREEK = {alpha = "α", beta = "β", gamma = "γ", delta = "δ", eps = "ε", epsilon = "ε",
                theta = "θ", kappa = "κ", lambda = "λ", mu = "μ", nu = "ν", pi = "π", rho = "ρ",
                sigma = "σ", tau = "τ", phi = "φ", omega = "ω", Omega = "Ω", Delta = "Δ"}
-local SUBSCRIPT = {i = "ᵢ", j = "ⱼ", k = "ₖ", m = "ₘ", n = "ₙ", h = "ₕ", x = "ₓ",
-                   ["0"] = "₀", ["1"] = "₁", ["2"] = "₂", ["3"] = "₃"}
+local SUBSCRIPT = {a = "ₐ", e = "ₑ", h = "ₕ", i = "ᵢ", j = "ⱼ", k = "ₖ", l = "ₗ", m = "ₘ", n = "ₙ",
+                   o = "ₒ", p = "ₚ", r = "ᵣ", s = "ₛ", t = "ₜ", u = "ᵤ", v = "ᵥ", x = "ₓ",
+                   ["0"] = "₀", ["1"] = "₁", ["2"] = "₂", ["3"] = "₃", ["4"] = "₄", ["5"] = "₅",
+                   ["6"] = "₆", ["7"] = "₇", ["8"] = "₈", ["9"] = "₉"}
+-- A subscript letter Unicode lacks (c, w, …) is marked and set as a real subscript by
+-- cell_inlines (r_c: r with a subscript c).
+local SUB_MARK = "\u{E000}"
+local function subscript(sub) return SUBSCRIPT[sub] or (SUB_MARK .. sub) end
 local function ascii_math(v)
   if v:find("--", 1, true) or v:find("%.%a%a%a?$") or v:find("%.%a%a%a?[%s,;)]") then return v end
   v = v:gsub("%f[%a]eps_grad%f[%A]", "ε∇")
@@ -354,18 +360,46 @@ local function ascii_math(v)
     local g = GREEK[word]
     if not g then return nil end
     if sub ~= "" and digits == "" then
-      return g .. (SUBSCRIPT[sub] or "_" .. sub)
+      return g .. subscript(sub)
     end
     if sub ~= "" then return nil end
     return g .. digits
   end)
-  v = v:gsub("%f[%w](%a)_(%w)%f[%W]", function(x, sub) return SUBSCRIPT[sub] and x .. SUBSCRIPT[sub] or nil end)
+  v = v:gsub("%f[%w](%a)_(%w)%f[%W]", function(x, sub) return x .. subscript(sub) end)
   v = v:gsub("%f[%a]d([xt])%f[%A]", "Δ%1")
   return v
 end
 
+-- A piece of a cell as inlines: the marked subscripts (SUB_MARK) as Subscript elements.
+local function piece_inlines(piece)
+  local out = {}
+  local rest = piece
+  while true do
+    local at = rest:find(SUB_MARK, 1, true)
+    if not at then break end
+    if at > 1 then table.insert(out, pandoc.Str(rest:sub(1, at - 1))) end
+    local sub = rest:sub(at + #SUB_MARK, at + #SUB_MARK)
+    table.insert(out, pandoc.Subscript({pandoc.Str(sub)}))
+    rest = rest:sub(at + #SUB_MARK + 1)
+  end
+  if rest ~= "" then table.insert(out, pandoc.Str(rest)) end
+  return out
+end
+
+-- A number printed with more digits than anyone reads (a double's 17: "0.004158723777973314"),
+-- in a cell whose block sets no digits=, is shown to 6 significant digits; never in a command
+-- line or a file name.
+local function long_numbers(v)
+  if v:find("--", 1, true) or v:find("%.%a%a%a?$") or v:find("%.%a%a%a?[%s,;)]") then return v end
+  return (v:gsub("%f[%w.]%d+%.%d+%f[^%d.]", function(n)
+    local significant = n:gsub("%.", ""):gsub("^0+", "")
+    if #significant <= 10 then return nil end
+    return string.format("%.6g", tonumber(n))
+  end))
+end
+
 local function cell_inlines(v)
-  v = ascii_math(v)
+  v = long_numbers(ascii_math(v))
   -- The author's name as a word (a program's label "imoto §5 (Π1)"), not inside a file name,
   -- an identifier or a command line, is set capitalized.
   if not v:find(" --", 1, true) then v = v:gsub("%f[%w_/%-]imoto%f[^%w_%-]", "Imoto") end
@@ -378,9 +412,9 @@ local function cell_inlines(v)
     for i, piece in ipairs(parts) do
       if i > 1 then table.insert(out, pandoc.Str("\u{200B}")) end
       if piece:find("[-/]") or piece:find("–", 1, true) or piece:find("−", 1, true) then
-        table.insert(out, pandoc.Span({pandoc.Str(piece)}, pandoc.Attr("", {"nobr"})))
+        table.insert(out, pandoc.Span(piece_inlines(piece), pandoc.Attr("", {"nobr"})))
       elseif piece ~= "" then
-        table.insert(out, pandoc.Str(piece))
+        for _, x in ipairs(piece_inlines(piece)) do table.insert(out, x) end
       end
     end
     if space ~= "" then table.insert(out, pandoc.Space()) end

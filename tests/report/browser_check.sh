@@ -10,6 +10,8 @@
 #   * text in a figure that prints below 8 pt (the base size of each SVG <text>, scaled by
 #     the width the figure takes on the page; 1 px = 0.75 pt at the A4 printable width),
 #   * a table cell in which a word or a number wraps onto a second line,
+#   * a number with more than 10 significant digits in a table cell (outside code, a command
+#     line or a file name);
 #   * plain-text math in a table cell (V_i, rho, lambda0, 2pi) outside code, a command line or
 #     a file name,
 #   * a raw caret exponent (2^-8, ^{...}) or a bare nan in the text outside code, where the
@@ -126,6 +128,15 @@ window.addEventListener('load', function () {
     if (raw) {
       var tb = cell.closest('table'), c = tb && tb.querySelector('caption');
       out.push('RAW MATH "' + raw[0].trim() + '" in a table: ' + flat(c ? c.textContent : '').slice(0, 60));
+    }
+    // A number with more than 10 significant digits (a double printed in full).
+    var nums = t.match(/\d+\.\d+/g) || [];
+    for (var k = 0; k < nums.length; k++) {
+      if (nums[k].replace('.', '').replace(/^0+/, '').length > 10) {
+        var tl = cell.closest('table'), cl = tl && tl.querySelector('caption');
+        out.push('LONG NUMBER "' + nums[k] + '" in a table: ' + flat(cl ? cl.textContent : '').slice(0, 60));
+        break;
+      }
     }
   });
   document.querySelectorAll('span.math').forEach(function (m) {

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # make test's check of the report filter's rules (paper/tsv-tables.lua): a fixture page that
-# reads its numbers from data (datum, row counts, counts), gives its nan cells a word and names only levels
+# reads its numbers from data (datum, row counts, counts), gives its nan cells a word, sets
+# plain-text math and full doubles in cells as a reader reads them, and names only levels
 # and files its data hold must build; each bad page must stop pandoc with its own message:
 # a caption naming a level or a file the data lack, a nan cell without a word, counts that
 # leave a category out, a datum with no row, a value the prose has no words for.  The same
@@ -20,6 +21,11 @@ grep -q "computed; 60 per" "$tmp/good.html" 2>/dev/null || { echo "FAIL: the goo
 grep -q "1 printed board and 0 identified boards" "$tmp/good.html" 2>/dev/null ||
   { echo "FAIL: the good page's row counts (count=yes, one row and none) are not 1 and 0"; fail=1; }
 grep -q "no solution" "$tmp/good.html" 2>/dev/null || { echo "FAIL: the good page's nan cell lost its word"; fail=1; }
+# Plain-text math and full doubles in cells: r_c as r with a subscript c (Unicode has no
+# subscript c), a 16-digit number to 6 significant digits.
+grep -q "r<sub>c</sub>/Δx" "$tmp/good.html" 2>/dev/null || { echo "FAIL: the good page's r_c/dx is not r<sub>c</sub>/Δx"; fail=1; }
+grep -q "L<sub>w</sub> of" "$tmp/good.html" 2>/dev/null || { echo "FAIL: the good page's L_w is not L<sub>w</sub>"; fail=1; }
+grep -q ">0.00415872<" "$tmp/good.html" 2>/dev/null || { echo "FAIL: the good page's 0.004158723777973314 is not 0.00415872"; fail=1; }
 while IFS='|' read -r page expect; do
   out=$(build "$page"); rc=$?
   if [ $rc -eq 0 ]; then echo "FAIL: $page was accepted"; fail=1
