@@ -3,15 +3,17 @@
 # an operator in one panel; here each operator is a column and each m a row, three weights per
 # panel, so that every curve can be told apart in greyscale.  Triangles: Theorem 3's rates,
 # under the two finest points of the series they describe (weight 1; weight 3 at m = 5, whose
-# Hypothesis 1 order n = 3 raises the rate).  Grey segments: the PUBLISHED rate of Table 1
-# for each curve, drawn from its finest point over the last interval (where the rate agrees,
-# the segment lies on the data; m = 1 rows claim no convergence).
+# Hypothesis 1 order n = 3 raises the rate), labelled on their left: the m = 3, 5 rows start
+# their h axis far enough left of the finest point for the label.  Grey segments: the PUBLISHED rate of Table 1 for each curve, over
+# its last interval just below the data (where the rate agrees, parallel to them; m = 1 rows
+# claim no convergence).  Rows are 80 px apart, so a panel title clears the tick labels of
+# the panel above.
 # Columns are addressed by name (level, m, weight, h, rel_error of imoto_fig5_table1.tsv).
 # Drawn at print size: 760 px wide (the A4 text width is 703 px), 14 px text, so nothing
 # prints below 8 pt; panels placed by hand, each row on the h range of its m (the data fill
 # the axis), one legend below the panels (the line type is the weight's index in every panel).
 load 'figures/style.gp'
-W = 760; Hc = 860
+W = 760; Hc = 920
 set terminal svg size W,Hc dynamic enhanced font 'Helvetica,14' background rgb 'white'
 TRI_FONT = ',14'
 set output out
@@ -30,7 +32,7 @@ pub(w, m) = published_rate(P, sprintf('$c["weight"]=="%s" && $c["m"]==%s', w, m)
 weight_of(j, k) = word(j == 1 ? w1 : j == 2 ? w2 : w3, k)
 # Panel boxes (screen fractions): columns = operators, rows = m (top to bottom 1, 3, 5).
 PL = 72.0 / W; PR = 1 - 12.0 / W; GX = 58.0 / W; PW = (PR - PL - 2 * GX) / 3
-PT = 1 - 62.0 / Hc; PB = 115.0 / Hc; GY = 52.0 / Hc; PH = (PT - PB - 2 * GY) / 3
+PT = 1 - 62.0 / Hc; PB = 115.0 / Hc; GY = 80.0 / Hc; PH = (PT - PB - 2 * GY) / 3
 row = 0
 do for [m in "1 3 5"] {
   row = row + 1
@@ -58,9 +60,9 @@ do for [m in "1 3 5"] {
         ANCHOR_DROP = 0.7
       }
     }
-    set xrange [HX_min / 1.6 : HX_max * 1.25]
+    set xrange [HX_min / (m eq "1" ? 1.6 : 2.6) : HX_max * 1.25]
     # m = 1 spans two decades of h; m = 3, 5 less than one: ticks at factors of 2 there.
-    if (m eq "1") { set format x '10^{%L}'; set xtics autofreq } else { set format x '%g'; set xtics 2 }
+    if (m eq "1") { set format x '10^{%L}'; set xtics autofreq } else { set format x '%g'; set xtics (0.01, 0.02, 0.04, 0.08) }
     if (k < 3) { set yrange [1e-5:1]; set ytics 100 } else { set yrange [1e-4:1e3]; set ytics 100 }
     plot for [j=1:3] sel(m, weight_of(j, k)) using (column("h")):(column("rel_error")) \
            with linespoints lt j notitle

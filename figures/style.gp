@@ -27,8 +27,12 @@ set datafile commentschars "#"
 # share label space.
 # TRI_FONT: the label's font (a figure drawn at print size sets it to its text size).
 TRI_FONT = ',10'
-triangle(x0, y0, f, s, lab) = sprintf("set object polygon from %g,%g to %g,%g to %g,%g to %g,%g fs empty border lc rgb '#000000'; set label '%s' at %g,%g right font '%s'", \
-  x0, y0, x0*f, y0, x0*f, y0*f**s, x0, y0, lab, x0/1.06, y0, TRI_FONT)
+# The label stands left of the triangle, or centred under it where TRI_BELOW = 1 (panels whose
+# finest points sit near the left axis, where a label to the left would cross it).
+TRI_BELOW = 0
+triangle(x0, y0, f, s, lab) = sprintf("set object polygon from %g,%g to %g,%g to %g,%g to %g,%g fs empty border lc rgb '#000000'; set label '%s' at %g,%g %s font '%s'", \
+  x0, y0, x0*f, y0, x0*f, y0*f**s, x0, y0, lab, TRI_BELOW ? x0*sqrt(f) : x0/1.06, TRI_BELOW ? y0/2.2 : y0, \
+  TRI_BELOW ? "center" : "right", TRI_FONT)
 # A log-2 x axis labelled with powers of 2 in half steps, for abscissae (such as h) that span
 # less than a decade, where '10^{%L}' would leave a single label.  Set the range first:
 #   xlo = 0.09; xhi = 0.22; eval pow2_xtics
@@ -51,12 +55,14 @@ finest_points = "stats ANCHOR using (column('h')) name 'AX' nooutput; " . \
   "stats ANCHOR using (column('h') == AX_min ? column('rel_error') : NaN) name 'AY' nooutput; "
 anchored_triangle(s, lab) = finest_points . \
   sprintf("eval triangle(AX_min, AY_min * ANCHOR_DROP, AX2_min / AX_min, %g, '%s')", s, lab)
-# A published rate p drawn on the series in ANCHOR: a thick grey segment from its finest point
-# rising with slope p over the last interval (it lies on the data where the rate agrees).
+# A published rate p drawn beside the series in ANCHOR: a thick grey segment over its last
+# interval with slope p, PUB_DROP below the finest point (where the rate agrees it runs
+# parallel to the data just under them, not hidden beneath the markers).
 # Legend entry: NaN with lines lw 6 lc rgb '#bbbbbb' title 'published rate'.
 #   ANCHOR = sel(...); p = published_rate(P, '$c["weight"]=="Pi1"'); if (p == p) { eval published_segment(p) }
 published_segment(p) = finest_points . \
-  sprintf("set arrow from AX_min, AY_min to AX2_min, AY_min * (AX2_min / AX_min)**%.17g nohead lw 6 lc rgb '#bbbbbb' back", p)
+  sprintf("set arrow from AX_min, AY_min * PUB_DROP to AX2_min, AY_min * PUB_DROP * (AX2_min / AX_min)**%.17g nohead lw 6 lc rgb '#bbbbbb' back", p)
+PUB_DROP = 0.55  # factor in y between the finest point and the published-rate segment
 # The `numerical` column of the first row of a published long-format table P that satisfies an
 # awk condition on its named columns (as rows_named); NaN when no row does.
 published_rate(P, cond) = real(system(sprintf("awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next } (%s) { print $c[\"numerical\"]; f=1; exit } END { if (!f) print \"NaN\" }' '%s'", cond, P)))
