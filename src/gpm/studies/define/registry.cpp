@@ -195,12 +195,16 @@ RegisteredStudy poisson() {
                                poisson_table().columns, {5, 6});
   s.files = {{"thesis_table4_4", {}, {}, {{"thesis_table4_4_rates", "thesis_table4_4", {}, /*scored=*/true}}}};
   // Both readings of h in one file (the verdicts give each its slice); cellvol is the reading
-  // V_i = dx^2; seeds 2, 3 at the coarse and the rate levels.
-  const std::vector<std::string> coarse = {"--levels", "5,6"};
+  // V_i = dx^2; seeds 2, 3 at the coarse and the rate levels, and under V_i = dx^2 (the
+  // identified volumes) seeds 2-5: a band that decides (five realizations).
+  const std::vector<std::string> coarse = {"--levels", "5,6"}, rate_levels = {"--levels", "5,6,8,9"};
   s.store_files = {{"thesis_table4_4", "all", {}, {}, coarse, {"h10", "h15"}},
                    {"thesis_table4_4_cellvol", "cell", {"--volumes", "cell"}, {}, coarse, {"h10_cell", "h15_cell"}},
-                   {"thesis_table4_4_seed2", "seed2", {"--seed", "2"}, {"--levels", "5,6,8,9"}, coarse},
-                   {"thesis_table4_4_seed3", "seed3", {"--seed", "3"}, {"--levels", "5,6,8,9"}, coarse}};
+                   {"thesis_table4_4_seed2", "seed2", {"--seed", "2"}, rate_levels, coarse},
+                   {"thesis_table4_4_seed3", "seed3", {"--seed", "3"}, rate_levels, coarse}};
+  for (const char* seed : {"2", "3", "4", "5"})
+    s.store_files.push_back({std::string("thesis_table4_4_cellvol_seed") + seed, std::string("cell_seed") + seed,
+                             {"--volumes", "cell", "--seed", seed}, rate_levels, coarse});
   s.published = PublishedRates{"thesis_table4_4", "thesis_table4_4_long.tsv", {"h_rule", "weight"}, "h10",
                                [](const PdeSetup& r) { return h_rule_name(r.h_rule) + (r.volumes == PdeVolumes::cell ? "_cell" : ""); },
                                false, {}, /*split_by=*/"h_rule"};
