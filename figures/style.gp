@@ -27,12 +27,8 @@ set datafile commentschars "#"
 # share label space.
 # TRI_FONT: the label's font (a figure drawn at print size sets it to its text size).
 TRI_FONT = ',10'
-# The label stands left of the triangle, or centred under it where TRI_BELOW = 1 (panels whose
-# finest points sit near the left axis, where a label to the left would cross it).
-TRI_BELOW = 0
-triangle(x0, y0, f, s, lab) = sprintf("set object polygon from %g,%g to %g,%g to %g,%g to %g,%g fs empty border lc rgb '#000000'; set label '%s' at %g,%g %s font '%s'", \
-  x0, y0, x0*f, y0, x0*f, y0*f**s, x0, y0, lab, TRI_BELOW ? x0*sqrt(f) : x0/1.06, TRI_BELOW ? y0/2.2 : y0, \
-  TRI_BELOW ? "center" : "right", TRI_FONT)
+triangle(x0, y0, f, s, lab) = sprintf("set object polygon from %g,%g to %g,%g to %g,%g to %g,%g fs empty border lc rgb '#000000'; set label '%s' at %g,%g right font '%s'", \
+  x0, y0, x0*f, y0, x0*f, y0*f**s, x0, y0, lab, x0/1.06, y0, TRI_FONT)
 # A log-2 x axis labelled with powers of 2 in half steps, for abscissae (such as h) that span
 # less than a decade, where '10^{%L}' would leave a single label.  Set the range first:
 #   xlo = 0.09; xhi = 0.22; eval pow2_xtics

@@ -353,8 +353,13 @@ local SUBSCRIPT = {a = "ₐ", e = "ₑ", h = "ₕ", i = "ᵢ", j = "ⱼ", k = "�
 -- cell_inlines (r_c: r with a subscript c).
 local SUB_MARK = "\u{E000}"
 local function subscript(sub) return SUBSCRIPT[sub] or (SUB_MARK .. sub) end
+-- A command line or a file name: its text must stay typable, so no cell rewrite touches it.
+local function literal(v)
+  return v:find("--", 1, true) or v:find("%.%a%a%a?$") or v:find("%.%a%a%a?[%s,;)]")
+end
+
 local function ascii_math(v)
-  if v:find("--", 1, true) or v:find("%.%a%a%a?$") or v:find("%.%a%a%a?[%s,;)]") then return v end
+  if literal(v) then return v end
   v = v:gsub("%f[%a]eps_grad%f[%A]", "ε∇")
   v = v:gsub("%f[%a](%a+)(%d*)_?(%w?)%f[%W]", function(word, digits, sub)
     local g = GREEK[word]
@@ -390,7 +395,7 @@ end
 -- in a cell whose block sets no digits=, is shown to 6 significant digits; never in a command
 -- line or a file name.
 local function long_numbers(v)
-  if v:find("--", 1, true) or v:find("%.%a%a%a?$") or v:find("%.%a%a%a?[%s,;)]") then return v end
+  if literal(v) then return v end
   return (v:gsub("%f[%w.]%d+%.%d+%f[^%d.]", function(n)
     local significant = n:gsub("%.", ""):gsub("^0+", "")
     if #significant <= 10 then return nil end

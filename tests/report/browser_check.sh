@@ -31,6 +31,11 @@ cat > "$tmp/check.js" <<'JS'
 window.addEventListener('load', function () {
   var out = [], W = document.documentElement.clientWidth;
   var flat = function (s) { return s.replace(/\s+/g, ' ').trim(); };
+  // The caption of the table a cell stands in, as a problem line names it.
+  var captionOf = function (cell) {
+    var t = cell.closest('table'), c = t && t.querySelector('caption');
+    return flat(c ? c.textContent : '').slice(0, 60);
+  };
   var name = function (el) {
     var f = el.closest('figure'), c = f && f.querySelector('figcaption');
     return flat(c ? c.textContent : (el.alt || el.src.slice(0, 50))).slice(0, 70);
@@ -99,8 +104,7 @@ window.addEventListener('load', function () {
           if (top === null) top = boxes[i].top; else if (Math.abs(boxes[i].top - top) > 2) split = true;
         }
         if (split) {
-          var t = cell.closest('table'), c = t && t.querySelector('caption');
-          out.push('TABLE CELL splits "' + m[0].slice(0, 30) + '": ' + flat(c ? c.textContent : '').slice(0, 60));
+          out.push('TABLE CELL splits "' + m[0].slice(0, 30) + '": ' + captionOf(cell));
           return;
         }
       }
@@ -126,15 +130,13 @@ window.addEventListener('load', function () {
     var raw = t.match(/(^|[^A-Za-z])(rho|lambda|eps|epsilon|theta|kappa|delta|sigma|mu|Omega|\d*pi)([^A-Za-z]|$)/) ||
               t.match(/(^|[^\w])[A-Za-z]_[a-z0-9]([^\w]|$)/);
     if (raw) {
-      var tb = cell.closest('table'), c = tb && tb.querySelector('caption');
-      out.push('RAW MATH "' + raw[0].trim() + '" in a table: ' + flat(c ? c.textContent : '').slice(0, 60));
+      out.push('RAW MATH "' + raw[0].trim() + '" in a table: ' + captionOf(cell));
     }
     // A number with more than 10 significant digits (a double printed in full).
     var nums = t.match(/\d+\.\d+/g) || [];
     for (var k = 0; k < nums.length; k++) {
       if (nums[k].replace('.', '').replace(/^0+/, '').length > 10) {
-        var tl = cell.closest('table'), cl = tl && tl.querySelector('caption');
-        out.push('LONG NUMBER "' + nums[k] + '" in a table: ' + flat(cl ? cl.textContent : '').slice(0, 60));
+        out.push('LONG NUMBER "' + nums[k] + '" in a table: ' + captionOf(cell));
         break;
       }
     }
