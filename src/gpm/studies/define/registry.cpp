@@ -278,18 +278,17 @@ std::vector<HeatStoreReading> heat_store_readings(const std::string& table) {
 // levels: every table under the identified reading (h15_cell_exact), Table 4.5 also under the
 // printed one (h10), Table 4.6 also under each reading that differs from the identified one in
 // one detail (h15_cell, h15_exact, h10_cell_exact) and under h10_cell; the Krylov propagator
-// makes a seed minutes (10-15 min for h10_cell_exact and h10_cell at 2^-9 here).  The printed reading of Tables 4.6 and 4.7 at
-// 2^-9 (h10, fitted time step) has no seeds yet.
+// makes a seed minutes (10-15 min for h10_cell_exact and h10_cell at 2^-9 here).  The printed
+// reading of Tables 4.6 and 4.7 at 2^-9 (h10, fitted time step) has no seeds yet.
 std::vector<std::string> heat_band_seeds(const std::string& table, const std::string& reading) {
   if (reading == "h15_cell_exact" || (table == "4.5" && reading == "h10")) return {"2", "3", "4", "5"};
   // Table 4.6 under the readings the time-step and volume decisions compare with the identified
   // one, and under h10 with the identified volumes and time step (the h decision): the set-up
   // identification's distance bands (setup_identification.hpp).
-  if (table == "4.6" && (reading == "h15_cell" || reading == "h15_exact" || reading == "h10_cell_exact"))
+  // h10_cell is the reading the h decision's band is measured against.
+  if (table == "4.6" && (reading == "h15_cell" || reading == "h15_exact" || reading == "h10_cell_exact" ||
+                         reading == "h10_cell"))
     return {"2", "3", "4", "5"};
-  // Under h10_cell, the reading the h decision's band is measured against: the seeds stored so
-  // far (4 and 5 were still running when a session ended).
-  if (table == "4.6" && reading == "h10_cell") return {"2", "3"};
   return {};
 }
 
