@@ -3,21 +3,25 @@
 # rows, and the verdict counts.  A fresh clone's `make report` shows them at once.
 STORE_FILES := $(wildcard $(STORE)/*.tsv)
 DATAFILES += $(DATA)/store_rates.tsv $(DATA)/store_summary.tsv $(DATA)/store_score.tsv \
-             $(DATA)/checked_reasons.tsv $(DATA)/setup_identification.tsv $(DATA)/open_causes.tsv
+             $(DATA)/checked_reasons.tsv $(DATA)/setup_identification.tsv $(DATA)/open_causes.tsv \
+             $(DATA)/store_figure_files.tsv
 
 # One judging pass over the store (gpm store-rates, src/gpm/studies/judge/): the reasons for
 # differing rates, each with the diagnostic that checks it (checked_reasons.hpp; also one row
 # per mechanism, the chapter's short table), the two scoreboards (as printed, as identified),
 # the fingerprint evidence that identifies Chapter 4's set-up (setup_identification.tsv;
-# paper/04-setup-rule.md) and the open rates grouped by cause, all from one read of the store.
+# paper/04-setup-rule.md), the open rates grouped by cause and the store file each per-reading
+# figure draws (store_figure_files.tsv), all from one read of the store.
 DATAFILES += $(DATA)/checked_reasons_by_mechanism.tsv
 $(DATA)/store_rates.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published/*.tsv)
 	@mkdir -p $(DATA)
 	$(BUILD)/gpm store-rates --store $(STORE) --published tables/published \
 	  --reasons $(DATA)/checked_reasons.tsv --reasons-by-mechanism $(DATA)/checked_reasons_by_mechanism.tsv \
 	  --out $@ --summary $(DATA)/store_summary.tsv --score $(DATA)/store_score.tsv \
-	  --ident $(DATA)/setup_identification.tsv --causes $(DATA)/open_causes.tsv
+	  --ident $(DATA)/setup_identification.tsv --causes $(DATA)/open_causes.tsv \
+	  --figure-files $(DATA)/store_figure_files.tsv
 $(DATA)/store_summary.tsv $(DATA)/store_score.tsv $(DATA)/setup_identification.tsv $(DATA)/open_causes.tsv \
+  $(DATA)/store_figure_files.tsv \
   $(DATA)/checked_reasons.tsv $(DATA)/checked_reasons_by_mechanism.tsv: $(DATA)/store_rates.tsv ;
 
 # The heat rates at every pair of stored levels and whether they approach the theory's (the

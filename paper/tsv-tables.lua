@@ -447,15 +447,22 @@ local function tsv_block(el)
   else
     for i, h in ipairs(header) do table.insert(cols, {idx = i, label = h}) end
   end
-  -- Optional row filter: filter="column=value".
-  local fcol, fval
-  if el.attributes["filter"] then
-    fcol, fval = el.attributes["filter"]:match("^([^=]+)=(.*)$")
-  end
-  local fidx
-  if fcol then
+  -- Optional row filter: filter="column=value,column=a|b": every condition holds, a value
+  -- may list alternatives.
+  local conds = {}
+  for cond in (el.attributes["filter"] or ""):gmatch("[^,]+") do
+    local fcol, fval = cond:match("^([^=]+)=(.*)$")
+    if not fcol then fail("filter '" .. cond .. "' is not column=value") end
+    local fidx
     for i, h in ipairs(header) do if h == fcol then fidx = i end end
     if not fidx then fail("filter column '" .. fcol .. "' not in " .. path) end
+    local allowed = {}
+    for v in fval:gmatch("[^|]+") do allowed[v] = true end
+    table.insert(conds, {idx = fidx, allowed = allowed})
+  end
+  local function kept(r)
+    for _, c in ipairs(conds) do if not c.allowed[r[c.idx] or ""] then return false end end
+    return true
   end
   local heads, aligns, widths, body = {}, {}, {}, {}
   for _, c in ipairs(cols) do
@@ -464,7 +471,7 @@ local function tsv_block(el)
     table.insert(widths, 0)
   end
   for _, r in ipairs(rows) do
-    if not fidx or r[fidx] == fval then
+    if kept(r) then
       local cells = {}
       for _, c in ipairs(cols) do
         local v = fmtnum(r[c.idx] or "", digits)
@@ -615,6 +622,25 @@ local function split_parts(doc)
   return doc
 end
 
+-- Every figure numbered in its document's order (the paper: Figure 1, 2, …; the supplement:
+-- Figure S1, S2, …), so that none is left without a number; a caption that names one of the
+-- documents' own figures ("the thesis' Figure 4.8") keeps that name after the number.
+local function number_figures(doc)
+  local n = 0
+  local prefix = part == "supplement" and "S" or ""
+  doc.blocks = doc.blocks:walk({
+    Image = function(el)
+      if el.title:match("^fig:") then
+        n = n + 1
+        local label = pandoc.Strong({pandoc.Str("Figure " .. prefix .. n .. ".")})
+        el.caption = pandoc.List({label, pandoc.Space()}) .. el.caption
+        return el
+      end
+    end
+  })
+  return doc
+end
+
 -- The reader's order: one short line per chapter naming its data files, and every table's
 -- and figure's full provenance (regenerate command; program, command, profile, seed, git
 -- revision, date and wall time of each data file) in a last appendix, grouped by chapter.
@@ -713,5 +739,6 @@ return {
   { Str = function(el) return caret_inlines(el.text) end },
   { Pandoc = lift_page_one },
   { Pandoc = split_parts },
+  { Pandoc = number_figures },
   { Pandoc = gather_provenance }
 }

@@ -23,7 +23,8 @@ std::string call_levels(const std::vector<int>& k) {
 
 // The rules of a study's figures: from the run's data (the pattern rule's gnuplot call) and
 // from the store (mk/05's store_% rule), a per-reading one twice (figures/store_reading.sh:
-// the identified reading, then the printed one, PublishedRates::printed_slice).  STORE must be set before this file is
+// the identified reading, then the printed one, each board's store file named by gpm
+// store-rates --figure-files).  STORE must be set before this file is
 // read (the Makefile), since make expands prerequisites as it reads them.
 void figure_rules(std::ostringstream& m, const RegisteredStudy& s) {
   if (s.figures.empty()) return;
@@ -42,12 +43,12 @@ void figure_rules(std::ostringstream& m, const RegisteredStudy& s) {
     for (auto& sf : s.store_files)
       if (!sf.readings.empty()) stored.push_back("$(STORE)/" + sf.name + ".tsv");
     m << "FIGFILES += $(FIGOUT)/store_printed_" << f.name << ".svg\n";
-    for (const std::string& reading : {std::string("identified"), s.published->printed_slice}) {
-      const std::string out = reading == "identified" ? "store_" : "store_printed_";
-      m << "$(FIGOUT)/" << out << f.name << ".svg: " << inputs << " figures/store_reading.sh $(BUILD)/gpm "
-        << "$(DATA)/setup_identification.tsv $(wildcard " << join(stored, " ") << ") " << pub << "\n";
-      m << "\tbash figures/store_reading.sh $(BUILD)/gpm $< " << s.name << " " << reading
-        << " $(STORE) $(DATA)/setup_identification.tsv $@\n";
+    for (const std::string board : {"identified", "printed"}) {
+      const std::string out = board == "identified" ? "store_" : "store_printed_";
+      m << "$(FIGOUT)/" << out << f.name << ".svg: " << inputs << " figures/store_reading.sh "
+        << "$(DATA)/store_figure_files.tsv $(wildcard " << join(stored, " ") << ") " << pub << "\n";
+      m << "\tbash figures/store_reading.sh $< " << f.name << " " << board
+        << " $(STORE) $(DATA)/store_figure_files.tsv $@\n";
     }
   }
 }

@@ -246,6 +246,24 @@ int cmd_rate_levels(int argc, char** argv) {
   return 0;
 }
 
+// The store file each per-reading figure draws on each board (identified: the reading the
+// set-up rule identified, or the printed one where it decided none; printed: the study's
+// printed slice), from the registry: figures/store_reading.sh reads it by column name.
+TsvTable figure_files_table(const StudyRegistry& registry, const std::optional<PdeSetup>& identified) {
+  TsvTable t;
+  t.columns = {"study", "figure", "board", "reading", "store_file"};
+  for (const RegisteredStudy& s : registry.studies())
+    for (const StudyFigure& f : s.figures) {
+      if (!f.per_reading || !s.published) continue;
+      const std::string printed = s.published->printed_slice;
+      for (const auto& [board, reading] :
+           {std::pair<std::string, std::string>{"identified", identified ? identified->name() : printed},
+            std::pair<std::string, std::string>{"printed", printed}})
+        t.add_row({s.name, f.name, board, reading, s.store_file_of(reading).name + ".tsv"});
+    }
+  return t;
+}
+
 // gpm store-rates: the documents' rates judged against the committed result store (verdicts.hpp),
 // the report's paper-scale tables.  Every input is read and every output path checked before
 // anything is written; each output is written to a temporary file and renamed (TsvTable::save).
@@ -265,7 +283,9 @@ int cmd_store_rates(int argc, char** argv) {
       .output("score", "", "the verdict counts per table and slice, and each board's totals")
       .output("ident", "", "setup_identification's table: the fingerprint evidence of Chapter 4's reading")
       .output("causes", "", "the open rates of the identified board grouped by what the store says of them "
-                            "(src/gpm/studies/judge/open_causes.hpp)");
+                            "(src/gpm/studies/judge/open_causes.hpp)")
+      .output("figure-files", "", "the store file each per-reading figure draws, identified and printed "
+                                  "(figures/store_reading.sh)");
   a.parse(argc, argv, 2);
   const std::string out = a.required("out"), store = a.str("store"), pub = a.str("published");
   require_directories({{"store", store}, {"published", pub}});
@@ -335,6 +355,11 @@ int cmd_store_rates(int argc, char** argv) {
                                 "tolerance of the published rate); robust gap (at least " +
                                     std::to_string(kSeedBandDecides) +
                                     " realizations, all on one side); blow-up rate (sign only); one realization"}}));
+  if (!a.str("figure-files").empty())
+    outputs.emplace_back(a.str("figure-files"),
+                         with_header(figure_files_table(study_registry(), ident.identified),
+                                     "gpm store-rates (figure files)",
+                                     {{"identified", ident.identified ? ident.identified->name() : "NA (the printed reading drawn)"}}));
   if (!a.str("ident").empty()) {
     ident.table.set("program", "gpm store-rates (setup_identification)");
     add_provenance(ident.table);

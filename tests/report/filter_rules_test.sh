@@ -26,6 +26,11 @@ grep -q "no solution" "$tmp/good.html" 2>/dev/null || { echo "FAIL: the good pag
 grep -q "r<sub>c</sub>/Δx" "$tmp/good.html" 2>/dev/null || { echo "FAIL: the good page's r_c/dx is not r<sub>c</sub>/Δx"; fail=1; }
 grep -q "L<sub>w</sub> of" "$tmp/good.html" 2>/dev/null || { echo "FAIL: the good page's L_w is not L<sub>w</sub>"; fail=1; }
 grep -q ">0.00415872<" "$tmp/good.html" 2>/dev/null || { echo "FAIL: the good page's 0.004158723777973314 is not 0.00415872"; fail=1; }
+# A table filter of several conditions, one with alternatives: every condition must hold.
+sed -n '/kept board/,/<\/table>/p' "$tmp/good.html" 2>/dev/null | grep -q '>printed<' ||
+  { echo "FAIL: filter board=printed|identified,rates=10 dropped the printed row"; fail=1; }
+sed -n '/dropped board/,/<\/table>/p' "$tmp/good.html" 2>/dev/null | grep -q '>printed<' &&
+  { echo "FAIL: filter board=printed,rates=9 kept the printed row (rates is 10)"; fail=1; }
 while IFS='|' read -r page expect; do
   out=$(build "$page"); rc=$?
   if [ $rc -eq 0 ]; then echo "FAIL: $page was accepted"; fail=1
@@ -48,7 +53,7 @@ split() {  # split PART: the split fixture as that part, its text without tags
      --metadata datadir=data --metadata part="$1" split.md 2>&1) | sed 's/<[^>]*>//g' | tr -s ' \n' ' '
 }
 paper=$(split paper) supplement=$(split supplement)
-for want in "Table S1 (supplement, 30 rows): A long table of Uk." "A short table." \
+for want in "Table S1 (supplement, 30 rows): A long table of Uk." "A short table." "Figure 1. A main figure." \
             "Section S1 (supplement): A side section" "Main text."; do
   case $paper in *"$want"*) ;; *) echo "FAIL: the paper lacks '$want'"; fail=1 ;; esac
 done
@@ -58,12 +63,12 @@ case $paper in *"Data of this chapter: "[0-9]*" file"*"supplement's last appendi
 for unwanted in "Appendix A" "Appendix E" "Side text." "Data of this chapter: data/"; do
   case $paper in *"$unwanted"*) echo "FAIL: the paper holds '$unwanted'"; fail=1 ;; esac
 done
-for want in "Table S1. A long table of Uk." "Appendix A. Details" "Appendix E. Provenance" \
+for want in "Table S1. A long table of Uk." "Appendix A. Details" "Appendix E. Provenance" "Figure S1. A side figure." \
             "Section S1. A side section" "Side text."; do
   case $supplement in *"$want"*) ;; *) echo "FAIL: the supplement lacks '$want'"; fail=1 ;; esac
 done
 for unwanted in "A short table." "Main text."; do
   case $supplement in *"$unwanted"*) echo "FAIL: the supplement holds '$unwanted'"; fail=1 ;; esac
 done
-[ $fail -eq 0 ] && echo "filter rules: good page builds, each of the 6 bad pages stopped with its message, paper and supplement split (long table, marked section)"
+[ $fail -eq 0 ] && echo "filter rules: good page builds, each of the 6 bad pages stopped with its message, paper and supplement split (long table, marked section), table filters of several conditions, figures numbered per part"
 exit $fail

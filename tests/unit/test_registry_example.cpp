@@ -40,10 +40,12 @@ RegisteredStudy example_study() {
   s.levels = {{4, 5}, {4, 5, 6}};
   s.columns = {"weight", "level", "h", "rel_error", "pairs", "time_s"};
   s.recheck_levels = {4};
-  s.files = {{"example_interpolant", {}, {}, {{"example_interpolant_rates", "example_interpolant", {}, true}}}};
-  s.store_files = {{"example_interpolant", "all", {}, {}, {"--levels", "4"}}};
-  s.published = PublishedRates{"example_table", "example_table.tsv", {"weight"}, "all", {}, false, {}};
-  s.figures = {{"example_fig", {}, false}};
+  s.files = {{.name = "example_interpolant",
+              .rates = {{.name = "example_interpolant_rates", .input = "example_interpolant", .scored = true}}}};
+  s.store_files = {{.name = "example_interpolant", .slice = "all", .coarse = {"--levels", "4"}}};
+  s.published = PublishedRates{.table = "example_table", .file = "example_table.tsv", .key = {"weight"},
+                               .printed_slice = "all"};
+  s.figures = {{.name = "example_fig"}};
   // Its units: one fused pass per level, which the program runs and the plan prices.
   s.units = [](const UnitScope& scope) {
     std::vector<StudyUnit> u;

@@ -57,7 +57,7 @@ TEST_CASE("set-up identification: details one at a time, with their uncertainty"
   // not hold them yet): the rule reads whatever seed files its study names.
   RegisteredStudy study = fingerprint_study(study_registry());
   for (int n = 2; n <= 5; ++n)
-    study.store_files.push_back({"fixture_h15_exact_seed" + fmt(n), "h15_exact_seed" + fmt(n), {}, {}, {}});
+    study.store_files.push_back({.name = "fixture_h15_exact_seed" + fmt(n), .slice = "h15_exact_seed" + fmt(n)});
   // h10 readings far off (factor 2), h15 close; cell and exact closest together.
   const std::map<std::string, double> factor = {
       {"h10", 2.0}, {"h10_exact", 2.05}, {"h10_cell", 1.98}, {"h10_cell_exact", 2.02},

@@ -60,21 +60,27 @@ RegisteredStudy identity(const std::string& name, const std::string& item, const
 RegisteredStudy imoto() {
   RegisteredStudy s = identity("imoto_fig5_table1", "imoto Figure 5, Table 1", "imoto", imoto_study().levels,
                                imoto_study().columns, {5, 6, 7});
-  s.files = {{"imoto_fig5_table1", {}, {{"--printed-out", "imoto_pi3_printed"}},
-              {{"imoto_table1", "imoto_fig5_table1", {}, /*scored=*/true}}}};
+  s.files = {{.name = "imoto_fig5_table1",
+              .side_outputs = {{"--printed-out", "imoto_pi3_printed"}},
+              .rates = {{.name = "imoto_table1", .input = "imoto_fig5_table1", .scored = true}}}};
   // Seed 1 is the reproduction; seeds 2-5 and the plain grid (no jitter) show how much of a
   // rate is one realization's particle noise (seeds 4, 5 at the coarse and the rate levels
   // only); cellvol is the delta-free error (V_i = dx^2).
   const std::vector<std::string> coarse = {"--levels", "5,6,7"};
-  s.store_files = {{"imoto_fig5_table1", "all", {}, {}, coarse},
-                   {"imoto_fig5_table1_seed2", "seed2", {"--seed", "2"}, {}, coarse},
-                   {"imoto_fig5_table1_seed3", "seed3", {"--seed", "3"}, {}, coarse},
-                   {"imoto_fig5_table1_seed4", "seed4", {"--seed", "4"}, {"--levels", "5,6,7,11,12"}, coarse},
-                   {"imoto_fig5_table1_seed5", "seed5", {"--seed", "5"}, {"--levels", "5,6,7,11,12"}, coarse},
-                   {"imoto_fig5_table1_plain", "plain", {"--jitter", "0"}, {}, coarse},
-                   {"imoto_fig5_table1_cellvol", "cellvol", {"--volumes", "cell"}, {}, coarse}};
-  s.published = PublishedRates{"imoto_table1", "imoto_table1.tsv", {"operator", "weight", "m"}, "all", {}, false, {}};
-  s.figures = {{"imoto_fig5", {}, false}};
+  const std::vector<std::string> rate_levels = {"--levels", "5,6,7,11,12"};
+  s.store_files = {{.name = "imoto_fig5_table1", .slice = "all", .coarse = coarse},
+                   {.name = "imoto_fig5_table1_seed2", .slice = "seed2", .args = {"--seed", "2"}, .coarse = coarse},
+                   {.name = "imoto_fig5_table1_seed3", .slice = "seed3", .args = {"--seed", "3"}, .coarse = coarse},
+                   {.name = "imoto_fig5_table1_seed4", .slice = "seed4", .args = {"--seed", "4"},
+                    .census = rate_levels, .coarse = coarse},
+                   {.name = "imoto_fig5_table1_seed5", .slice = "seed5", .args = {"--seed", "5"},
+                    .census = rate_levels, .coarse = coarse},
+                   {.name = "imoto_fig5_table1_plain", .slice = "plain", .args = {"--jitter", "0"}, .coarse = coarse},
+                   {.name = "imoto_fig5_table1_cellvol", .slice = "cellvol", .args = {"--volumes", "cell"},
+                    .coarse = coarse}};
+  s.published = PublishedRates{.table = "imoto_table1", .file = "imoto_table1.tsv",
+                               .key = {"operator", "weight", "m"}, .printed_slice = "all"};
+  s.figures = {{.name = "imoto_fig5"}};
   // A unit: one fused pass of the nine weights per (level, m), the particles shared by a
   // level's units.
   s.units = [](const UnitScope& scope) {
@@ -101,12 +107,13 @@ RegisteredStudy thesis_truncation(const ThesisTableSpec& t) {
                                thesis_table_columns(), {5, 6, 7});
   // One rate table per (h reading, volumes) the program runs; the printed h with Voronoi
   // volumes is the thesis' own set-up (the scoreboard's).
-  StudyFile file{t.program, {}, {}, {}};
+  StudyFile file{.name = t.program};
   for (const char* volumes : {"voronoi", "uniform"})
     for (HReading r : t.readings)
-      file.rates.push_back({t.program + "_rates_" + h_reading_name(r) + "_" + volumes, t.program,
-                            {{"h_reading", h_reading_name(r)}, {"volumes", volumes}},
-                            r == HReading::printed && std::string(volumes) == "voronoi"});
+      file.rates.push_back({.name = t.program + "_rates_" + h_reading_name(r) + "_" + volumes,
+                            .input = t.program,
+                            .where = {{"h_reading", h_reading_name(r)}, {"volumes", volumes}},
+                            .scored = r == HReading::printed && std::string(volumes) == "voronoi"});
   s.files = {file};
   // Table 4.3 has two operators, so its rates are keyed by the operator too.
   std::vector<std::string> key = {"weight", "function"};
@@ -115,14 +122,15 @@ RegisteredStudy thesis_truncation(const ThesisTableSpec& t) {
   // Seed 1 is the reproduction; …_seed2, …_seed3 (Tables 4.1 and 4.3) are other jitter
   // realizations at the coarse and the rate levels, for the seed band.
   const std::vector<std::string> coarse = {"--levels", "5,6,7"};
-  s.store_files = {{t.program, "", {}, {}, coarse}};
+  s.store_files = {{.name = t.program, .slice = "", .coarse = coarse}};
   if (t.program != "thesis_table4_2")
     for (const char* seed : {"2", "3"})
-      s.store_files.push_back({t.program + "_seed" + seed, std::string("_seed") + seed, {"--seed", seed},
-                               {"--levels", "5,6,7,10,11"}, coarse});
+      s.store_files.push_back({.name = t.program + "_seed" + seed, .slice = std::string("_seed") + seed,
+                               .args = {"--seed", seed}, .census = {"--levels", "5,6,7,10,11"}, .coarse = coarse});
   // A stored file holds every (h reading, volumes): one slice each, the file's suffix after.
   s.published = PublishedRates{
-      t.program, t.program + "_long.tsv", key, "printed_voronoi", {}, false, [](const StoreFile& f, const TsvTable& data) {
+      .table = t.program, .file = t.program + "_long.tsv", .key = key, .printed_slice = "printed_voronoi",
+      .cut = [](const StoreFile& f, const TsvTable& data) {
         std::vector<StoreSlice> out;
         for (const std::string reading : {"printed", "scaled"})
           for (const std::string volumes : {"voronoi", "uniform"}) {
@@ -136,7 +144,7 @@ RegisteredStudy thesis_truncation(const ThesisTableSpec& t) {
   const std::map<std::string, std::vector<std::string>> figures = {
       {"thesis_table4_1", {"thesis_fig4_3"}}, {"thesis_table4_2", {"thesis_fig4_5"}},
       {"thesis_table4_3", {"thesis_fig4_6", "thesis_fig4_7"}}};
-  for (const std::string& f : figures.at(t.program)) s.figures.push_back({f, {"figures/thesis_errors.gp"}, false});
+  for (const std::string& f : figures.at(t.program)) s.figures.push_back({.name = f, .scripts = {"figures/thesis_errors.gp"}});
   // A unit: one fused pass per (level, h reading, volumes), keyed as the data file's rows.
   // Without --levels each reading runs at the profile's levels of its own (the quick profile
   // gives the printed and the scaled h different ones), and the paper profile trims the
@@ -193,22 +201,31 @@ RegisteredStudy thesis_truncation(const ThesisTableSpec& t) {
 RegisteredStudy poisson() {
   RegisteredStudy s = identity("thesis_table4_4", "thesis Figure 4.8, Table 4.4", "poisson", poisson_table().levels,
                                poisson_table().columns, {5, 6});
-  s.files = {{"thesis_table4_4", {}, {}, {{"thesis_table4_4_rates", "thesis_table4_4", {}, /*scored=*/true}}}};
+  s.files = {{.name = "thesis_table4_4",
+              .rates = {{.name = "thesis_table4_4_rates", .input = "thesis_table4_4", .scored = true}}}};
   // Both readings of h in one file (the verdicts give each its slice); cellvol is the reading
   // V_i = dx^2; seeds 2, 3 at the coarse and the rate levels, and under V_i = dx^2 (the
   // identified volumes) seeds 2-5: a band that decides (five realizations).
   const std::vector<std::string> coarse = {"--levels", "5,6"}, rate_levels = {"--levels", "5,6,8,9"};
-  s.store_files = {{"thesis_table4_4", "all", {}, {}, coarse, {"h10", "h15"}},
-                   {"thesis_table4_4_cellvol", "cell", {"--volumes", "cell"}, {}, coarse, {"h10_cell", "h15_cell"}},
-                   {"thesis_table4_4_seed2", "seed2", {"--seed", "2"}, rate_levels, coarse},
-                   {"thesis_table4_4_seed3", "seed3", {"--seed", "3"}, rate_levels, coarse}};
+  s.store_files = {{.name = "thesis_table4_4", .slice = "all", .coarse = coarse, .readings = {"h10", "h15"}},
+                   {.name = "thesis_table4_4_cellvol", .slice = "cell", .args = {"--volumes", "cell"},
+                    .coarse = coarse, .readings = {"h10_cell", "h15_cell"}},
+                   {.name = "thesis_table4_4_seed2", .slice = "seed2", .args = {"--seed", "2"},
+                    .census = rate_levels, .coarse = coarse},
+                   {.name = "thesis_table4_4_seed3", .slice = "seed3", .args = {"--seed", "3"},
+                    .census = rate_levels, .coarse = coarse}};
   for (const char* seed : {"2", "3", "4", "5"})
-    s.store_files.push_back({std::string("thesis_table4_4_cellvol_seed") + seed, std::string("cell_seed") + seed,
-                             {"--volumes", "cell", "--seed", seed}, rate_levels, coarse});
-  s.published = PublishedRates{"thesis_table4_4", "thesis_table4_4_long.tsv", {"h_rule", "weight"}, "h10",
-                               [](const PdeSetup& r) { return h_rule_name(r.h_rule) + (r.volumes == PdeVolumes::cell ? "_cell" : ""); },
-                               false, {}, /*split_by=*/"h_rule"};
-  s.figures = {{"thesis_fig4_8", {}, /*per_reading=*/true}};
+    s.store_files.push_back({.name = std::string("thesis_table4_4_cellvol_seed") + seed,
+                             .slice = std::string("cell_seed") + seed,
+                             .args = {"--volumes", "cell", "--seed", seed}, .census = rate_levels, .coarse = coarse});
+  s.published = PublishedRates{
+      .table = "thesis_table4_4", .file = "thesis_table4_4_long.tsv", .key = {"h_rule", "weight"},
+      .printed_slice = "h10",
+      .identified_slice = [](const PdeSetup& r) {
+        return h_rule_name(r.h_rule) + (r.volumes == PdeVolumes::cell ? "_cell" : "");
+      },
+      .split_by = "h_rule"};
+  s.figures = {{.name = "thesis_fig4_8", .per_reading = true}};
   // A unit: one Laplacian and CG solve per (level, h rule, weight), the particles shared by
   // a level's units.
   s.units = [](const UnitScope& scope) {
@@ -321,9 +338,10 @@ RegisteredStudy heat(const HeatTable& hp) {
   // its rate table reads; the h10 reading is the one the thesis prints.
   for (HRule rule : pde_h_rules()) {
     const std::string f = heat_file(hp, rule);
-    s.files.push_back({f, rule == HRule::h15 ? std::vector<std::string>{"--h-rule", "h15"} : std::vector<std::string>{},
-                       {{"--rates-input", f + "_finite"}},
-                       {{f + "_rates", f + "_finite", {}, /*scored=*/rule == HRule::h10}}});
+    s.files.push_back({.name = f,
+                       .args = rule == HRule::h15 ? std::vector<std::string>{"--h-rule", "h15"} : std::vector<std::string>{},
+                       .side_outputs = {{"--rates-input", f + "_finite"}},
+                       .rates = {{.name = f + "_rates", .input = f + "_finite", .scored = rule == HRule::h10}}});
   }
   // One store file per set-up reading stored (h rule x volumes x time step), a slice each.
   for (const HeatStoreReading& r : heat_store_readings(hp.table)) {
@@ -334,9 +352,10 @@ RegisteredStudy heat(const HeatTable& hp) {
     if (reading.volumes != PdeVolumes::lattice) args.insert(args.end(), {"--volumes", pde_volumes_name(reading.volumes)});
     const HeatBeyond beyond = heat_beyond(hp.table, r.reading);
     const std::string census = with_levels(r.census, beyond.levels);
-    s.store_files.push_back({name + reading.file_suffix(), reading.name(), args,
-                             census.empty() ? std::vector<std::string>{} : std::vector<std::string>{"--levels", census},
-                             {"--levels", "5"}, {reading.name()}});
+    s.store_files.push_back(
+        {.name = name + reading.file_suffix(), .slice = reading.name(), .args = args,
+         .census = census.empty() ? std::vector<std::string>{} : std::vector<std::string>{"--levels", census},
+         .coarse = {"--levels", "5"}, .readings = {reading.name()}});
     // Other jitter realizations of this reading at the coarse level and the rate levels: the
     // seed band of each rate (verdicts.cpp: slice "<reading>_seedN" beside "<reading>").
     for (const std::string& seed : heat_band_seeds(hp.table, r.reading)) {
@@ -344,18 +363,22 @@ RegisteredStudy heat(const HeatTable& hp) {
       seeded.insert(seeded.end(), {"--seed", seed});
       const bool further = std::find(beyond.seeds.begin(), beyond.seeds.end(), seed) != beyond.seeds.end();
       const std::vector<int> first = further ? std::vector<int>{beyond.levels.front()} : std::vector<int>{};
-      s.store_files.push_back({name + reading.file_suffix() + "_seed" + seed, reading.name() + "_seed" + seed, seeded,
-                               {"--levels", with_levels("5," + hp.rate_levels, first)}, {"--levels", "5"}});
+      s.store_files.push_back({.name = name + reading.file_suffix() + "_seed" + seed,
+                               .slice = reading.name() + "_seed" + seed, .args = seeded,
+                               .census = {"--levels", with_levels("5," + hp.rate_levels, first)},
+                               .coarse = {"--levels", "5"}});
     }
   }
-  s.published = PublishedRates{name, name + "_long.tsv", {"weight", "theta"}, "h10",
-                               [](const PdeSetup& r) { return r.name(); }, /*finite_series=*/true, {}};
+  s.published = PublishedRates{.table = name, .file = name + "_long.tsv", .key = {"weight", "theta"},
+                               .printed_slice = "h10",
+                               .identified_slice = [](const PdeSetup& r) { return r.name(); },
+                               .finite_series = true};
   // Table 4.6's explicit (theta = 0) rates fix the number of steps, so h: the set-up rule's
   // fingerprint (paper/04-setup-rule.md).
   if (hp.table == "4.6") s.published->fingerprint = {"theta", "0"};
   // The document's figure of the table (Figures 4.9–4.11), drawn in each reading.
   const std::map<std::string, std::string> figure = {{"4.5", "thesis_fig4_9"}, {"4.6", "thesis_fig4_10"}, {"4.7", "thesis_fig4_11"}};
-  s.figures = {{figure.at(hp.table), {"figures/thesis_heat.gp"}, /*per_reading=*/true}};
+  s.figures = {{.name = figure.at(hp.table), .scripts = {"figures/thesis_heat.gp"}, .per_reading = true}};
   // A unit: one series (weight, θ) at a level under an h rule (StudyUnit::part: in a make run
   // each rule writes its own data file), keyed as the data file's rows.  The series of one
   // (level, h rule, weight) share a Laplacian, set up once for the first of them.  Both h
@@ -433,10 +456,10 @@ RegisteredStudy voronoi() {
   RegisteredStudy s = identity("core_voronoi", "covering radius (imoto §5, thesis Ch. 4)", "core", voronoi_study().levels,
                                voronoi_study().columns, {5});
   s.own_seeds = true;  // --seeds, a list of its own
-  s.files = {{"core_voronoi", {}, {}, {}}};
+  s.files = {{.name = "core_voronoi"}};
   // The store holds the paper levels (2^-12: 2.4e7 particles, about 4 GB); its check
   // recomputes 2^-5.
-  s.store_files = {{"core_voronoi", "all", {}, {}, {"--levels", "5"}}};
+  s.store_files = {{.name = "core_voronoi", .slice = "all", .coarse = {"--levels", "5"}}};
   // A unit: a level, the plain grid and the jittered grid of every seed (--seeds; the plan
   // prices the default ones, as a make run uses them).
   s.units = [](const UnitScope& scope) {

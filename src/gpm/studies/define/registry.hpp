@@ -26,31 +26,31 @@ namespace gpm {
 
 // A rate table made from one data file: rate_table's input, the rows it keeps, its key.
 struct RateTableRule {
-  std::string name;   // written as data/<profile>/<name>.tsv
-  std::string input;  // the data file (stem) it reads: the study file or a side output
-  std::vector<std::pair<std::string, std::string>> where;  // rows kept: column = value
+  std::string name = {};  // written as data/<profile>/<name>.tsv
+  std::string input = {};  // the data file (stem) it reads: the study file or a side output
+  std::vector<std::pair<std::string, std::string>> where = {};  // rows kept: column = value
   bool scored = false;  // one of the profile's front-page scoreboard tables
 };
 
 // A data file a study's program writes in a make run (data/<profile>/<name>.tsv).
 struct StudyFile {
-  std::string name;
-  std::vector<std::string> args;  // the program's arguments beyond the study's fixed ones
+  std::string name = {};
+  std::vector<std::string> args = {};  // the program's arguments beyond the study's fixed ones
   // Further files the same run writes: (option, file stem), e.g. ("--rates-input",
   // "thesis_table4_5_finite"); make passes them and rate tables may read them.
-  std::vector<std::pair<std::string, std::string>> side_outputs;
-  std::vector<RateTableRule> rates;
+  std::vector<std::pair<std::string, std::string>> side_outputs = {};
+  std::vector<RateTableRule> rates = {};
 };
 
 // A file of the study in the committed result store (results/paper/<name>.tsv): how it was
 // made, what it must hold and which of its units the store check recomputes
 // (tests/store/verify_store.sh reads these from `gpm study --store-files`).
 struct StoreFile {
-  std::string name;
-  std::string slice;  // its set-up's name in the verdicts: all, seed2, h15_cell, …
-  std::vector<std::string> args;    // the program's arguments beyond the study's fixed ones
-  std::vector<std::string> census;  // options naming the units it must hold (none: the paper levels)
-  std::vector<std::string> coarse;  // options naming the cheap units recomputed by the check
+  std::string name = {};
+  std::string slice = {};  // its set-up's name in the verdicts: all, seed2, h15_cell, …
+  std::vector<std::string> args = {};  // the program's arguments beyond the study's fixed ones
+  std::vector<std::string> census = {};  // options naming the units it must hold (none: the paper levels)
+  std::vector<std::string> coarse = {};  // options naming the cheap units recomputed by the check
   // The set-up readings whose rows it holds, named as PublishedRates::identified_slice names
   // them (a heat file: its one reading; Table 4.4: both h rules of one volume choice); none
   // for a file of another jitter realization.  The per-reading figures find their file here.
@@ -61,10 +61,11 @@ struct StoreFile {
 // (first) data file and its published rates.  make draws it from the run's data
 // (figures/out/<name>.svg) and from the store (store_<name>.svg); a per-reading figure is
 // drawn from the store twice, in the identified reading and in the printed one
-// (figures/store_reading.sh; store_printed_<name>.svg).
+// (store_printed_<name>.svg; figures/store_reading.sh draws the file that gpm store-rates
+// --figure-files names for each).
 struct StudyFigure {
-  std::string name;                  // thesis_fig4_8
-  std::vector<std::string> scripts;  // further gnuplot files it loads
+  std::string name = {};  // thesis_fig4_8
+  std::vector<std::string> scripts = {};  // further gnuplot files it loads
   bool per_reading = false;
 };
 
@@ -79,17 +80,17 @@ struct StoreSlice {
 
 // The published rates a study is judged against in the store (verdicts.hpp).
 struct PublishedRates {
-  std::string table;              // the verdicts' table name: thesis_table4_2, imoto_table1
-  std::string file;               // under tables/published/
-  std::vector<std::string> key;   // columns shared by the data and the published file
-  std::string printed_slice;      // the slice of the reading the document prints
+  std::string table = {};  // the verdicts' table name: thesis_table4_2, imoto_table1
+  std::string file = {};  // under tables/published/
+  std::vector<std::string> key = {};  // columns shared by the data and the published file
+  std::string printed_slice = {};  // the slice of the reading the document prints
   // The slice the set-up rule's identified reading selects (setup_identification.hpp);
   // unset: the printed one.
-  std::function<std::string(const PdeSetup&)> identified_slice;
+  std::function<std::string(const PdeSetup&)> identified_slice = {};
   bool finite_series = false;     // rates from the series that never blew up (heat)
   // How a stored file is cut into slices (one file holding several set-ups); unset: the
   // file is one slice, its StoreFile::slice.
-  std::function<std::vector<StoreSlice>(const StoreFile& file, const TsvTable& data)> cut;
+  std::function<std::vector<StoreSlice>(const StoreFile& file, const TsvTable& data)> cut = {};
   // A key column whose value leads the name of a rate's slice (Table 4.4: h_rule, so h10,
   // h15_seed2, h10_cell, …: the file's slice follows unless it is "all"); the rate's key is
   // then the others.  "": none.

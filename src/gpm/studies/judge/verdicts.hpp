@@ -101,7 +101,7 @@ struct StoreRate {
   std::string theoretical;  // the published theoretical rate; empty where the file has none
   // The least-squares slope over every stored level of the series with its 95 % interval,
   // "2.05 ± 0.08 (5 levels)" (no interval under three levels); empty where there is none.
-  std::string lsq;
+  std::string lsq = {};
 };
 
 // The set-ups of a slice (`setup` column) that a seed band is made of.
