@@ -42,9 +42,9 @@ using namespace gpm;
 
 namespace {
 
-const ProfileLevels kLevels = {{5, 6, 7}, {7, 8, 9}};  // the thesis' rate levels are 8, 9
-// The particle sets: three realizations of the jitter and the plain grid, with the volumes
-// of (A.10); then seed 1 and the plain grid with V_i = Δx² (pde_volumes, volumes.hpp).
+// The particle sets (the catalog names them, poisson_diagnostic()): three realizations of the
+// jitter and the plain grid, with the volumes of (A.10); then seed 1 and the plain grid with
+// V_i = Δx² (pde_volumes, volumes.hpp).
 struct Variant {
   std::string name;
   uint64_t seed;
@@ -80,14 +80,14 @@ int body(int argc, char** argv) {
   StudyRunner run("thesis_poisson_diagnostic",
                   "Table 4.4 diagnostics: the Poisson error per reading of h, weight, level and particle\n"
                   "set (seeds 1-3, plain grid), where its maximum sits, and the error away from the boundary.",
-                  kLevels.help(), StudyRunner::Kind::units_without_seed);
+                  poisson_diagnostic().levels.help(), StudyRunner::Kind::units_without_seed);
   Args& a = run.args();
   a.opt("weights", join(pde_weights(), ","), "comma-separated registry weights")
-      .opt("variants", "seed1,seed2,seed3,plain,seed1_cell,plain_cell",
+      .opt("variants", join(poisson_diagnostic().variants, ","),
            "comma-separated particle sets (seedN: jitter 1/4 dx; plain: none; _cell: V_i = dx^2)")
       .opt("tol", "1e-10", "CG relative residual on the symmetric form");
   run.parse(argc, argv);
-  const std::vector<int> levels = run.levels(kLevels.quick, kLevels.paper);
+  const std::vector<int> levels = run.levels(poisson_diagnostic().levels.quick, poisson_diagnostic().levels.paper);
   const double tol = a.tolerance("tol");
   const auto weights = a.list("weights");
   for (auto& w : weights) weight(w);  // InputError naming an unknown weight, before any work
@@ -114,11 +114,7 @@ int body(int argc, char** argv) {
        {"tau_predicted", "(V_i/dx^2)(1 - eps) - 1"},
        {"tau_fit", "sum tau_i lap_i / sum lap_i^2 over Omega, tau = lap_h u - lap u"},
        {"tau_max", "max |tau_i| / max |lap u| over Omega"}},
-      {"h_rule", "weight", "level", "variant", "dx", "h", "h_over_H", "N_omega",
-       "rel_error", "max_x", "max_y", "max_distance_over_h", "rel_error_inner",
-       "volume_mismatch", "eps_smoothing", "tau_predicted", "tau_fit", "tau_max",
-       "cg_iterations", "seconds"},
-      4);
+      poisson_diagnostic().columns, 4);
   const TestFunction& u = test_function("sin2pi");
   const Domain dom;
   for (int k : levels) {

@@ -115,13 +115,10 @@ while IFS=$'\t' read -r _study file program args census coarse _slice; do
   # shellcheck disable=SC2086  # the arguments are words
   check "$file.tsv" "$census" "$coarse" "$program" $args
 done < <(grep -v '^#' <<<"$listing" | tail -n +2 | awk -F'\t' -v OFS='\t' '{ for (i = 1; i <= NF; i++) if ($i == "") $i = "-"; print }')
-# A diagnostic of the Poisson problem (not a study of the registry: its own program).
-check thesis_poisson_diagnostic.tsv "--levels 7,8,9 --variants seed1,plain,seed1_cell,plain_cell" \
-  "--levels 7 --weights quartic_polynomial --variants seed1,plain,seed1_cell" thesis_poisson_diagnostic
 
 [ ${#missing[@]} -gt 0 ] && echo "MISSING from the store: ${missing[*]}"
-# A full check: every data file in the store is one of the above (a registered study's, or the
-# hand-listed diagnostic), so sealed and checked; anything else fails.
+# A full check: every data file in the store is one of the above (a registered study's), so
+# sealed and checked; anything else fails.
 if [ "$only" = "  " ]; then
   for f in "$store"/*.tsv; do
     [ -e "$f" ] || continue

@@ -63,6 +63,16 @@ const PoissonTable& poisson_table() {
   return t;
 }
 
+const PoissonDiagnostic& poisson_diagnostic() {
+  static const PoissonDiagnostic d = {
+      {{5, 6, 7}, {7, 8, 9}},
+      {"seed1", "seed2", "seed3", "plain", "seed1_cell", "plain_cell"},
+      {"h_rule", "weight", "level", "variant", "dx", "h", "h_over_H", "N_omega", "rel_error", "max_x", "max_y",
+       "max_distance_over_h", "rel_error_inner", "volume_mismatch", "eps_smoothing", "tau_predicted", "tau_fit",
+       "tau_max", "cg_iterations", "seconds"}};
+  return d;
+}
+
 const VoronoiStudy& voronoi_study() {
   // Level 12 (2.4e7 particles) needs about 4 GB and a few minutes per distribution.
   static const VoronoiStudy s = {

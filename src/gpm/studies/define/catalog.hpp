@@ -51,6 +51,15 @@ struct PoissonTable {
 };
 const PoissonTable& poisson_table();
 
+// thesis_poisson_diagnostic: Table 4.4's Poisson problem on several particle sets, with
+// where its error sits and the operator's consistency (why the table's rates differ).
+struct PoissonDiagnostic {
+  ProfileLevels levels;              // the thesis' rate levels are 8, 9
+  std::vector<std::string> variants;  // its particle sets (the program defines each)
+  std::vector<std::string> columns;   // of its data file; the first four are the unit's key
+};
+const PoissonDiagnostic& poisson_diagnostic();
+
 // core_voronoi: Voronoi cells of the plain and jittered grids (covering radius, areas).
 struct VoronoiStudy {
   ProfileLevels levels;

@@ -451,6 +451,54 @@ RegisteredStudy heat(const HeatTable& hp) {
   return s;
 }
 
+// thesis_poisson_diagnostic: per (level, particle set, h rule, weight) one Laplacian, its
+// consistency on u and a CG solve (Table 4.4's problem; the reasons chapter reads it).  The
+// store holds the rate levels on the particle sets the reasons use; its check recomputes
+// 2^-7 for one weight.
+RegisteredStudy poisson_diagnostic_study() {
+  RegisteredStudy s = identity("thesis_poisson_diagnostic", "thesis Table 4.4: where the error sits", "diagnostic",
+                               poisson_diagnostic().levels, poisson_diagnostic().columns, {7});
+  s.own_seeds = true;  // its particle sets are its --variants
+  s.files = {{.name = "thesis_poisson_diagnostic"}};
+  s.store_files = {{.name = "thesis_poisson_diagnostic", .slice = "all",
+                    .census = {"--levels", "7,8,9", "--variants", "seed1,plain,seed1_cell,plain_cell"},
+                    .coarse = {"--levels", "7", "--weights", "quartic_polynomial", "--variants",
+                               "seed1,plain,seed1_cell"}}};
+  s.units = [](const UnitScope& scope) {
+    std::vector<StudyUnit> out;
+    for (int k : scope.levels)
+      for (const std::string& var : poisson_diagnostic().variants)
+        for (HRule rule : pde_h_rules())
+          for (auto& w : pde_weights())
+            out.push_back({k, pde_h(rule, dx_of(k)), {h_rule_name(rule), w, fmt(k), var},
+                           h_rule_name(rule) + "/" + w + "/" + var});
+    return out;
+  };
+  // Priced as Table 4.4's solve of the same h rule and weight (its CG iterations carried
+  // from 2^-5 as 1/h), plus one product for the consistency.
+  s.price = [](UnitPricer& p, const StudyUnit& su) {
+    PlanUnit u = p.base("thesis_poisson_diagnostic", su.variant, su.level, su.h);
+    const bool as = p.is_assembled(u);
+    const std::string solve = su.key[0] + "/" + su.key[1];
+    const double its = p.cal().poisson_its.at(solve) * pde_h(parse_h_rule(su.key[0]), dx_of(5)) / u.h;
+    u.products = its + 3;
+    u.method = as ? "assembled" : "matrix_free";
+    const double setup = p.laplacian_setup_s(u, as);
+    u.time_s = setup + u.products * p.product_s(u, as);
+    u.time_before_s = setup + u.products * p.product_before_s(u);
+    u.mem_mib = p.pde_mib(u, as);
+    u.basis = "setup + (CG its " + fmt(std::round(its)) + " + 3) products";
+    p.units().push_back(u);
+  };
+  s.recorded = [](const std::string&, const TsvTable& d, const PlannedPairs&, RecordedUnits& out) {
+    const Rows rows{d, out};
+    for (auto& r : d.rows)
+      rows.put(rows.text(r, "h_rule") + "/" + rows.text(r, "weight") + "/" + rows.text(r, "variant"), rows.level(r),
+               rows.v(r, "seconds"), kNaN);
+  };
+  return s;
+}
+
 // core_voronoi: the plain grid once per level, the jittered grid per seed.
 RegisteredStudy voronoi() {
   RegisteredStudy s = identity("core_voronoi", "covering radius (imoto §5, thesis Ch. 4)", "core", voronoi_study().levels,
@@ -568,6 +616,7 @@ const StudyRegistry& study_registry() {
     v.add(poisson());
     for (auto& hp : heat_tables()) v.add(heat(hp));
     v.add(voronoi());
+    v.add(poisson_diagnostic_study());
     return v;
   }();
   return r;
