@@ -196,6 +196,24 @@ RegisteredStudy thesis_truncation(const ThesisTableSpec& t) {
   return s;
 }
 
+// A Poisson solve of Table 4.4's problem as the plan prices it: the Laplacian's set-up and
+// the CG iterations of its (h rule, weight) at 2^-5 carried as 1/h, plus `extra` products
+// (the right-hand side and residual check; the diagnostic's consistency).  The unit's key
+// starts with the h rule and the weight.
+void price_poisson_solve(UnitPricer& p, const std::string& study, const StudyUnit& su, int extra) {
+  PlanUnit u = p.base(study, su.variant, su.level, su.h);
+  const bool as = p.is_assembled(u);
+  const double its = p.cal().poisson_its.at(su.key[0] + "/" + su.key[1]) * pde_h(parse_h_rule(su.key[0]), dx_of(5)) / u.h;
+  u.products = its + extra;
+  u.method = as ? "assembled" : "matrix_free";
+  const double setup = p.laplacian_setup_s(u, as);
+  u.time_s = setup + u.products * p.product_s(u, as);
+  u.time_before_s = setup + u.products * p.product_before_s(u);
+  u.mem_mib = p.pde_mib(u, as);
+  u.basis = "setup + (CG its " + fmt(std::round(its)) + " + " + fmt(extra) + ") products";
+  p.units().push_back(u);
+}
+
 // Table 4.4: per (h rule, weight, level) the Laplacian's set-up and a CG solve, its
 // iterations carried from 2^-5 as 1/h.
 RegisteredStudy poisson() {
@@ -236,19 +254,7 @@ RegisteredStudy poisson() {
           out.push_back({k, pde_h(rule, dx_of(k)), {h_rule_name(rule), w, fmt(k)}, h_rule_name(rule) + "/" + w});
     return out;
   };
-  s.price = [](UnitPricer& p, const StudyUnit& su) {
-    PlanUnit u = p.base("thesis_table4_4", su.variant, su.level, su.h);
-    const bool as = p.is_assembled(u);
-    const double its = p.cal().poisson_its.at(su.variant) * pde_h(parse_h_rule(su.key[0]), dx_of(5)) / u.h;
-    u.products = its + 2;
-    u.method = as ? "assembled" : "matrix_free";
-    const double setup = p.laplacian_setup_s(u, as);
-    u.time_s = setup + u.products * p.product_s(u, as);
-    u.time_before_s = setup + u.products * p.product_before_s(u);
-    u.mem_mib = p.pde_mib(u, as);
-    u.basis = "setup + (CG its " + fmt(std::round(its)) + " + 2) products";
-    p.units().push_back(u);
-  };
+  s.price = [](UnitPricer& p, const StudyUnit& su) { price_poisson_solve(p, "thesis_table4_4", su, 2); };
   s.recorded = [](const std::string&, const TsvTable& d, const PlannedPairs&, RecordedUnits& out) {
     const Rows rows{d, out};
     for (auto& r : d.rows)
@@ -474,22 +480,9 @@ RegisteredStudy poisson_diagnostic_study() {
                            h_rule_name(rule) + "/" + w + "/" + var});
     return out;
   };
-  // Priced as Table 4.4's solve of the same h rule and weight (its CG iterations carried
-  // from 2^-5 as 1/h), plus one product for the consistency.
-  s.price = [](UnitPricer& p, const StudyUnit& su) {
-    PlanUnit u = p.base("thesis_poisson_diagnostic", su.variant, su.level, su.h);
-    const bool as = p.is_assembled(u);
-    const std::string solve = su.key[0] + "/" + su.key[1];
-    const double its = p.cal().poisson_its.at(solve) * pde_h(parse_h_rule(su.key[0]), dx_of(5)) / u.h;
-    u.products = its + 3;
-    u.method = as ? "assembled" : "matrix_free";
-    const double setup = p.laplacian_setup_s(u, as);
-    u.time_s = setup + u.products * p.product_s(u, as);
-    u.time_before_s = setup + u.products * p.product_before_s(u);
-    u.mem_mib = p.pde_mib(u, as);
-    u.basis = "setup + (CG its " + fmt(std::round(its)) + " + 3) products";
-    p.units().push_back(u);
-  };
+  // Priced as Table 4.4's solve of the same h rule and weight, plus one product for the
+  // consistency.
+  s.price = [](UnitPricer& p, const StudyUnit& su) { price_poisson_solve(p, "thesis_poisson_diagnostic", su, 3); };
   s.recorded = [](const std::string&, const TsvTable& d, const PlannedPairs&, RecordedUnits& out) {
     const Rows rows{d, out};
     for (auto& r : d.rows)
