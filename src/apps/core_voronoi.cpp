@@ -86,7 +86,7 @@ int body(int argc, char** argv) {
   // --- The data file: per level, for every seed the plain grid's row and the jittered one's.
   const Domain dom;
   const double amplitude = 0.25;
-  LevelCache& cache = run.open(
+  UnitCache& cache = run.open(
       {{"program", "core_voronoi"}, {"seeds", join(seed_names, ",")}, {"H", fmt(dom.H)},
        {"Omega_H", "(-H, 1+H)^2"}, {"jitter_amplitude", fmt(amplitude)},
        {"r_c_grid_formula", "sqrt(2)*max(dx/2, g_lo, g_hi), g_lo = first*dx + H, g_hi = 1 + H - last*dx"},

@@ -5,7 +5,7 @@
 // through rate_table, Table 1 (two finest levels).
 //
 // One unit of work is a (level, m) pair: all nine weights are evaluated in ONE fused
-// kernel pass (fused_errors).  Each finished unit is written at once (LevelCache), so an
+// kernel pass (fused_errors).  Each finished unit is written at once (UnitCache), so an
 // interrupted paper-profile run resumes where it stopped.
 //
 // Note on (Π3): the registry uses the normalizing constant 6/π; the document prints 5/π.
@@ -159,7 +159,7 @@ int body(int argc, char** argv) {
       {"Pi3_constant", "6/pi (printed 5/pi does not normalize)"},
       {"time_s_note", "wall time of the whole (level, m) unit: particles, kernel, errors"},
       {"smoothing_part", "interpolant only: (M2/4)*8pi^2*h^2, M2 = int |x|^2 w dx (no particles)"}};
-  LevelCache& cache = run.open(params, 2);
+  UnitCache& cache = run.open(params, 2);
   cache.table().set("profile", profile_name(profile));
 
   // The units: the registry's, one per (level, m), level by level.  Work still to do, for

@@ -227,9 +227,9 @@ class Regularity {
   std::string method_;
   bool simplex_ = false;
   const Domain dom_{};
-  LevelCache* cov_ = nullptr;  // covering radii
-  LevelCache* ex_ = nullptr;   // the counter-example
-  LevelCache* dev_ = nullptr;  // the Voronoi deviation
+  UnitCache* cov_ = nullptr;  // covering radii
+  UnitCache* ex_ = nullptr;   // the counter-example
+  UnitCache* dev_ = nullptr;  // the Voronoi deviation
   static constexpr const char* kCases[] = {"worst cell", "worst cell of a particle in Omega"};
 
   // The data files: rows are reused where a file's parameters agree; every unit is keyed by
@@ -237,7 +237,7 @@ class Regularity {
   // its transport radii), (case, level, seed) of a counter-example row.
   void open_files() {
     const std::string jitter = "|eta| < 1/4, counter-based hash of (seed,i,j), mirrored at the edge";
-    const std::vector<LevelCache*> files = run_.open_files(
+    const std::vector<UnitCache*> files = run_.open_files(
         {{run_.out(), {{"program", "imoto_regularity"}, {"part", "covering radius"}, {"H", fmt(dom_.H)},
                       {"jitter", jitter}, {"claim_r_over_dx", fmt(kClaimR)}},
           {"level", "dx", "seed", "N", "r_N_over_dx", "r_N_omega_over_dx", "claim_over_dx", "claim_holds",

@@ -448,7 +448,7 @@ class Bounds {
   FigureData fig_;
   const Domain dom_{};
   std::vector<std::pair<std::string, std::string>> params_;  // what a row depends on
-  std::vector<LevelCache*> files_;
+  std::vector<UnitCache*> files_;
 
   Args& args() { return run_.args(); }
 

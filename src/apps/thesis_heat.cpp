@@ -52,7 +52,7 @@ namespace {
 // --- Parameters: the tables, weights, κ and T are the catalog's (gpm/studies/define/heat_tables.hpp). ---
 
 // The rows of series (weight, θ) that never blew up: the input of rate_table.
-void write_rates_input(LevelCache& cache, const std::string& path) {
+void write_rates_input(UnitCache& cache, const std::string& path) {
   TsvTable t;
   for (const char* key : {"program", "table", "profile", "seed", "h_rule", "h", "dt_nominal", "error"})
     if (auto v = cache.table().get(key)) t.set(key, *v);
@@ -75,7 +75,7 @@ void write_rates_input(LevelCache& cache, const std::string& path) {
 
 // The propagator that made a stored unit's row (stepped where the file has none), for
 // --verify/--recheck: a row is recomputed the way it was made.
-HeatPropagator stored_propagator(LevelCache& cache, const std::vector<std::string>& key) {
+HeatPropagator stored_propagator(UnitCache& cache, const std::vector<std::string>& key) {
   const TsvTable& d = cache.table();
   for (std::size_t i = 0; i < d.rows.size(); ++i)
     if (d.text(i, "weight") == key[0] && d.text(i, "theta") == key[1] && d.text(i, "level") == key[2])
@@ -152,7 +152,7 @@ class HeatTables {
   double max_bytes_ = 0;
   std::vector<StudyUnit> units_;
   std::string out_, rates_input_;
-  std::vector<LevelCache*> caches_;
+  std::vector<UnitCache*> caches_;
   const Domain dom_;
   Particles p_;  // of the level being run, with the volumes of each choice
   std::map<PdeVolumes, std::vector<double>> V_;

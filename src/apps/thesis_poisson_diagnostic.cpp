@@ -102,7 +102,7 @@ int body(int argc, char** argv) {
   }
 
   // --- The data file: one row per (reading of h, weight, level, particle set). -------------
-  LevelCache& cache = run.open(
+  UnitCache& cache = run.open(
       {{"program", "thesis_poisson_diagnostic"}, {"profile", profile_name(run.profile())},
        {"tol", fmt(tol)}, {"function", "sin2pi"}, {"volumes", "uniform |Omega_H|/N"},
        {"h10", pde_h_formula(HRule::h10)}, {"h15", pde_h_formula(HRule::h15)},

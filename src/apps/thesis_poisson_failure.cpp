@@ -267,14 +267,14 @@ class PoissonFailure {
   int dense_max_ = 0;
   const Domain dom_{};
   const TestFunction& u_ = test_function("sin2pi");
-  LevelCache* ca_ = nullptr;  // part (a)'s rows
-  LevelCache* cb_ = nullptr;  // part (b)'s rows
+  UnitCache* ca_ = nullptr;  // part (a)'s rows
+  UnitCache* cb_ = nullptr;  // part (b)'s rows
 
   // The data files, both opened at once (the runner keeps one set of files per run): (a) one
   // row per (reading of h, weight, level), (b) one row per (level, seed, h/dx); each cached,
   // so a rerun skips finished rows.
   void open_files() {
-    const std::vector<LevelCache*> files = run_.open_files(
+    const std::vector<UnitCache*> files = run_.open_files(
         {{run_.out(), {{"program", "thesis_poisson_failure"}, {"part", "a: weight sign"},
                    {"profile", profile_name(prof_)}, {"seed", fmt(static_cast<long long>(seed_))},
                    {"tol", fmt(kTol)}, {"max_iter", fmt(kMaxIter)},

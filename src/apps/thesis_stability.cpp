@@ -79,7 +79,7 @@ int body(int argc, char** argv) {
   const std::vector<int> levels = run.levels(kLevels.quick, kLevels.paper);
 
   // --- The data file: one row per (weight, h rule, level). --------------------------------
-  LevelCache& cache = run.open(
+  UnitCache& cache = run.open(
       {{"program", "thesis_stability"}, {"profile", profile_name(prof)},
        {"seed", fmt(static_cast<long long>(seed))}, {"kappa", fmt(kKappa)},
        {"theta_q", fmt(kThetaQ)}, {"lanczos_tol", fmt(tol)},

@@ -59,7 +59,7 @@ int body(int argc, char** argv) {
   require_pde_levels_fit_memory(levels, pde_h_rules(), storage, max_bytes);
 
   // --- The data file: one row per (reading of h, weight, level). ---------------------------
-  LevelCache& cache = run.open(
+  UnitCache& cache = run.open(
       {{"program", "thesis_table4_4"}, {"profile", profile_name(run.profile())},
        {"seed", fmt(static_cast<long long>(run.seed()))}, {"tol", fmt(tol)},
        {"function", "sin2pi"}, {"volumes", pde_volumes_description(volumes)},

@@ -2,7 +2,7 @@
 # Every study of the catalog writes the columns the catalog names: each one is run through
 # `gpm study NAME` at a small level and the header line of its data file is compared with
 # the `header` of `gpm study --list` (the catalog's columns, and the store's provenance
-# columns for a study written through the level cache).  (A column added in a program but not in the catalog,
+# columns for a study written through the unit cache).  (A column added in a program but not in the catalog,
 # or the reverse, fails here.)
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u

@@ -69,7 +69,7 @@ void run_example(const RegisteredStudy& s, const std::vector<std::string>& argv_
   for (auto& a : text) argv.push_back(a.data());
   StudyRunner run(s, "Example study: the interpolant's error on the plain grid.");
   run.parse(static_cast<int>(argv.size()), argv.data());
-  LevelCache& cache = run.open({{"program", s.program}, {"seed", "1"}}, 2);
+  UnitCache& cache = run.open({{"program", s.program}, {"seed", "1"}}, 2);
   for (const StudyUnit& u : run.units()) {
     if (cache.has(u.key) || !run.claim()) continue;
     const double dx = std::ldexp(1.0, -u.level);

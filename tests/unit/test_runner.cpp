@@ -33,7 +33,7 @@ int run_study(const std::string& out, const std::string& mode_flag = "") {
   std::vector<std::string> words = {"runner_test", "--out", out};
   if (!mode_flag.empty()) words.push_back(mode_flag);
   parse(run, words);
-  LevelCache& cache = run.open({{"program", "runner_test"}, {"seed", fmt(static_cast<long long>(run.seed()))}},
+  UnitCache& cache = run.open({{"program", "runner_test"}, {"seed", fmt(static_cast<long long>(run.seed()))}},
                                {"level", "rel_error", "time_s"}, 1);
   int computed = 0;
   for (int k : run.levels({5, 6}, {5, 6, 7})) {
@@ -108,7 +108,7 @@ int run_two(const std::string& a, const std::string& b, const std::string& mode_
   std::vector<std::string> words = {"runner_test", "--out", a};
   if (!mode_flag.empty()) words.push_back(mode_flag);
   parse(run, words);
-  const std::vector<LevelCache*> c = run.open_files(
+  const std::vector<UnitCache*> c = run.open_files(
       {{a, {{"program", "runner_test"}, {"variant", "a"}}}, {b, {{"program", "runner_test"}, {"variant", "b"}}}},
       {"level", "rel_error", "time_s"}, 1);
   int computed = 0;
@@ -158,7 +158,7 @@ ErrorMaxima run_parts(const std::string& out, const std::string& parts, int& cal
   static const PassSetup s;
   StudyRunner run("runner_test", "test study", "quick or paper");
   parse(run, {"runner_test", "--out", out, "--parts", parts});
-  LevelCache& cache = run.open({{"program", "runner_test"}}, {"level", "rel_error", "time_s"}, 1);
+  UnitCache& cache = run.open({{"program", "runner_test"}}, {"level", "rel_error", "time_s"}, 1);
   ErrorMaxima m;
   if (!cache.has({"5"}) && run.claim_shared()) {
     m = run.shared_pass("level 5/one", [&](TargetShare t) {

@@ -32,7 +32,7 @@ const std::vector<std::string> kColumns = {"level", "weight", "rel_error", "time
 // A study of two units (levels 5, 6) with two rows each; `bump` changes level 6's numbers.
 void run_study(const std::string& path, CacheMode mode, double bump = 0,
                std::vector<int> levels = {5, 6}) {
-  LevelCache c(path, kParams, kColumns, 1, mode);
+  UnitCache c(path, kParams, kColumns, 1, mode);
   for (int k : levels) {
     if (c.has({std::to_string(k)}, 2)) continue;
     for (const char* w : {"a", "b"})
@@ -83,7 +83,7 @@ TEST_CASE("store: rows carry the code fingerprint and are reused only under it",
     CHECK(r[checked] == "computed");
   }
   {
-    LevelCache c(f, kParams, kColumns, 1);
+    UnitCache c(f, kParams, kColumns, 1);
     CHECK(c.reused() == 4);
     CHECK(c.has({"5"}, 2));
     CHECK_FALSE(c.has({"5"}, 3));  // a unit needs all its rows
@@ -93,7 +93,7 @@ TEST_CASE("store: rows carry the code fingerprint and are reused only under it",
   auto tt = TsvTable::load(f);
   tt.rows[0][code] = tt.rows[1][code] = "0123456789ab";
   save_resealed(tt, f);
-  LevelCache c(f, kParams, kColumns, 1);
+  UnitCache c(f, kParams, kColumns, 1);
   CHECK(c.reused() == 2);
   CHECK_FALSE(c.has({"5"}, 2));
   CHECK(c.has({"6"}, 2));
@@ -112,7 +112,7 @@ TEST_CASE("store: a partial unit is recomputed; a malformed row is refused unles
   });
   REQUIRE(dropped);
   {
-    LevelCache c(f, kParams, kColumns, 1);
+    UnitCache c(f, kParams, kColumns, 1);
     CHECK_FALSE(c.has({"5"}, 2));
     CHECK(c.has({"6"}, 2));
   }
@@ -220,14 +220,14 @@ TEST_CASE("store: --census lists the units a file lacks, computing nothing", "[u
 TEST_CASE("store: a second writer on one file is refused", "[unit][store]") {
   TempDir t("gpm_store_");
   const std::string f = t.file("s.tsv");
-  LevelCache first(f, kParams, kColumns, 1);
-  REQUIRE_THROWS_AS(LevelCache(f, kParams, kColumns, 1), InputError);
-  REQUIRE_NOTHROW(LevelCache(f, kParams, kColumns, 1, CacheMode::census));  // a reader
+  UnitCache first(f, kParams, kColumns, 1);
+  REQUIRE_THROWS_AS(UnitCache(f, kParams, kColumns, 1), InputError);
+  REQUIRE_NOTHROW(UnitCache(f, kParams, kColumns, 1, CacheMode::census));  // a reader
 }
 
 TEST_CASE("store: --out must be a regular file, and outputs distinct", "[unit][store]") {
   TempDir t("gpm_store_");
-  REQUIRE_THROWS_AS(LevelCache(t.dir.string(), kParams, kColumns, 1), InputError);
+  REQUIRE_THROWS_AS(UnitCache(t.dir.string(), kParams, kColumns, 1), InputError);
   REQUIRE_THROWS_AS(require_distinct_paths({{"--out", t.file("a.tsv")},
                                             {"--cost", (t.dir / "." / "a.tsv").string()}}),
                     InputError);
@@ -317,7 +317,7 @@ TEST_CASE("store: residual columns are compared on their own scale", "[unit][sto
   const std::string f = t.file("r.tsv");
   const std::vector<std::string> cols = {"level", "rel_error", "max_rel_residual"};
   auto study = [&](CacheMode mode, double residual) {
-    LevelCache c(f, kParams, cols, 1, mode);
+    UnitCache c(f, kParams, cols, 1, mode);
     c.add({"5", fmt(0.125), fmt(residual)});
     c.save();
     c.finish();
@@ -368,7 +368,7 @@ TEST_CASE("store: a quick-profile file is a cache for a quick run only", "[unit]
         {"program", "store_test"}, {"profile", profile}, {"seed", seed}};
   };
   auto run = [&](const char* profile, const char* seed, CacheMode mode = CacheMode::run) {
-    LevelCache c(f, params(profile, seed), kColumns, 1, mode);
+    UnitCache c(f, params(profile, seed), kColumns, 1, mode);
     if (!c.has({"5"}, 1)) c.add({"5", "a", "0.2", "0.1"}), c.save();
   };
   run("quick", "1");
@@ -401,7 +401,7 @@ TEST_CASE("store: a removed lock file loses no rows: the lock is taken again and
           "[unit][store]") {
   TempDir t("gpm_store_");
   const std::string f = t.file("s.tsv");
-  auto add_unit = [](LevelCache& c, int k) {
+  auto add_unit = [](UnitCache& c, int k) {
     for (const char* w : {"a", "b"}) c.add({std::to_string(k), w, fmt(1.0 / k), "0.1"});
     c.save();
   };
@@ -411,11 +411,11 @@ TEST_CASE("store: a removed lock file loses no rows: the lock is taken again and
     return l;
   };
   SECTION("the second writer is gone when the first saves: merged") {
-    LevelCache first(f, kParams, kColumns, 1);
+    UnitCache first(f, kParams, kColumns, 1);
     add_unit(first, 5);
     fs::remove(f + ".lock");
     {
-      LevelCache second(f, kParams, kColumns, 1);  // let in by the missing lock
+      UnitCache second(f, kParams, kColumns, 1);  // let in by the missing lock
       CHECK(second.has({"5"}, 2));
       add_unit(second, 6);
     }
@@ -424,10 +424,10 @@ TEST_CASE("store: a removed lock file loses no rows: the lock is taken again and
     CHECK(TsvTable::load(f).rows.size() == 6);
   }
   SECTION("the second writer still holds the new lock: the first writes nothing, keeps its rows") {
-    LevelCache first(f, kParams, kColumns, 1);
+    UnitCache first(f, kParams, kColumns, 1);
     add_unit(first, 5);
     fs::remove(f + ".lock");
-    LevelCache second(f, kParams, kColumns, 1);
+    UnitCache second(f, kParams, kColumns, 1);
     add_unit(second, 6);
     for (const char* w : {"a", "b"}) first.add({"7", w, "0.1", "0.1"});
     REQUIRE_THROWS_WITH(first.save(), Catch::Contains("another process holds the new one"));
@@ -438,7 +438,7 @@ TEST_CASE("store: a removed lock file loses no rows: the lock is taken again and
     CHECK(rescued);
   }
   SECTION("a file rewritten meanwhile by hand (a git checkout): its units merged, not lost") {
-    LevelCache first(f, kParams, kColumns, 1);
+    UnitCache first(f, kParams, kColumns, 1);
     add_unit(first, 5);
     auto tt = TsvTable::load(f);
     auto extra = tt.rows;
@@ -464,7 +464,7 @@ TEST_CASE("outputs: a sealed store file is written only by its own study", "[uni
   other.set("program", "another");
   other.columns = {"a"};
   REQUIRE_THROWS_AS(other.save(f), InputError);
-  REQUIRE_THROWS_WITH(LevelCache(f, {{"program", "another"}, {"seed", "1"}}, kColumns, 1, CacheMode::replace),
+  REQUIRE_THROWS_WITH(UnitCache(f, {{"program", "another"}, {"seed", "1"}}, kColumns, 1, CacheMode::replace),
                       Catch::Contains("only that study writes it"));
   CHECK(text_of(f) == before);
 }

@@ -105,7 +105,7 @@ int run_thesis_table(const ThesisTableSpec& spec, int argc, char** argv) {
   std::string wnames;
   for (auto& r : spec.requests) wnames += (wnames.empty() ? "" : ",") + r.weight + ":" + operator_name(r.op);
   params.push_back({"requests", wnames});
-  LevelCache& cache = run.open(params, thesis_table_columns(), 3);
+  UnitCache& cache = run.open(params, thesis_table_columns(), 3);
   const std::size_t rows_per_unit = spec.requests.size() * thesis_cases().size();
   cache.table().set("profile", profile_name(profile));
   cache.table().set("paper_uniform_max_level", fmt(spec.paper_uniform_max_level));

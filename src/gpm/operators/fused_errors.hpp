@@ -3,7 +3,7 @@
 //
 // A study program reads like the documents' "numerical results" paragraph:
 //
-//   LevelCache cache(out, params, columns, /*key columns*/ 2);   // store.hpp
+//   UnitCache cache(out, params, columns, /*key columns*/ 2);   // store.hpp
 //   for (int k : levels) for (double m : orders) {
 //     if (cache.has({fmt(k), fmt(m)})) continue;            // done in an earlier run
 //     ... build particles, volumes, h ...

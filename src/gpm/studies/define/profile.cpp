@@ -69,7 +69,7 @@ std::string gib(double bytes) {
 }
 }  // namespace
 
-double grid_particle_count(double dx) {
+double grid_particle_estimate(double dx) {
   const double per_axis = std::floor(Domain{}.side() / dx) + 1;
   return per_axis * per_axis;
 }
@@ -79,7 +79,7 @@ void require_grid_fits_memory(double dx, double bytes_per_particle, const std::s
   if (dx >= 0.5)
     throw InputError(option + " " + fmt(dx) + " is too coarse: no grid node would lie inside "
                               "Omega = (0,1)^2 (dx must be < 0.5)");
-  const double n = grid_particle_count(dx), need = n * bytes_per_particle;
+  const double n = grid_particle_estimate(dx), need = n * bytes_per_particle;
   const double have = machine_memory_bytes();
   if (have > 0 && !(need <= have)) {
     char count[32];
@@ -95,7 +95,7 @@ double pde_bytes_per_particle(double h, double dx, LaplacianStorage storage, dou
   const double matrix_bytes = storage == LaplacianStorage::matrix_free ? 0
                               : storage == LaplacianStorage::assembled
                                   ? nnz_bytes
-                                  : std::min(nnz_bytes, max_bytes / grid_particle_count(dx));
+                                  : std::min(nnz_bytes, max_bytes / grid_particle_estimate(dx));
   return 400 + matrix_bytes;
 }
 

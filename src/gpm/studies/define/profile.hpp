@@ -36,7 +36,7 @@ double machine_memory_bytes();
 
 // Particles of a jittered grid of spacing dx on Ω_H, (⌊side/dx⌋ + 1)², as a double (at
 // dx = 1e-300 it overflows every integer type).
-double grid_particle_count(double dx);
+double grid_particle_estimate(double dx);  // (cost_model.hpp: grid_particle_count, exact)
 
 // Refuses, before anything is allocated, a grid spacing whose jittered grid on Ω_H would
 // need more memory than the machine has: N ≈ (side/dx + 1)² particles times

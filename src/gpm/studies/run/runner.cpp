@@ -121,7 +121,7 @@ std::vector<StudyUnit> StudyRunner::units() const {
   return out;
 }
 
-LevelCache& StudyRunner::open(std::vector<std::pair<std::string, std::string>> params, int key_columns) {
+UnitCache& StudyRunner::open(std::vector<std::pair<std::string, std::string>> params, int key_columns) {
   if (!study_) throw std::logic_error("StudyRunner::open(params, key): not made from a registered study");
   return open(std::move(params), study_->columns, key_columns);
 }
@@ -131,23 +131,23 @@ std::vector<int> StudyRunner::levels(const std::vector<int>& quick,
   return levels_option(args_, profile_, quick, paper, lo, hi);
 }
 
-LevelCache& StudyRunner::open(std::vector<std::pair<std::string, std::string>> params,
+UnitCache& StudyRunner::open(std::vector<std::pair<std::string, std::string>> params,
                               std::vector<std::string> columns, int key_columns) {
   return *open_files({{out_, std::move(params)}}, std::move(columns), key_columns).front();
 }
 
-std::vector<LevelCache*> StudyRunner::open_files(std::vector<DataFile> files,
+std::vector<UnitCache*> StudyRunner::open_files(std::vector<DataFile> files,
                                                  std::vector<std::string> columns,
                                                  int key_columns) {
   if (!caches_.empty()) throw std::logic_error("StudyRunner: data files opened twice");
   for (auto& [k, v] : files.front().params) params_text_ += k + "=" + v + ";";
-  std::vector<LevelCache*> out;
+  std::vector<UnitCache*> out;
   for (auto& f : files) {
     for (auto& p : paths_)
       if (p == f.path) throw InputError("one data file named twice in one run: " + f.path);
     // A file that refuses (InputError) leaves the earlier ones' locks to their destructors.
     file_columns_.push_back(f.columns.empty() ? columns : f.columns);
-    caches_.push_back(std::make_unique<LevelCache>(f.path, std::move(f.params), file_columns_.back(),
+    caches_.push_back(std::make_unique<UnitCache>(f.path, std::move(f.params), file_columns_.back(),
                                                    key_columns, mode_, rank_ == 0, profile_ == Profile::quick));
     paths_.push_back(f.path);
     saved_added_.push_back(0);
@@ -420,7 +420,7 @@ bool StudyRunner::finish() {
   if (first) std::rethrow_exception(first);
   if (!caches_.front()->writes()) return false;
   for (std::size_t f = 0; f < caches_.size(); ++f) {
-    const LevelCache& c = *caches_[f];
+    const UnitCache& c = *caches_[f];
     if (c.rows().empty()) throw InputError("no level selected: nothing to write to " + paths_[f]);
     if (c.added() == 0)
       std::printf("%s: nothing to compute: %s holds every selected unit (%zu rows, %.1f s)\n",

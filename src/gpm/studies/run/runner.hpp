@@ -2,7 +2,7 @@
 // that a study program is left with its method (a loop over levels):
 //   * the common options: --out (required), --profile, --levels, --seed, --verify, --recheck;
 //   * the data file: its parameters and columns, the per-unit cache and the result store's
-//     fingerprints, lock and re-check (LevelCache, store.hpp);
+//     fingerprints, lock and re-check (UnitCache, store.hpp);
 //   * one line per finished unit, a progress line with an ETA, the wall time and peak memory
 //     in the file's header, and the closing "wrote …" line;
 //   * --parts K: a shared pass (below) split into K parts on one process, each part saved in
@@ -28,7 +28,7 @@
 //   StudyRunner run("thesis_table4_4", "Discrete Poisson problem …", poisson_table().levels.help());
 //   run.args().opt("tol", "1e-10", "CG relative residual");
 //   run.parse(argc, argv);
-//   LevelCache& cache = run.open(params, columns, 3);
+//   UnitCache& cache = run.open(params, columns, 3);
 //   for (int k : run.levels(quick, paper)) {
 //     if (cache.has(key) || !run.claim(cost)) continue;  // stored, or another rank's unit
 //     …; cache.add(row); run.unit_done(work, line);
@@ -98,11 +98,11 @@ class StudyRunner {
   // The data file: rows are reused only where `params` agree with its header; `columns` are
   // the study's own (the store's provenance columns follow); a unit is keyed by the first
   // `key_columns` of a row.  Says how many rows it reuses.
-  LevelCache& open(std::vector<std::pair<std::string, std::string>> params,
+  UnitCache& open(std::vector<std::pair<std::string, std::string>> params,
                    std::vector<std::string> columns, int key_columns);
   // The registered study's data file, with its columns.
-  LevelCache& open(std::vector<std::pair<std::string, std::string>> params, int key_columns);
-  LevelCache& cache() { return *caches_.at(0); }
+  UnitCache& open(std::vector<std::pair<std::string, std::string>> params, int key_columns);
+  UnitCache& cache() { return *caches_.at(0); }
   // Several data files from one run: variants of a set-up that share its costly part (the
   // heat readings of one Laplacian: volumes and time-step rules), each its own file with its
   // own parameters, the columns and unit keys common.  Rows go to a file by its index
@@ -115,7 +115,7 @@ class StudyRunner {
     // Poisson failure probes and their h sweep); empty: open_files' common columns.
     std::vector<std::string> columns = {};
   };
-  std::vector<LevelCache*> open_files(std::vector<DataFile> files, std::vector<std::string> columns,
+  std::vector<UnitCache*> open_files(std::vector<DataFile> files, std::vector<std::string> columns,
                                       int key_columns);
 
   // Whether this process computes the next unit still to do.  Called, in loop order, for every
@@ -140,7 +140,7 @@ class StudyRunner {
   // computed and saved (atomically), then merged in order (merge_following: exactly the one
   // pass).  A unit's part files are removed once its rows are written (unit_done).
   ErrorMaxima shared_pass(const std::string& unit, const std::function<ErrorMaxima(TargetShare)>& pass);
-  // One row of a unit this process computed (LevelCache::add on one process; kept for the
+  // One row of a unit this process computed (UnitCache::add on one process; kept for the
   // gathering in finish() on several).
   void add(std::vector<std::string> row) { add(0, std::move(row)); }
   void add(std::size_t file, std::vector<std::string> row);
@@ -173,7 +173,7 @@ class StudyRunner {
   Kind kind_;
   uint64_t seed_ = 1;
   CacheMode mode_ = CacheMode::run;
-  std::vector<std::unique_ptr<LevelCache>> caches_;  // open() or open_files()
+  std::vector<std::unique_ptr<UnitCache>> caches_;  // open() or open_files()
   std::vector<std::string> paths_;
   std::vector<std::vector<std::string>> file_columns_;  // each file's own columns (open_files)
   std::vector<std::size_t> saved_added_;  // rows each file had added when last written

@@ -167,7 +167,7 @@ int take_lock(const std::string& lock) {
 
 }  // namespace
 
-LevelCache::LevelCache(std::string path, std::vector<std::pair<std::string, std::string>> params,
+UnitCache::UnitCache(std::string path, std::vector<std::pair<std::string, std::string>> params,
                        std::vector<std::string> columns, int key_columns, CacheMode mode,
                        bool writer, bool quick_run)
     : path_(std::move(path)),
@@ -211,11 +211,11 @@ LevelCache::LevelCache(std::string path, std::vector<std::pair<std::string, std:
   }
 }
 
-LevelCache::~LevelCache() {
+UnitCache::~UnitCache() {
   if (lock_fd_ >= 0) ::close(lock_fd_);  // releases the flock
 }
 
-void LevelCache::refuse_file(const std::string& problem, std::size_t rows, bool replace) {
+void UnitCache::refuse_file(const std::string& problem, std::size_t rows, bool replace) {
   if (!replace)
     throw InputError(path_ + ": " + problem + "; nothing written (--replace discards its " +
                      std::to_string(rows) + " rows; or restore the file from git)");
@@ -223,7 +223,7 @@ void LevelCache::refuse_file(const std::string& problem, std::size_t rows, bool 
                problem.c_str(), rows, reason_.c_str());
 }
 
-void LevelCache::load(const std::vector<std::pair<std::string, std::string>>& params) {
+void UnitCache::load(const std::vector<std::pair<std::string, std::string>>& params) {
   if (!fs::exists(path_)) return;
   const TsvTable old = TsvTable::load(path_, false);  // InputError: unreadable, CRLF, BOM
   disk_ = disk_state();
@@ -339,25 +339,25 @@ void LevelCache::load(const std::vector<std::pair<std::string, std::string>>& pa
 
 // A row of older code carried over by a re-check: current code, the last check's record with
 // the count of earlier ones, a new seal (its old one was verified when the file was read).
-void LevelCache::restamp(std::vector<std::string>& r, const std::string& tail) const {
+void UnitCache::restamp(std::vector<std::string>& r, const std::string& tail) const {
   const int ccode = table_.column("code"), cchecked = table_.column("checked");
   r[cchecked] = checked_cell("recheck " + today() + " of code " + r[ccode] + tail, recheck_count(r[cchecked]));
   r[ccode] = code_;
   r.back() = row_seal(r);
 }
 
-std::vector<std::string> LevelCache::key_of(const std::vector<std::string>& row) const {
+std::vector<std::string> UnitCache::key_of(const std::vector<std::string>& row) const {
   return {row.begin(), row.begin() + std::min<std::size_t>(key_columns_, row.size())};
 }
 
-std::string LevelCache::key_text(const std::vector<std::string>& key) const {
+std::string UnitCache::key_text(const std::vector<std::string>& key) const {
   std::string s;
   for (std::size_t c = 0; c < key.size(); ++c)
     s += (c ? ", " : "") + table_.columns[c] + " " + escaped(key[c]);
   return s;
 }
 
-bool LevelCache::has(const std::vector<std::string>& key, std::size_t expected_rows) const {
+bool UnitCache::has(const std::vector<std::string>& key, std::size_t expected_rows) const {
   if (mode_ == CacheMode::verify || mode_ == CacheMode::recheck) return false;
   const int ccode = table_.column("code");
   std::size_t n = 0, current = 0;
@@ -372,10 +372,10 @@ bool LevelCache::has(const std::vector<std::string>& key, std::size_t expected_r
   return whole && current == n;
 }
 
-void LevelCache::add(std::vector<std::string> row) {
+void UnitCache::add(std::vector<std::string> row) {
   const std::size_t own = table_.columns.size() - row_provenance_columns().size();
   if (row.size() != own)
-    throw std::logic_error("LevelCache::add: a row of " + std::to_string(row.size()) +
+    throw std::logic_error("UnitCache::add: a row of " + std::to_string(row.size()) +
                            " cells for " + std::to_string(own) + " columns (" + path_ + ")");
   row.insert(row.end(), {code_, made_on_, "computed", ""});
   row.back() = row_seal(row);
@@ -390,7 +390,7 @@ void LevelCache::add(std::vector<std::string> row) {
   ++added_;
 }
 
-LevelCache::DiskState LevelCache::disk_state() const {
+UnitCache::DiskState UnitCache::disk_state() const {
   struct stat st;
   if (::stat(path_.c_str(), &st) != 0) return {};
   return {static_cast<long long>(st.st_dev), static_cast<long long>(st.st_ino),
@@ -401,7 +401,7 @@ LevelCache::DiskState LevelCache::disk_state() const {
 // The lock this run took is the one at `<file>.lock` still: a lock file removed (or replaced)
 // meanwhile lets a second writer in, so it is taken again at its path, and if another process
 // holds it now, this run does not write.
-bool LevelCache::hold_lock() {
+bool UnitCache::hold_lock() {
   const std::string lock = path_ + ".lock";
   struct stat held, now;
   if (::fstat(lock_fd_, &held) == 0 && ::stat(lock.c_str(), &now) == 0 && held.st_dev == now.st_dev &&
@@ -424,7 +424,7 @@ bool LevelCache::hold_lock() {
 }
 
 // This run's rows saved beside the file (a new path, never the store file), then InputError.
-void LevelCache::rescue(const std::string& problem) {
+void UnitCache::rescue(const std::string& problem) {
   const std::string kept = path_ + ".rescued-" + std::to_string(::getpid()) + ".tsv";
   add_provenance(table_);
   table_.save(kept);
@@ -434,7 +434,7 @@ void LevelCache::rescue(const std::string& problem) {
 // Another writer changed the file since this run read or wrote it (a lock file removed, a
 // hand edit): its rows are merged, not overwritten.  Per unit: this run's rows where it
 // computed the unit, else the file's, else (a unit the file no longer holds) the ones read.
-void LevelCache::merge_disk() {
+void UnitCache::merge_disk() {
   TsvTable disk;
   try {
     disk = TsvTable::load(path_, false);
@@ -466,7 +466,7 @@ void LevelCache::merge_disk() {
                        "units this run did not compute taken from the file)\n", path_.c_str(), taken);
 }
 
-void LevelCache::write_file() {
+void UnitCache::write_file() {
   const bool lost = lock_fd_ >= 0 && hold_lock();
   const DiskState now = disk_state();
   if ((lost || now != disk_) && now != DiskState{}) {  // (a file removed meanwhile: ours is written)
@@ -478,12 +478,12 @@ void LevelCache::write_file() {
   disk_ = disk_state();
 }
 
-void LevelCache::save() {
+void UnitCache::save() {
   if (!running() || !writer_) return;
   write_file();
 }
 
-void LevelCache::finish() {
+void UnitCache::finish() {
   if (running()) return;
   if (mode_ == CacheMode::census) {
     // The census is this mode's output (stdout); a failure is one line on stderr.

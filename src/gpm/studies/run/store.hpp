@@ -74,7 +74,11 @@ std::string escaped(const std::string& s);
 // ending in "_s", "seconds", "s_per_step", anything with "rss", and the provenance columns.
 bool is_volatile_column(const std::string& name);
 
-class LevelCache {
+// One data file of a study read and written unit by unit: a unit's rows are reused when the
+// current code made them (or a re-check carried them), else computed and added; the modes
+// verify, recheck and census recompute or only count them (was LevelCache: it caches units,
+// not levels).
+class UnitCache {
  public:
   // `columns` are the study's own; the provenance columns are appended.  An existing file is
   // read if its `# key = value` header agrees with `params` on every key and its rows are
@@ -84,12 +88,12 @@ class LevelCache {
   // save() writes nothing.
   // `quick_run`: this run is of the quick profile, so a file of the quick profile is its cache
   // (replaced where it differs), whether or not `params` name the profile.
-  LevelCache(std::string path, std::vector<std::pair<std::string, std::string>> params,
+  UnitCache(std::string path, std::vector<std::pair<std::string, std::string>> params,
              std::vector<std::string> columns, int key_columns, CacheMode mode = CacheMode::run,
              bool writer = true, bool quick_run = false);
-  ~LevelCache();
-  LevelCache(const LevelCache&) = delete;
-  LevelCache& operator=(const LevelCache&) = delete;
+  ~UnitCache();
+  UnitCache(const UnitCache&) = delete;
+  UnitCache& operator=(const UnitCache&) = delete;
 
   // Whether the unit `key` is finished under the current code: `expected_rows` rows (any
   // number ≥ 1 when 0), all carrying the current fingerprint.  Always false in verify and
