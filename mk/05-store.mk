@@ -59,11 +59,12 @@ $(FIGOUT)/thesis_poisson_volumes.svg: figures/thesis_poisson_volumes.gp figures/
 	@mkdir -p $(FIGOUT)
 	gnuplot -e "datadir='$(DATA)'; storedir='$(STORE)'; out='$@.tmp'" $< && mv $@.tmp $@
 
-# What the store still owes, with the predicted time of each missing level on this machine.
-DATAFILES += $(DATA)/store_missing.tsv
-$(DATA)/store_missing.tsv: tables/store_missing.sh $(STORE_FILES) $(DATA)/plan_paper.tsv
+# What the store still owes, by the census of every registry store file (each read by its
+# program with --census), each missing unit priced by the plan on this machine.
+DATAFILES += $(DATA)/store_census.tsv
+$(DATA)/store_census.tsv: tables/store_census.sh $(STORE_FILES) $(BUILD)/gpm $(DATA)/plan_paper.tsv
 	@mkdir -p $(DATA)
-	bash $< $(STORE) $(DATA)/plan_paper_summary.tsv $@
+	bash $< $(BUILD) $(STORE) $(DATA)/plan_paper_summary.tsv $@
 
 # Page one: a verdict per figure and table of the documents (tables/items.tsv), each with the
 # number that decides it: paper-scale rates from the store, the other checks from this run
