@@ -96,8 +96,8 @@ int body(int argc, char** argv) {
     auto it = std::find_if(kVariants.begin(), kVariants.end(),
                            [&](const Variant& v) { return v.name == name; });
     if (it == kVariants.end())
-      throw InputError("--variants: unknown particle set '" + name +
-                       "' (seed1, seed2, seed3, plain, seed1_cell, plain_cell)");
+      throw InputError("--variants: unknown particle set '" + name + "' (" +
+                       join(poisson_diagnostic().variants, ", ") + ")");
     variants.push_back(*it);
   }
 
