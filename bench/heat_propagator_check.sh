@@ -74,14 +74,14 @@ run() {
   tail -1 "$out"
 }
 
-listing=$("$build/gpm" study --store-files)
+listing=$("$build/gpm" study --store-rows)
 if [ "$which" != rate ]; then
   while IFS=$'\t' read -r _study file program args _census coarse _slice; do
     [ "$program" = thesis_heat ] || continue
     [ "$args" = - ] && args=""
     # shellcheck disable=SC2086  # the arguments are words
     run "$file" "${coarse#--levels }" $args
-  done < <(grep -v '^#' <<<"$listing" | tail -n +2 | awk -F'\t' -v OFS='\t' '{ for (i = 1; i <= NF; i++) if ($i == "") $i = "-"; print }')
+  done <<<"$listing"
 fi
 if [ "$which" != coarse ]; then
   # Table 4.5 is cheap propagated: every stored reading at every level it holds.

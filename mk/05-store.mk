@@ -6,32 +6,31 @@ DATAFILES += $(DATA)/store_rates.tsv $(DATA)/store_summary.tsv $(DATA)/store_sco
              $(DATA)/checked_reasons.tsv $(DATA)/setup_identification.tsv $(DATA)/open_causes.tsv \
              $(DATA)/store_figure_files.tsv
 
-# One judging pass over the store (gpm store-rates, src/gpm/studies/judge/): the reasons for
-# differing rates, each with the diagnostic that checks it (checked_reasons.hpp; also one row
-# per mechanism, the chapter's short table), the two scoreboards (as printed, as identified),
-# the fingerprint evidence that identifies Chapter 4's set-up (setup_identification.tsv;
-# paper/04-setup-rule.md), the open rates grouped by cause and the store file each per-reading
-# figure draws (store_figure_files.tsv), all from one read of the store.
-DATAFILES += $(DATA)/checked_reasons_by_mechanism.tsv
-$(DATA)/store_rates.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published/*.tsv)
+# One judging pass over the store (gpm store-rates, src/gpm/studies/judge/), from one read of
+# it (judge/snapshot.hpp): the reasons for differing rates, each with the diagnostic that
+# checks it (checked_reasons.hpp; also one row per mechanism, the chapter's short table), the
+# two scoreboards (as printed, as identified), the fingerprint evidence that identifies
+# Chapter 4's set-up (setup_identification.tsv; paper/04-setup-rule.md), the open rates grouped
+# by cause, the store file each per-reading figure draws (store_figure_files.tsv), the
+# documents' open set-up questions with the store's evidence (decisions.hpp) and the heat
+# rates at every pair of stored levels with whether they approach the theory's (the thesis'
+# conjecture: rate_levels.hpp).
+DATAFILES += $(DATA)/checked_reasons_by_mechanism.tsv $(DATA)/decisions.tsv \
+             $(DATA)/rate_levels.tsv $(DATA)/rate_levels_findings.tsv
+$(DATA)/store_rates.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published/*.tsv) \
+    $(wildcard results/diagnostics/*.tsv)
 	@mkdir -p $(DATA)
 	$(BUILD)/gpm store-rates --store $(STORE) --published tables/published \
 	  --reasons $(DATA)/checked_reasons.tsv --reasons-by-mechanism $(DATA)/checked_reasons_by_mechanism.tsv \
 	  --out $@ --summary $(DATA)/store_summary.tsv --score $(DATA)/store_score.tsv \
 	  --ident $(DATA)/setup_identification.tsv --causes $(DATA)/open_causes.tsv \
-	  --figure-files $(DATA)/store_figure_files.tsv
+	  --figure-files $(DATA)/store_figure_files.tsv \
+	  --diagnostics results/diagnostics --decisions $(DATA)/decisions.tsv \
+	  --rate-levels $(DATA)/rate_levels.tsv --findings $(DATA)/rate_levels_findings.tsv
 $(DATA)/store_summary.tsv $(DATA)/store_score.tsv $(DATA)/setup_identification.tsv $(DATA)/open_causes.tsv \
-  $(DATA)/store_figure_files.tsv \
+  $(DATA)/store_figure_files.tsv $(DATA)/decisions.tsv $(DATA)/rate_levels.tsv $(DATA)/rate_levels_findings.tsv \
   $(DATA)/checked_reasons.tsv $(DATA)/checked_reasons_by_mechanism.tsv: $(DATA)/store_rates.tsv ;
 
-# The heat rates at every pair of stored levels and whether they approach the theory's (the
-# thesis' conjecture): gpm rate-levels, src/gpm/studies/judge/rate_levels.hpp.
-DATAFILES += $(DATA)/rate_levels.tsv $(DATA)/rate_levels_findings.tsv
-$(DATA)/rate_levels.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published/thesis_table4_*_long.tsv)
-	@mkdir -p $(DATA)
-	$(BUILD)/gpm rate-levels --store $(STORE) --published tables/published --out $@ \
-	  --findings $(DATA)/rate_levels_findings.tsv
-$(DATA)/rate_levels_findings.tsv: $(DATA)/rate_levels.tsv ;
 FIGFILES += $(FIGOUT)/thesis_rate_levels.svg
 $(FIGOUT)/thesis_rate_levels.svg: figures/thesis_rate_levels.gp figures/style.gp $(DATA)/rate_levels.tsv
 	@mkdir -p $(FIGOUT)
@@ -42,16 +41,6 @@ FIGFILES += $(FIGOUT)/setup_fingerprint.svg
 $(FIGOUT)/setup_fingerprint.svg: figures/setup_fingerprint.gp figures/style.gp $(DATA)/setup_identification.tsv
 	@mkdir -p $(FIGOUT)
 	gnuplot -e "datadir='$(DATA)'; out='$@.tmp'" $< && mv $@.tmp $@
-
-# The documents' open set-up questions, with the evidence the stored runs give (every number
-# read from the store or computed by the library: gpm decisions, src/gpm/studies/judge/decisions.hpp).
-DATAFILES += $(DATA)/decisions.tsv
-$(DATA)/decisions.tsv: $(STORE_FILES) $(BUILD)/gpm tables/published/thesis_table4_7_long.tsv \
-    tables/published/thesis_table4_4_long.tsv tables/published/imoto_table1.tsv $(DATA)/store_score.tsv \
-    $(wildcard results/diagnostics/*.tsv)
-	@mkdir -p $(DATA)
-	$(BUILD)/gpm decisions --store $(STORE) --published tables/published --diagnostics results/diagnostics \
-	  --score $(DATA)/store_score.tsv --out $@
 
 # Figures from the store itself (paper scale, whatever the profile).
 FIGFILES += $(FIGOUT)/thesis_poisson_volumes.svg

@@ -24,8 +24,7 @@ paper/report.html paper/supplement.html: $(VERIFY_STAMP)
 # results/verify_full.log.  make test recomputes the coarse units and a sample of the finer ones.
 .PHONY: verify-store-full
 verify-store-full: build
-	@$(BUILD)/gpm study --store-files | grep -v '^#' | tail -n +2 | \
-	  awk -F'\t' -v OFS='\t' '{ for (i = 1; i <= NF; i++) if ($$i == "") $$i = "-"; print }' | \
+	@$(BUILD)/gpm study --store-rows | \
 	while IFS="$$(printf '\t')" read -r _s file program args census _c _sl; do \
 	  [ "$$args" = - ] && args=""; [ "$$census" = - ] && census=""; \
 	  echo "== $$(date -u +%FT%TZ) $$file"; \

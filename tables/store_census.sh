@@ -13,10 +13,10 @@ export LC_ALL=C  # numbers are read and printed with '.' whatever the user's loc
 set -euo pipefail
 [ $# -eq 4 ] || { echo "usage: store_census.sh BUILD_DIR STORE_DIR PLAN_SUMMARY OUT" >&2; exit 2; }
 build=$1 store=$2 plan=$3 out=$4
-listing=$("$build/gpm" study --store-files)
+listing=$("$build/gpm" study --store-rows)
 rows=$(mktemp)
 trap 'rm -f "$rows" "$out.tmp"' EXIT
-# (An empty cell is read as "-": read would merge two tabs.)
+# (gpm study --store-rows writes an empty cell "-": read would merge two tabs.)
 while IFS=$'\t' read -r study file program args census _coarse _slice; do
   [ "$args" = - ] && args=""
   [ "$census" = - ] && census=""
@@ -33,7 +33,7 @@ while IFS=$'\t' read -r study file program args census _coarse _slice; do
   levels=$( (grep '^\[store\]   missing: ' <<<"$log" || true) | sed -n 's/.*level \([0-9]*\).*/\1/p' | sort -n |
            uniq -c | awk '{ printf "%s%s:%s", (NR > 1 ? "," : ""), $2, $1 }')
   printf '%s\t%s\t%s\t%s\t%s\tread\n' "$study" "$file" "${n% *}" "${n#* }" "${levels:--}" >> "$rows"
-done < <(grep -v '^#' <<<"$listing" | tail -n +2 | awk -F'\t' -v OFS='\t' '{ for (i = 1; i <= NF; i++) if ($i == "") $i = "-"; print }')
+done <<<"$listing"
 {
   echo "# program = tables/store_census.sh"
   echo "# store = $store"

@@ -27,7 +27,7 @@ int body(int argc, char** argv) {
   a.parse(argc, argv);
   const std::string out = a.required("out");
   SetupIdentification id =
-      identify_setup(a.str("store"), fingerprint_study(study_registry()), TsvTable::load(a.str("published")));
+      identify_setup(StoreSnapshot(a.str("store")), setup_fingerprint_study(study_registry()), TsvTable::load(a.str("published")));
   add_provenance(id.table);
   id.table.save(out);
   if (!id.identified)

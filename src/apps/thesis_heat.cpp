@@ -84,7 +84,7 @@ HeatPropagator stored_propagator(UnitCache& cache, const std::vector<std::string
 }
 
 // A path with "{reading}" replaced by the reading's store suffix.
-std::string reading_path(const std::string& pattern, const PdeSetup& r) {
+std::string reading_path(const std::string& pattern, const PdeReading& r) {
   std::string s = pattern;
   const std::string mark = "{reading}";
   if (auto at = s.find(mark); at != std::string::npos) s.replace(at, mark.size(), r.file_suffix());
@@ -94,7 +94,7 @@ std::string reading_path(const std::string& pattern, const PdeSetup& r) {
 // The data file's header for one reading.
 std::vector<std::pair<std::string, std::string>> heat_params(const HeatTable& ts, const StudyRunner& run,
                                                              const HeatSetting& hs, bool guarded,
-                                                             const PdeSetup& r) {
+                                                             const PdeReading& r) {
   const bool fit = r.dt_rule == DtRule::fit;
   return {{"program", "thesis_heat"}, {"table", ts.table}, {"profile", profile_name(run.profile())},
           {"seed", fmt(static_cast<long long>(run.seed()))}, {"kappa", fmt(kHeatKappa)}, {"T", fmt(kHeatT)},
@@ -144,7 +144,7 @@ class HeatTables {
   const HeatTable* ts_ = nullptr;
   std::vector<HRule> h_rules_;
   std::vector<PdeVolumes> volume_choices_;
-  std::vector<PdeSetup> readings_;
+  std::vector<PdeReading> readings_;
   HeatSetting hs_;
   bool guarded_ = false, rechecking_ = false;
   LaplacianStorage storage_ = LaplacianStorage::automatic;
@@ -193,7 +193,7 @@ class HeatTables {
     for (auto& s : a.list("h-rule")) h_rules_.push_back(parse_h_rule(s));
     for (auto& s : a.list("volumes")) volume_choices_.push_back(parse_pde_volumes(s));
     for (auto& s : a.list("dt-rule")) dt_rules.push_back(parse_dt_rule(s));
-    readings_ = pde_setup_matrix(h_rules_, volume_choices_, dt_rules);
+    readings_ = pde_reading_matrix(h_rules_, volume_choices_, dt_rules);
     hs_.kappa = kHeatKappa;
     hs_.T = kHeatT;
     hs_.tol = a.tolerance("tol");
@@ -316,7 +316,7 @@ class HeatTables {
       std::vector<HeatSetting> settings;
       std::vector<HeatPropagator> hows;
       for (std::size_t u = 0; u < todo.size(); ++u) {
-        const PdeSetup& r = readings_[todo[u].reading];
+        const PdeReading& r = readings_[todo[u].reading];
         if (done[u] || (r.volumes != own && !shares)) continue;
         HeatSetting s = hs_;
         s.theta = todo[u].theta;
@@ -340,7 +340,7 @@ class HeatTables {
   // One series' row, by column name (heat_columns()); a blown-up series has no error.
   void write_row(const Todo& t, const HeatResult& res, const DiscreteLaplacian& L, const std::string& wname, int k,
                  double dx, double h) {
-    const PdeSetup& r = readings_[t.reading];
+    const PdeReading& r = readings_[t.reading];
     const std::string na = "NA";
     TsvRow row = run_.row();
     row["weight"] = wname, row["theta"] = fmt(t.theta), row["level"] = fmt(k);

@@ -42,20 +42,6 @@ using namespace gpm;
 
 namespace {
 
-// The particle sets (the catalog names them, poisson_diagnostic()): three realizations of the
-// jitter and the plain grid, with the volumes of (A.10); then seed 1 and the plain grid with
-// V_i = Δx² (pde_volumes, volumes.hpp).
-struct Variant {
-  std::string name;
-  uint64_t seed;
-  double jitter;
-  PdeVolumes volumes;
-};
-const std::vector<Variant> kVariants = {
-    {"seed1", 1, 0.25, PdeVolumes::lattice},   {"seed2", 2, 0.25, PdeVolumes::lattice},
-    {"seed3", 3, 0.25, PdeVolumes::lattice},   {"plain", 1, 0.0, PdeVolumes::lattice},
-    {"seed1_cell", 1, 0.25, PdeVolumes::cell}, {"plain_cell", 1, 0.0, PdeVolumes::cell}};
-
 // The measured consistency of Δ_h on u over Ω: the signed projection of τ = Δ_h u − Δu on Δu,
 // and the max-norm ratio.
 struct Consistency {
@@ -83,7 +69,7 @@ int body(int argc, char** argv) {
                   poisson_diagnostic().levels.help(), StudyRunner::Kind::units_without_seed);
   Args& a = run.args();
   a.opt("weights", join(pde_weights(), ","), "comma-separated registry weights")
-      .opt("variants", join(poisson_diagnostic().variants, ","),
+      .opt("variants", join(poisson_diagnostic().variant_names(), ","),
            "comma-separated particle sets (seedN: jitter 1/4 dx; plain: none; _cell: V_i = dx^2)")
       .opt("tol", "1e-10", "CG relative residual on the symmetric form");
   run.parse(argc, argv);
@@ -91,15 +77,9 @@ int body(int argc, char** argv) {
   const double tol = a.tolerance("tol");
   const auto weights = a.list("weights");
   for (auto& w : weights) weight(w);  // InputError naming an unknown weight, before any work
-  std::vector<Variant> variants;
-  for (auto& name : a.list("variants")) {
-    auto it = std::find_if(kVariants.begin(), kVariants.end(),
-                           [&](const Variant& v) { return v.name == name; });
-    if (it == kVariants.end())
-      throw InputError("--variants: unknown particle set '" + name + "' (" +
-                       join(poisson_diagnostic().variants, ", ") + ")");
-    variants.push_back(*it);
-  }
+  // The particle sets (the catalog's, poisson_diagnostic()): an unknown name is refused here.
+  std::vector<ParticleSet> variants;
+  for (auto& name : a.list("variants")) variants.push_back(poisson_diagnostic().variant(name));
 
   // --- The data file: one row per (reading of h, weight, level, particle set). -------------
   UnitCache& cache = run.open(

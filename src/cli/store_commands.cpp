@@ -211,9 +211,37 @@ int cmd_store_add_columns(int argc, char** argv) {
   return 0;
 }
 
+// The rate-against-level view as written: the rates per pair of levels and (second) the
+// finding per series, each with the header lines that say how they were computed.
+std::pair<TsvTable, TsvTable> rate_levels_tables(const StoreSnapshot& store, const std::string& published) {
+  const RateLevels r = rate_levels(store, published);
+  const Lines lines = {{"tolerance", fmt(kRateTolerance)},
+                       {"rate", "log(e1/e2)/log(h1/h2) of rel_error (4.2) between consecutive stored levels"},
+                       {"band", "min and max of the rate over seed 1 and the stored realizations <file>_seedN holding both levels"},
+                       {"where", "document: the documents' pair; beyond: finer than their finest level; coarser"}};
+  TsvTable rates = verdicts_header("gpm rate-levels", store.dir(), false, lines);
+  rates.columns = r.rates.columns, rates.rows = r.rates.rows;
+  TsvTable findings = verdicts_header("gpm rate-levels --findings", store.dir(), false,
+                                      {{"rule", "approaches: the last two rates within the tolerance of the theory's, or the "
+                                                "distance falling over the last three pairs with the last within 0.3; stays "
+                                                "away: the finest pair beyond the documents, more than 0.3 off and no nearer "
+                                                "than the pair before; otherwise not decided"}});
+  findings.columns = r.findings.columns, findings.rows = r.findings.rows;
+  return {std::move(rates), std::move(findings)};
+}
+
+// The open set-up questions as written (decisions.hpp), `score` the boards' counts.
+TsvTable decisions_table(const StoreSnapshot& store, const std::string& published, const std::string& diagnostics,
+                         const std::optional<TsvTable>& score) {
+  TsvTable table = decisions(store, published, diagnostics, score);
+  table.meta = verdicts_header("gpm decisions", store.dir(), false, {{"store", store.dir()}}).meta;
+  return table;
+}
+
 // gpm rate-levels: the heat tables' rates at every consecutive pair of stored levels, with
 // their seed bands, beside the published and the theory's rates, and a finding per series
 // (rate_levels.hpp): whether the rates approach Theorem 3.7's as the thesis conjectured.
+// (gpm store-rates --rate-levels writes the same in its judging pass.)
 int cmd_rate_levels(int argc, char** argv) {
   Args a("gpm rate-levels",
          "The heat tables' two-level rates at every consecutive pair of stored levels (printed and\n"
@@ -226,30 +254,16 @@ int cmd_rate_levels(int argc, char** argv) {
   a.parse(argc, argv, 2);
   const std::string out_path = a.required("out");
   require_directories({{"store", a.str("store")}, {"published", a.str("published")}});
-  RateLevels r = rate_levels(a.str("store"), a.str("published"));
-  const Lines lines = {{"tolerance", fmt(kRateTolerance)},
-                       {"rate", "log(e1/e2)/log(h1/h2) of rel_error (4.2) between consecutive stored levels"},
-                       {"band", "min and max of the rate over seed 1 and the stored realizations <file>_seedN holding both levels"},
-                       {"where", "document: the documents' pair; beyond: finer than their finest level; coarser"}};
-  TsvTable out = verdicts_header("gpm rate-levels", a.str("store"), false, lines);
-  out.columns = r.rates.columns, out.rows = r.rates.rows;
-  out.save(out_path);
-  if (!a.str("findings").empty()) {
-    TsvTable f = verdicts_header("gpm rate-levels --findings", a.str("store"), false,
-                                 {{"rule", "approaches: the last two rates within the tolerance of the theory's, or the "
-                                           "distance falling over the last three pairs with the last within 0.3; stays "
-                                           "away: the finest pair beyond the documents, more than 0.3 off and no nearer "
-                                           "than the pair before; otherwise not decided"}});
-    f.columns = r.findings.columns, f.rows = r.findings.rows;
-    f.save(a.str("findings"));
-  }
+  auto [rates, findings] = rate_levels_tables(StoreSnapshot(a.str("store")), a.str("published"));
+  rates.save(out_path);
+  if (!a.str("findings").empty()) findings.save(a.str("findings"));
   return 0;
 }
 
 // The store file each per-reading figure draws on each board (identified: the reading the
 // set-up rule identified, or the printed one where it decided none; printed: the study's
 // printed slice), from the registry: figures/store_reading.sh reads it by column name.
-TsvTable figure_files_table(const StudyRegistry& registry, const std::optional<PdeSetup>& identified) {
+TsvTable figure_files_table(const StudyRegistry& registry, const std::optional<PdeReading>& identified) {
   TsvTable t;
   t.columns = {"study", "figure", "board", "reading", "store_file"};
   for (const RegisteredStudy& s : registry.studies())
@@ -273,7 +287,7 @@ int cmd_store_rates(int argc, char** argv) {
          "scoreboards (src/gpm/studies/judge/verdicts.hpp defines every verdict); no study is run.");
   a.opt("store", "results/paper", "the result store")
       .opt("published", "tables/published", "the published values (imoto_table1.tsv, thesis_table4_N_long.tsv)")
-      .opt("checked", "", "checked reasons for differing rates from a file (gpm checked-reasons --out); default: "
+      .opt("reasons-from", "", "checked reasons for differing rates from a file (gpm checked-reasons --out); default: "
                           "computed here from the store (checked_reasons.hpp)")
       .flag("no-reasons", "judge without any checked reason (every differing rate unexplained)")
       .output("out", "", "the rates with their verdicts and boards (required)")
@@ -281,43 +295,51 @@ int cmd_store_rates(int argc, char** argv) {
       .output("reasons-by-mechanism", "", "the same reasons, one row per mechanism")
       .output("summary", "", "where the stored rows come from, file by file")
       .output("score", "", "the verdict counts per table and slice, and each board's totals")
-      .output("ident", "", "setup_identification's table: the fingerprint evidence of Chapter 4's reading")
+      .output("ident", "", "setup_identification's table: the set-up fingerprint evidence of Chapter 4's reading")
       .output("causes", "", "the open rates of the identified board grouped by what the store says of them "
                             "(src/gpm/studies/judge/open_causes.hpp)")
       .output("figure-files", "", "the store file each per-reading figure draws, identified and printed "
-                                  "(figures/store_reading.sh)");
+                                  "(figures/store_reading.sh)")
+      .output("decisions", "", "the documents' open set-up questions with the store's evidence, the boards' "
+                               "reading among them (gpm decisions; src/gpm/studies/judge/decisions.hpp)")
+      .opt("diagnostics", "results/diagnostics", "targeted diagnostic runs that are not studies, for --decisions "
+                                                 "(imoto_m5_where.tsv)")
+      .output("rate-levels", "", "the heat rates at every pair of stored levels (gpm rate-levels)")
+      .output("findings", "", "per heat series, whether its rates approach the theory's (gpm rate-levels --findings)");
   a.parse(argc, argv, 2);
-  const std::string out = a.required("out"), store = a.str("store"), pub = a.str("published");
-  require_directories({{"store", store}, {"published", pub}});
+  const std::string out = a.required("out"), pub = a.str("published");
+  require_directories({{"store", a.str("store")}, {"published", pub}});
+  // One read of the store: every judgement below reads its files from this snapshot.
+  const StoreSnapshot store(a.str("store"));
   // The checked reasons: from a file when one is named, else computed from the same store in
   // this pass (one read of the store judges every rate; the reasons' files are outputs).
-  if (a.has("no-reasons") && !a.str("checked").empty())
-    throw InputError("--no-reasons and --checked " + a.str("checked") + ": choose one");
-  const bool computed = a.str("checked").empty() && !a.has("no-reasons");
+  if (a.has("no-reasons") && !a.str("reasons-from").empty())
+    throw InputError("--no-reasons and --reasons-from " + a.str("reasons-from") + ": choose one");
+  const bool computed = a.str("reasons-from").empty() && !a.has("no-reasons");
   if (!computed && (!a.str("reasons").empty() || !a.str("reasons-by-mechanism").empty()))
-    throw InputError("--reasons and --reasons-by-mechanism write the reasons computed here: not with --checked or --no-reasons");
+    throw InputError("--reasons and --reasons-by-mechanism write the reasons computed here: not with --reasons-from or --no-reasons");
   const TsvTable reasons = computed ? checked_reasons(store, pub, kRateTolerance)
-                           : a.has("no-reasons") ? TsvTable{} : TsvTable::load(a.str("checked"));
+                           : a.has("no-reasons") ? TsvTable{} : TsvTable::load(a.str("reasons-from"));
   const CheckedReasons checked = a.has("no-reasons") ? CheckedReasons{} : passed_reasons(reasons);
 
   // The reading of Chapter 4 that Table 4.6's theta = 0 rates identify (paper/04-setup-rule.md).
-  const RegisteredStudy& fp = fingerprint_study(study_registry());
+  const RegisteredStudy& fp = setup_fingerprint_study(study_registry());
   SetupIdentification ident = identify_setup(store, fp, TsvTable::load(published_file(pub, fp.published->table)));
   const std::vector<JudgedRate> judged = judge_rates(store_rates(store, pub, kRateTolerance),
                                                      store_unstable_series(store, pub), checked,
                                                      kRateTolerance, ident.identified);
   auto with_header = [&](TsvTable t, const std::string& program, const Lines& lines) {
-    return headed(std::move(t), verdicts_header(program, store, /*store_rows=*/true, lines));
+    return headed(std::move(t), verdicts_header(program, store.dir(), /*store_rows=*/true, lines));
   };
   // Every table is made before the first is written: a store file that cannot be read leaves
   // no output half done.
   std::vector<std::pair<std::string, TsvTable>> outputs;
   outputs.emplace_back(
       out, with_header(rates_table(judged), "gpm store-rates",
-                       {{"store", store},
+                       {{"store", store.dir()},
                         {"checked_reasons", a.has("no-reasons") ? "none (no reason accepted)"
                                             : computed ? "computed from the store in this pass (checked_reasons.hpp)"
-                                                       : a.str("checked")},
+                                                       : a.str("reasons-from")},
                         {"note", "rates at the documents' levels from the committed paper-profile rows; status from "
                                  "rate_table (tolerance " + fmt(kRateTolerance) + "); verdict as listed in "
                                  "src/gpm/studies/judge/verdicts.hpp"}}));
@@ -325,26 +347,27 @@ int cmd_store_rates(int argc, char** argv) {
     outputs.emplace_back(
         a.str("summary"),
         with_header(store_summary(store), "gpm store-rates (summary)",
-                    {{"store", store},
+                    {{"store", store.dir()},
                      {"current", "rows whose code column is the fingerprint of this build's program (gpm fingerprint)"}}));
+  const TsvTable score = score_table(judged, pub);
   if (!a.str("score").empty())
     outputs.emplace_back(
         a.str("score"),
-        with_header(score_table(judged, pub), "gpm store-rates (score)",
+        with_header(score, "gpm store-rates (score)",
                     {{"boards", "printed: every set-up detail as the text prints it; identified: the readings of "
                                 "paper/04-setup-rule.md (fingerprint: a published rate that identified the reading)"}}));
   const std::pair<std::string, std::string> reasons_note = {
       "note", "rules and thresholds in src/gpm/studies/judge/checked_reasons.hpp; published values from " + pub};
   if (!a.str("reasons").empty())
     outputs.emplace_back(a.str("reasons"),
-                         headed(reasons, verdicts_header("gpm store-rates (checked reasons)", store, false,
-                                                         {{"store", store},
+                         headed(reasons, verdicts_header("gpm store-rates (checked reasons)", store.dir(), false,
+                                                         {{"store", store.dir()},
                                                           {"tolerance", fmt(kRateTolerance) + " (rates)"},
                                                           reasons_note})));
   if (!a.str("reasons-by-mechanism").empty())
     outputs.emplace_back(a.str("reasons-by-mechanism"),
                          headed(reasons_by_mechanism(reasons),
-                                verdicts_header("gpm store-rates (checked reasons by mechanism)", store, false,
+                                verdicts_header("gpm store-rates (checked reasons by mechanism)", store.dir(), false,
                                                 {{"sources", a.str("reasons")}, reasons_note})));
   if (!a.str("causes").empty())
     outputs.emplace_back(
@@ -365,12 +388,19 @@ int cmd_store_rates(int argc, char** argv) {
     add_provenance(ident.table);
     outputs.emplace_back(a.str("ident"), ident.table);
   }
+  if (!a.str("decisions").empty())
+    outputs.emplace_back(a.str("decisions"), decisions_table(store, pub, a.str("diagnostics"), score));
+  if (!a.str("rate-levels").empty() || !a.str("findings").empty()) {
+    auto [rates, findings] = rate_levels_tables(store, pub);
+    if (!a.str("rate-levels").empty()) outputs.emplace_back(a.str("rate-levels"), std::move(rates));
+    if (!a.str("findings").empty()) outputs.emplace_back(a.str("findings"), std::move(findings));
+  }
   for (auto& [path, table] : outputs) table.save(path);
   return 0;
 }
 
 // gpm checked-reasons: the reasons for differing paper-scale rates, each with the diagnostic
-// that checks it against the committed store (checked_reasons.hpp); gpm store-rates --checked
+// that checks it against the committed store (checked_reasons.hpp); gpm store-rates --reasons-from
 // reads the first file.  Both tables are made before either is written (temporary file and
 // rename each): a store file that cannot be read leaves no output half done.
 int cmd_checked_reasons(int argc, char** argv) {
@@ -385,7 +415,7 @@ int cmd_checked_reasons(int argc, char** argv) {
   a.parse(argc, argv, 2);
   const std::string out = a.required("out"), store = a.str("store"), pub = a.str("published");
   require_directories({{"store", store}, {"published", pub}});
-  TsvTable checked = checked_reasons(store, pub, kRateTolerance);
+  TsvTable checked = checked_reasons(StoreSnapshot(store), pub, kRateTolerance);
   // The header: what the report prints under the table.
   const std::pair<std::string, std::string> note = {
       "note", "rules and thresholds in src/gpm/studies/judge/checked_reasons.hpp; published values from " + pub};
@@ -441,9 +471,7 @@ int cmd_decisions(int argc, char** argv) {
   require_directories({{"store", store}, {"published", pub}});
   std::optional<TsvTable> score;
   if (!a.str("score").empty()) score = TsvTable::load(a.str("score"));
-  TsvTable table = decisions(store, pub, a.str("diagnostics"), score);
-  table.meta = verdicts_header("gpm decisions", store, false, {{"store", store}}).meta;
-  table.save(out);
+  decisions_table(StoreSnapshot(store), pub, a.str("diagnostics"), score).save(out);
   return 0;
 }
 

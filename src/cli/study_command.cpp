@@ -26,12 +26,14 @@ namespace gpm::cli {
 int cmd_study(int argc, char** argv) {
   const std::string first = argc >= 3 ? argv[2] : "";
   if (first == "--help" || first == "-h") {
-    std::cout << "usage: gpm study --list | --readings | --store-files | --reading-file STUDY READING |\n"
+    std::cout << "usage: gpm study --list | --readings | --store-files | --store-rows | --reading-file STUDY READING |\n"
                  "                 --make FILE | NAME [options]\n"
                  "  --list      every registered study: document item, program, levels per profile\n"
                  "  --make FILE the studies' make rules and lists (make build writes build/studies.mk)\n"
                  "  --store-files  every study's files in the result store: program and arguments, the\n"
                  "              units each must hold (census) and the ones the store check recomputes\n"
+                 "  --store-rows   the same rows for a shell loop: no header, an empty cell written '-'\n"
+                 "              (while IFS=$'\\t' read -r study file program args census coarse slice)\n"
                  "  --readings  the heat tables' set-up readings: name, h rule, volumes, time step,\n"
                  "              store file suffix (thesis_heat's {reading})\n"
                  "  --reading-file STUDY READING  the store file (stem) holding that set-up reading's\n"
@@ -68,7 +70,7 @@ int cmd_study(int argc, char** argv) {
     t.set("program", "gpm study --readings");
     add_provenance(t);
     t.columns = {"reading", "h_rule", "volumes", "dt_rule", "file_suffix"};
-    for (const PdeSetup& r : pde_setups()) {
+    for (const PdeReading& r : pde_readings()) {
       TsvRow row = t.named_row();
       row["reading"] = r.name(), row["h_rule"] = h_rule_name(r.h_rule), row["volumes"] = pde_volumes_name(r.volumes);
       row["dt_rule"] = dt_rule_name(r.dt_rule), row["file_suffix"] = r.file_suffix();
@@ -87,6 +89,17 @@ int cmd_study(int argc, char** argv) {
     t.set("program", "gpm study --store-files");
     add_provenance(t);
     print(t);
+    return 0;
+  }
+  // The shell scripts' listing (the store check, the census, the whitelist, the sample and full
+  // verifications): `read` merges two tabs, so an empty cell is written "-"; the columns are
+  // --store-files' in its order.
+  if (first == "--store-rows") {
+    const TsvTable t = store_file_table(study_registry());
+    for (const auto& row : t.rows) {
+      for (std::size_t i = 0; i < row.size(); ++i) std::cout << (i ? "\t" : "") << (row[i].empty() ? "-" : row[i]);
+      std::cout << "\n";
+    }
     return 0;
   }
   if (first == "--make") {

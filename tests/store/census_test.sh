@@ -22,7 +22,7 @@ bash "$src/tables/store_census.sh" "$build" "$src/results/paper" "$tmp/plan_summ
 files=$(awk -F'\t' '/^#/ { next } !h++ { next } { n++ } END { print n + 0 }' "$tmp/full.tsv")
 owed=$(awk -F'\t' '/^#/ { next } !h++ { for (i = 1; i <= NF; i++) c[$i] = i; next }
   $c["units_missing"] != "0" || $c["census"] != "read" { n++ } END { print n + 0 }' "$tmp/full.tsv")
-registered=$("$build/gpm" study --store-files | grep -v '^#' | tail -n +2 | wc -l)
+registered=$("$build/gpm" study --store-rows | wc -l)
 [ "$files" -eq "$registered" ] || { echo "FAIL: the census lists $files files, the registry $registered"; fail=1; }
 [ "$owed" -eq 0 ] || { echo "FAIL: the committed store owes units in $owed files"; fail=1; }
 cp -r "$src/results/paper" "$tmp/store"

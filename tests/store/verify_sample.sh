@@ -24,9 +24,7 @@ build=$1 store=$2 budget=${3:-60} max_unit=${4:-10}
 [ -x "$build/gpm" ] && [ -d "$store" ] || { echo "$usage" >&2; exit 2; }
 seed=${SAMPLE_SEED:-$(git -C "$(dirname "$0")" rev-parse HEAD 2>/dev/null || echo none)}
 # (An empty cell is written as "-": read would merge two tabs.)
-listing=$("$build/gpm" study --store-files | grep -v '^#' | tail -n +2 |
-  awk -F'\t' -v OFS='\t' '{ for (i = 1; i <= NF; i++) if ($i == "") $i = "-"; print }') ||
-  { echo "verify_sample.sh: gpm study --store-files failed" >&2; exit 2; }
+listing=$("$build/gpm" study --store-rows) || { echo "verify_sample.sh: gpm study --store-rows failed" >&2; exit 2; }
 
 # Every candidate: file, program, args, level, weight ("-": the whole level), predicted s,
 # and of a heat unit the θ its rows hold ("-": all).

@@ -106,15 +106,15 @@ check() {
 # The store's files, from the study registry (src/gpm/studies/define/registry.cpp, each study's
 # store_files): program and arguments, the units each must hold (census; empty: the profile's
 # paper levels) and the cheap units recomputed.
-listing=$("$build/gpm" study --store-files) || { echo "verify_store.sh: gpm study --store-files failed" >&2; exit 2; }
-# (An empty cell is read as "-": read would merge two tabs.)
+listing=$("$build/gpm" study --store-rows) || { echo "verify_store.sh: gpm study --store-rows failed" >&2; exit 2; }
+# (An empty cell is written "-": read would merge two tabs.)
 while IFS=$'\t' read -r _study file program args census coarse _slice; do
   [ "$args" = - ] && args=""
   [ "$census" = - ] && census=""
   [ "$coarse" = - ] && coarse=""
   # shellcheck disable=SC2086  # the arguments are words
   check "$file.tsv" "$census" "$coarse" "$program" $args
-done < <(grep -v '^#' <<<"$listing" | tail -n +2 | awk -F'\t' -v OFS='\t' '{ for (i = 1; i <= NF; i++) if ($i == "") $i = "-"; print }')
+done <<<"$listing"
 
 [ ${#missing[@]} -gt 0 ] && echo "MISSING from the store: ${missing[*]}"
 # A full check: every data file in the store is one of the above (a registered study's), so

@@ -9,7 +9,7 @@ set -u
 build=$(cd "${1:?usage: whitelist.sh BUILD_DIR SOURCE_DIR}" && pwd)
 cd "${2:?usage: whitelist.sh BUILD_DIR SOURCE_DIR}" || exit 2
 git rev-parse --git-dir >/dev/null 2>&1 || { echo "whitelist: not a git clone; nothing to check"; exit 0; }
-names=$("$build/gpm" study --store-files | grep -v '^#' | tail -n +2 | cut -f2)
+names=$("$build/gpm" study --store-rows | cut -f2)
 [ -n "$names" ] || { echo "FAIL: the registry lists no store file"; exit 1; }
 fail=0 n=0
 for name in $names; do

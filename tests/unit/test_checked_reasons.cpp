@@ -270,7 +270,7 @@ TEST_CASE("checked reasons: a heat table's V_i = dx^2 run counts under the same 
   heat("thesis_table4_6.tsv", "lattice (|Omega_H|/N)", fit, 0.0003);
   heat("thesis_table4_6_cellvol.tsv", "cell (dx^2)", exact, 0.00025);  // another time step: not this one's
   const auto evidence = [&] {
-    const TsvTable out = checked_reasons((dir / "store").string(), (dir / "published").string(), kRateTolerance);
+    const TsvTable out = checked_reasons(StoreSnapshot((dir / "store").string()), (dir / "published").string(), kRateTolerance);
     REQUIRE(out.rows.size() == 1);
     CHECK(out.text(0, "table") == "thesis_table4_6");
     CHECK(out.text(0, "slice") == "h10");

@@ -96,7 +96,7 @@ TEST_CASE("registry: a set-up reading's store file", "[unit][registry]") {
         continue;
       }
       REQUIRE(f.readings.size() == 1);
-      const PdeSetup reading = PdeSetup::named(f.readings.front());
+      const PdeReading reading = PdeReading::named(f.readings.front());
       CHECK(f.name == s.name + reading.file_suffix());
       CHECK(s.store_file_of(reading.name()).name == f.name);
       ++heat_files;

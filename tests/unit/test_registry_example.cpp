@@ -125,7 +125,7 @@ TEST_CASE("registry example: the catalog and the runner take the study from its 
     for (auto& e : fs::directory_iterator(std::string(GPM_SOURCE_DIR) + "/tables/published"))
       fs::copy_file(e.path(), pub / e.path().filename(), fs::copy_options::overwrite_existing);
     std::ofstream(pub / "example_table.tsv") << "# rate_levels = 5,6\nweight\tnumerical\nquartic_polynomial\t2\n";
-    const std::vector<StoreRate> rates = store_rates(dir.string(), pub.string(), kRateTolerance, reg);
+    const std::vector<StoreRate> rates = store_rates(StoreSnapshot(dir.string()), pub.string(), kRateTolerance, reg);
     REQUIRE(rates.size() == 1);  // the store holds the example's file only
     CHECK(rates[0].table == "example_table");
     CHECK(rates[0].levels == "5,6");

@@ -55,7 +55,7 @@ TEST_CASE("set-up identification: details one at a time, with their uncertainty"
   TempDir tmp("gpm_setup_");
   // The registry's Table 4.6 entry, with seed files for h15_exact as well (the registry may
   // not hold them yet): the rule reads whatever seed files its study names.
-  RegisteredStudy study = fingerprint_study(study_registry());
+  RegisteredStudy study = setup_fingerprint_study(study_registry());
   for (int n = 2; n <= 5; ++n)
     study.store_files.push_back({.name = "fixture_h15_exact_seed" + fmt(n), .slice = "h15_exact_seed" + fmt(n)});
   // h10 readings far off (factor 2), h15 close; cell and exact closest together.
@@ -65,7 +65,7 @@ TEST_CASE("set-up identification: details one at a time, with their uncertainty"
   for (auto& [r, f] : factor) write_reading(tmp.dir / file_of(study, r), f);
 
   SECTION("one realization each: identified, the uncertainty not assessed") {
-    const SetupIdentification id = identify_setup(tmp.dir.string(), study, published());
+    const SetupIdentification id = identify_setup(StoreSnapshot(tmp.dir.string()), study, published());
     INFO(id.table.get("incomplete").value_or("") << " " << id.decisions);
     REQUIRE(id.identified);
     CHECK(id.identified->name() == "h15_cell_exact");
@@ -80,7 +80,7 @@ TEST_CASE("set-up identification: details one at a time, with their uncertainty"
   SECTION("bands a factor of two apart: firm") {
     seeds("h15_cell_exact", {1.0035, 1.0040, 1.0038, 1.0042});
     seeds("h15_exact", {1.011, 1.012, 1.0125, 1.013});
-    const SetupIdentification id = identify_setup(tmp.dir.string(), study, published());
+    const SetupIdentification id = identify_setup(StoreSnapshot(tmp.dir.string()), study, published());
     REQUIRE(id.identified);
     CHECK(id.identified->name() == "h15_cell_exact");
     CHECK(id.table.get("robust_volumes").value().rfind("firm: h15_cell_exact's distances", 0) == 0);
@@ -91,14 +91,28 @@ TEST_CASE("set-up identification: details one at a time, with their uncertainty"
   SECTION("bands closer than a factor of two: suggested, the decision unchanged") {
     seeds("h15_cell_exact", {1.0035, 1.0040, 1.0038, 1.0042});
     seeds("h15_exact", {1.011, 1.006, 1.0125, 1.013});
-    const SetupIdentification id = identify_setup(tmp.dir.string(), study, published());
+    const SetupIdentification id = identify_setup(StoreSnapshot(tmp.dir.string()), study, published());
     REQUIRE(id.identified);
     CHECK(id.identified->name() == "h15_cell_exact");
     CHECK(id.table.get("robust_volumes").value().rfind("suggested: ", 0) == 0);
   }
+  SECTION("one read of the store: a snapshot judges the bytes it read first") {
+    const StoreSnapshot store(tmp.dir.string());
+    const SetupIdentification first = identify_setup(store, study, published());
+    const std::size_t read = store.files_read();
+    CHECK(read == factor.size());  // the eight readings' files, each read once
+    // The files change on disk after the first judgement: the same snapshot judges again
+    // without reading them (same distances, no further read); a new snapshot sees the change.
+    for (auto& [r, f] : factor) write_reading(tmp.dir / file_of(study, r), 1.5 * f);
+    const SetupIdentification again = identify_setup(store, study, published());
+    CHECK(store.files_read() == read);
+    CHECK(again.table.rows == first.table.rows);
+    const SetupIdentification fresh = identify_setup(StoreSnapshot(tmp.dir.string()), study, published());
+    CHECK(fresh.table.rows != first.table.rows);
+  }
   SECTION("a reading without rows: nothing identified") {
     std::filesystem::remove(tmp.dir / file_of(study, "h15_exact"));
-    const SetupIdentification id = identify_setup(tmp.dir.string(), study, published());
+    const SetupIdentification id = identify_setup(StoreSnapshot(tmp.dir.string()), study, published());
     CHECK(!id.identified);
     CHECK(id.incomplete == std::vector<std::string>{"h15_exact"});
   }

@@ -43,7 +43,7 @@ std::string score_cell(const TsvTable& score, const std::string& table, const st
 
 std::vector<JudgedRate> judge(const std::vector<StoreRate>& rates, const UnstableSeries& unstable = {},
                               const CheckedReasons& checked = {},
-                              const std::optional<PdeSetup>& identified = std::nullopt) {
+                              const std::optional<PdeReading>& identified = std::nullopt) {
   return judge_rates(rates, unstable, checked, kRateTolerance, identified);
 }
 
@@ -199,7 +199,7 @@ TEST_CASE("verdicts: a checked reason counts only where its check passed", "[uni
 TEST_CASE("verdicts: the printed and identified boards, with the fingerprint rows", "[unit][verdicts]") {
   // Table 4.6 under the printed reading (h10) and the identified one (h15): the theta = 0 rate
   // identified the reading, so on the identified board it is a fingerprint, not a result.
-  const PdeSetup h15{HRule::h15, PdeVolumes::lattice, DtRule::fit};
+  const PdeReading h15{HRule::h15, PdeVolumes::lattice, DtRule::fit};
   const auto j = judge({rate("thesis_table4_6", "h10", "quartic_polynomial 0", "-281", "-37", "differs", "unstable"),
                         rate("thesis_table4_6", "h10", "quartic_polynomial 1", "2", "2.05", "agrees"),
                         rate("thesis_table4_6", "h15", "quartic_polynomial 0", "-281", "-273", "differs", "unstable"),
@@ -209,7 +209,7 @@ TEST_CASE("verdicts: the printed and identified boards, with the fingerprint row
   CHECK(!fp.printed);
   CHECK(fp.identified);
   CHECK(fp.verdict == Verdict::unexplained);
-  CHECK(fp.verdict_identified == Verdict::fingerprint);
+  CHECK(fp.verdict_identified == Verdict::setup_fingerprint);
   CHECK(row(j, "thesis_table4_6", "h10", "quartic_polynomial 0").printed);
   CHECK(row(j, "thesis_table4_6", "h10", "quartic_polynomial 0").verdict_identified == Verdict::unexplained);
 

@@ -1,4 +1,4 @@
-// What made a number: the git revision of the build, the fingerprint of the code that
+// What made a number: the git revision of the build, the code fingerprint of what
 // decides a program's numbers (cmake/fingerprint.cmake, computed at build time, not at
 // configure time), and the machine it ran on.  Every data file's header and every row of a
 // result store (store.hpp) carries them.

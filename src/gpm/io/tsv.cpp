@@ -348,15 +348,21 @@ TsvTable TsvTable::load(const std::string& path, bool whole_rows) {
     } else {
       t.rows.push_back(split(line));
       t.row_lines.push_back(line_no);
-      // A row cut short (or run long) would shift or drop values: refused, not read.
-      if (whole_rows && t.rows.back().size() != t.columns.size())
-        throw InputError("data file " + path + " line " + std::to_string(line_no) + ": " +
-                         std::to_string(t.rows.back().size()) + " cells for " +
-                         std::to_string(t.columns.size()) + " columns");
     }
   }
   if (!have_header) throw InputError("data file " + path + " has no column header");
+  if (whole_rows) t.require_whole_rows();
   return t;
+}
+
+void TsvTable::require_whole_rows() const {
+  // A row cut short (or run long) would shift or drop values: refused, not read.
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (rows[i].size() != columns.size())
+      throw InputError("data file " + source +
+                       (i < row_lines.size() ? " line " + std::to_string(row_lines[i]) : " data row " + std::to_string(i + 1)) + ": " +
+                       std::to_string(rows[i].size()) + " cells for " + std::to_string(columns.size()) +
+                       " columns");
 }
 
 std::vector<std::vector<std::string>> TsvTable::load_matching(

@@ -78,6 +78,9 @@ struct TsvTable {
   // from the header's.  whole_rows = false: such rows are read as they are (for the result
   // store, which names them and decides).
   static TsvTable load(const std::string& path, bool whole_rows = true);
+  // The check load() makes with whole_rows, on a table it read without: an InputError naming
+  // the file and line of the first row whose cell count differs from the header's.
+  void require_whole_rows() const;
   // The rows of an existing file whose `# key = value` lines agree with `params` on every
   // key of `params`: the cache of a previous run with the same parameters.  Empty if the
   // file is absent or any parameter differs.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "gpm/error.hpp"
 #include "gpm/io/tsv.hpp"
 
 namespace gpm {
@@ -66,11 +67,32 @@ const PoissonTable& poisson_table() {
 const PoissonDiagnostic& poisson_diagnostic() {
   static const PoissonDiagnostic d = {
       {{5, 6, 7}, {7, 8, 9}},
-      {"seed1", "seed2", "seed3", "plain", "seed1_cell", "plain_cell"},
+      // Three realizations of the studies' jitter (1/4 dx) and the plain grid with the volumes of
+      // (A.10); then seed 1 and the plain grid with V_i = dx^2.
+      {{"seed1", 1, 0.25, PdeVolumes::lattice},
+       {"seed2", 2, 0.25, PdeVolumes::lattice},
+       {"seed3", 3, 0.25, PdeVolumes::lattice},
+       {"plain", 1, 0.0, PdeVolumes::lattice},
+       {"seed1_cell", 1, 0.25, PdeVolumes::cell},
+       {"plain_cell", 1, 0.0, PdeVolumes::cell}},
       {"h_rule", "weight", "level", "variant", "dx", "h", "h_over_H", "N_omega", "rel_error", "max_x", "max_y",
        "max_distance_over_h", "rel_error_inner", "volume_mismatch", "eps_smoothing", "tau_predicted", "tau_fit",
        "tau_max", "cg_iterations", "seconds"}};
   return d;
+}
+
+std::vector<std::string> PoissonDiagnostic::variant_names() const {
+  std::vector<std::string> names;
+  for (const ParticleSet& v : variants) names.push_back(v.name);
+  return names;
+}
+
+const ParticleSet& PoissonDiagnostic::variant(const std::string& name) const {
+  for (const ParticleSet& v : variants)
+    if (v.name == name) return v;
+  std::string known;
+  for (const ParticleSet& v : variants) known += (known.empty() ? "" : ", ") + v.name;
+  throw InputError("--variants: unknown particle set '" + name + "' (" + known + ")");
 }
 
 const VoronoiStudy& voronoi_study() {

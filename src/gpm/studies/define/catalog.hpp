@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "gpm/geometry/volumes.hpp"
 #include "gpm/operators/fused_errors.hpp"
 #include "gpm/studies/define/profile.hpp"
 
@@ -53,10 +54,21 @@ const PoissonTable& poisson_table();
 
 // thesis_poisson_diagnostic: Table 4.4's Poisson problem on several particle sets, with
 // where its error sits and the operator's consistency (why the table's rates differ).
+// One of its particle sets: a jitter realization (seed, amplitude as a fraction of dx; 0 the
+// plain grid) with the volumes V_i of (A.10) or V_i = dx^2.
+struct ParticleSet {
+  std::string name;
+  std::uint64_t seed = 1;
+  double jitter = 0;
+  PdeVolumes volumes = PdeVolumes::lattice;
+};
 struct PoissonDiagnostic {
-  ProfileLevels levels;              // the thesis' rate levels are 8, 9
-  std::vector<std::string> variants;  // its particle sets (the program defines each)
+  ProfileLevels levels;               // the thesis' rate levels are 8, 9
+  std::vector<ParticleSet> variants;  // its particle sets
   std::vector<std::string> columns;   // of its data file; the first four are the unit's key
+  std::vector<std::string> variant_names() const;
+  // The particle set of that name; an InputError naming it and the known ones.
+  const ParticleSet& variant(const std::string& name) const;
 };
 const PoissonDiagnostic& poisson_diagnostic();
 

@@ -40,31 +40,31 @@ DtRule parse_dt_rule(const std::string& s, const std::string& option) {
   throw InputError(option + ": '" + s + "' is not fit or exact");
 }
 
-std::string PdeSetup::name() const {
+std::string PdeReading::name() const {
   return h_rule_name(h_rule) + (volumes == PdeVolumes::cell ? "_cell" : "") + (dt_rule == DtRule::exact ? "_exact" : "");
 }
 
-std::string PdeSetup::file_suffix() const {
+std::string PdeReading::file_suffix() const {
   return std::string(h_rule == HRule::h15 ? "_h15" : "") + (dt_rule == DtRule::exact ? "_dtexact" : "") +
          (volumes == PdeVolumes::cell ? "_cellvol" : "");
 }
 
-PdeSetup PdeSetup::named(const std::string& name) {
-  for (const PdeSetup& r : pde_setups())
+PdeReading PdeReading::named(const std::string& name) {
+  for (const PdeReading& r : pde_readings())
     if (r.name() == name) return r;
   throw InputError("unknown set-up reading '" + name + "'");
 }
 
-std::vector<PdeSetup> pde_setup_matrix(const std::vector<HRule>& h_rules, const std::vector<PdeVolumes>& volumes,
+std::vector<PdeReading> pde_reading_matrix(const std::vector<HRule>& h_rules, const std::vector<PdeVolumes>& volumes,
                                        const std::vector<DtRule>& dt_rules) {
   if (h_rules.empty()) throw InputError("--h-rule: no choice given");
   if (volumes.empty()) throw InputError("--volumes: no choice given");
   if (dt_rules.empty()) throw InputError("--dt-rule: no choice given");
-  std::vector<PdeSetup> m;
+  std::vector<PdeReading> m;
   for (HRule h : h_rules)
     for (PdeVolumes v : volumes)
       for (DtRule d : dt_rules) {
-        const PdeSetup r{h, v, d};
+        const PdeReading r{h, v, d};
         for (auto& o : m)
           if (o.name() == r.name()) throw InputError("reading " + r.name() + " given twice");
         m.push_back(r);
@@ -72,9 +72,9 @@ std::vector<PdeSetup> pde_setup_matrix(const std::vector<HRule>& h_rules, const 
   return m;
 }
 
-const std::vector<PdeSetup>& pde_setups() {
-  static const std::vector<PdeSetup> all =
-      pde_setup_matrix({HRule::h10, HRule::h15}, {PdeVolumes::lattice, PdeVolumes::cell}, {DtRule::fit, DtRule::exact});
+const std::vector<PdeReading>& pde_readings() {
+  static const std::vector<PdeReading> all =
+      pde_reading_matrix({HRule::h10, HRule::h15}, {PdeVolumes::lattice, PdeVolumes::cell}, {DtRule::fit, DtRule::exact});
   return all;
 }
 

@@ -45,7 +45,7 @@ DtRule parse_dt_rule(const std::string& s, const std::string& option = "--dt-rul
 // h15), the volumes (lattice: (A.10)'s |Ω_H|/N as printed, cell: Δx²) and the time step (fit
 // as printed, exact).  The one map from a reading to its name in the rate tables and to its
 // store file (the registry's store files carry these names).
-struct PdeSetup {
+struct PdeReading {
   HRule h_rule = HRule::h10;
   PdeVolumes volumes = PdeVolumes::lattice;
   DtRule dt_rule = DtRule::fit;
@@ -55,14 +55,14 @@ struct PdeSetup {
   // _h15, _dtexact, _cellvol in that order.
   std::string file_suffix() const;
   // The reading of that name; InputError if none.
-  static PdeSetup named(const std::string& name);
+  static PdeReading named(const std::string& name);
 };
 // Every combination of the given choices, h rule outermost, then volumes, then time step;
 // InputError for an empty choice or a reading given twice.
-std::vector<PdeSetup> pde_setup_matrix(const std::vector<HRule>& h_rules, const std::vector<PdeVolumes>& volumes,
+std::vector<PdeReading> pde_reading_matrix(const std::vector<HRule>& h_rules, const std::vector<PdeVolumes>& volumes,
                                        const std::vector<DtRule>& dt_rules);
 // The eight readings (h10, h10_exact, h10_cell, …).
-const std::vector<PdeSetup>& pde_setups();
+const std::vector<PdeReading>& pde_readings();
 
 // The columns of a heat data file; the first three (weight, θ, level) are the unit's key.
 const std::vector<std::string>& heat_columns();

@@ -239,7 +239,7 @@ RegisteredStudy poisson() {
   s.published = PublishedRates{
       .table = "thesis_table4_4", .file = "thesis_table4_4_long.tsv", .key = {"h_rule", "weight"},
       .printed_slice = "h10",
-      .identified_slice = [](const PdeSetup& r) {
+      .identified_slice = [](const PdeReading& r) {
         return h_rule_name(r.h_rule) + (r.volumes == PdeVolumes::cell ? "_cell" : "");
       },
       .split_by = "h_rule"};
@@ -298,15 +298,14 @@ std::vector<HeatStoreReading> heat_store_readings(const std::string& table) {
 }
 
 // The seeds beside seed 1 stored for a heat table's reading, at level 5 and the table's rate
-// levels: every table under the identified reading (h15_cell_exact), Table 4.5 also under the
-// printed one (h10), Table 4.6 also under each reading that differs from the identified one in
-// one detail (h15_cell, h15_exact, h10_cell_exact) and under h10_cell; the Krylov propagator
-// makes a seed minutes (10-15 min for h10_cell_exact and h10_cell at 2^-9 here).  The printed
-// reading of Table 4.6 has seeds 2 and 3 (35 min a seed beside other runs; 4 and 5 not run
-// yet), that of Table 4.7 none yet.
+// levels: every table under the identified reading (h15_cell_exact) and the printed one (h10),
+// Table 4.6 also under each reading that differs from the identified one in one detail
+// (h15_cell, h15_exact, h10_cell_exact) and under h10_cell; the Krylov propagator makes a
+// seed minutes (10-15 min for h10_cell_exact and h10_cell at 2^-9 here, 15 min for the
+// printed reading of Table 4.6 or 4.7 alone).
 std::vector<std::string> heat_band_seeds(const std::string& table, const std::string& reading) {
-  if (reading == "h15_cell_exact" || (table == "4.5" && reading == "h10")) return {"2", "3", "4", "5"};
-  if (table == "4.6" && reading == "h10") return {"2", "3"};
+  // The identified reading and the reading as printed: the seed bands of both boards.
+  if (reading == "h15_cell_exact" || reading == "h10") return {"2", "3", "4", "5"};
   // Table 4.6 under the readings the time-step and volume decisions compare with the identified
   // one, and under h10 with the identified volumes and time step (the h decision): the set-up
   // identification's distance bands (setup_identification.hpp).
@@ -353,7 +352,7 @@ RegisteredStudy heat(const HeatTable& hp) {
   }
   // One store file per set-up reading stored (h rule x volumes x time step), a slice each.
   for (const HeatStoreReading& r : heat_store_readings(hp.table)) {
-    const PdeSetup reading = PdeSetup::named(r.reading);
+    const PdeReading reading = PdeReading::named(r.reading);
     std::vector<std::string> args;
     if (reading.h_rule != HRule::h10) args.insert(args.end(), {"--h-rule", h_rule_name(reading.h_rule)});
     if (reading.dt_rule != DtRule::fit) args.insert(args.end(), {"--dt-rule", dt_rule_name(reading.dt_rule)});
@@ -379,11 +378,11 @@ RegisteredStudy heat(const HeatTable& hp) {
   }
   s.published = PublishedRates{.table = name, .file = name + "_long.tsv", .key = {"weight", "theta"},
                                .printed_slice = "h10",
-                               .identified_slice = [](const PdeSetup& r) { return r.name(); },
+                               .identified_slice = [](const PdeReading& r) { return r.name(); },
                                .finite_series = true};
   // Table 4.6's explicit (theta = 0) rates fix the number of steps, so h: the set-up rule's
   // fingerprint (paper/04-setup-rule.md).
-  if (hp.table == "4.6") s.published->fingerprint = {"theta", "0"};
+  if (hp.table == "4.6") s.published->setup_fingerprint = {"theta", "0"};
   // The document's figure of the table (Figures 4.9–4.11), drawn in each reading.
   const std::map<std::string, std::string> figure = {{"4.5", "thesis_fig4_9"}, {"4.6", "thesis_fig4_10"}, {"4.7", "thesis_fig4_11"}};
   s.figures = {{.name = figure.at(hp.table), .scripts = {"figures/thesis_heat.gp"}, .per_reading = true}};
@@ -475,11 +474,11 @@ RegisteredStudy poisson_diagnostic_study() {
   s.units = [](const UnitScope& scope) {
     std::vector<StudyUnit> out;
     for (int k : scope.levels)
-      for (const std::string& var : poisson_diagnostic().variants)
+      for (const ParticleSet& var : poisson_diagnostic().variants)
         for (HRule rule : pde_h_rules())
           for (auto& w : pde_weights())
-            out.push_back({k, pde_h(rule, dx_of(k)), {h_rule_name(rule), w, fmt(k), var},
-                           h_rule_name(rule) + "/" + w + "/" + var});
+            out.push_back({k, pde_h(rule, dx_of(k)), {h_rule_name(rule), w, fmt(k), var.name},
+                           h_rule_name(rule) + "/" + w + "/" + var.name});
     return out;
   };
   // Priced as Table 4.4's solve of the same h rule and weight, plus one product for the
@@ -546,7 +545,7 @@ std::vector<std::string> RegisteredStudy::header() const {
 }
 
 const StoreFile& RegisteredStudy::store_file_of(const std::string& reading) const {
-  const PdeSetup r = PdeSetup::named(reading);
+  const PdeReading r = PdeReading::named(reading);
   if (!published || !published->identified_slice)
     throw InputError("study '" + name + "' keeps no set-up readings in the store");
   const std::string slice = published->identified_slice(r);
@@ -617,10 +616,10 @@ const StudyRegistry& study_registry() {
   return r;
 }
 
-const RegisteredStudy& fingerprint_study(const StudyRegistry& registry) {
+const RegisteredStudy& setup_fingerprint_study(const StudyRegistry& registry) {
   const RegisteredStudy* found = nullptr;
   for (auto& s : registry)
-    if (s.published && !s.published->fingerprint.first.empty()) {
+    if (s.published && !s.published->setup_fingerprint.first.empty()) {
       if (found) throw InputError("two studies carry the set-up fingerprint: " + found->name + ", " + s.name);
       found = &s;
     }

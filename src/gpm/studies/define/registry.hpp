@@ -47,7 +47,7 @@ struct StudyFile {
 // (tests/store/verify_store.sh reads these from `gpm study --store-files`).
 struct StoreFile {
   std::string name = {};
-  std::string slice = {};  // its set-up's name in the verdicts: all, seed2, h15_cell, …
+  std::string slice = {};  // its slice's name in the verdicts: all, seed2, h15_cell, …
   std::vector<std::string> args = {};  // the program's arguments beyond the study's fixed ones
   std::vector<std::string> census = {};  // options naming the units it must hold (none: the paper levels)
   std::vector<std::string> coarse = {};  // options naming the cheap units recomputed by the check
@@ -72,7 +72,9 @@ struct StudyFigure {
 // The provenance columns every store row ends with (run/store.hpp seals them).
 const std::vector<std::string>& row_provenance_columns();
 
-// A slice of a stored file: rows of one set-up (reading of h, volumes, seed, …).
+// A slice of a stored file: the rows of one reading (PdeReading, HReading) and one jitter
+// realization, named by both (h15_cell, seed2, h15_cell_exact_seed3); a reading is a set-up as
+// the text admits it, a slice is where its rows sit in the store.
 struct StoreSlice {
   std::string slice;  // its name in the verdicts: printed_voronoi, h15_cell, seed2, …
   TsvTable data;
@@ -86,7 +88,7 @@ struct PublishedRates {
   std::string printed_slice = {};  // the slice of the reading the document prints
   // The slice the set-up rule's identified reading selects (setup_identification.hpp);
   // unset: the printed one.
-  std::function<std::string(const PdeSetup&)> identified_slice = {};
+  std::function<std::string(const PdeReading&)> identified_slice = {};
   bool finite_series = false;     // rates from the series that never blew up (heat)
   // How a stored file is cut into slices (one file holding several set-ups); unset: the
   // file is one slice, its StoreFile::slice.
@@ -98,7 +100,7 @@ struct PublishedRates {
   // The published rates that are the set-up rule's fingerprint (Table 4.6: theta = 0): a key
   // column and its value.  On the identified board they identify the reading and are not
   // judged (setup_identification.hpp).  Empty: none.
-  std::pair<std::string, std::string> fingerprint = {};
+  std::pair<std::string, std::string> setup_fingerprint = {};
 
   // The columns of a rate's key, in order: `key` less split_by.
   std::vector<std::string> rate_key() const;
@@ -162,7 +164,7 @@ struct RegisteredStudy {
   std::vector<std::string> header() const;
   // The program's arguments for one of its files: the fixed ones, then the file's.
   std::vector<std::string> command_args(const std::vector<std::string>& file_args) const;
-  // The store file holding the rows of a set-up reading (a PdeSetup name: h10,
+  // The store file holding the rows of a set-up reading (a PdeReading name: h10,
   // h15_cell_exact, …; Table 4.4 ignores the time step); InputError if the reading is unknown
   // or the study stores none of it.
   const StoreFile& store_file_of(const std::string& reading) const;
@@ -193,7 +195,7 @@ TsvTable store_file_table(const StudyRegistry& registry);
 const StudyRegistry& study_registry();
 // The one study whose published rates carry the set-up rule's fingerprint; InputError if
 // none or several.
-const RegisteredStudy& fingerprint_study(const StudyRegistry& registry);
+const RegisteredStudy& setup_fingerprint_study(const StudyRegistry& registry);
 // The entry that writes data file `file`; InputError if none.
 const RegisteredStudy& registered_study_of_file(const std::string& file);
 

@@ -232,42 +232,42 @@ void add_heat_mode_reasons(const std::string& table, const std::string& slice, c
   }
 }
 
-TsvTable checked_reasons(const std::string& store, const std::string& published_dir, double tol) {
+TsvTable checked_reasons(const StoreSnapshot& store, const std::string& published_dir, double tol) {
   TsvTable out;
   out.columns = checked_reason_columns();
-  auto stored = [&](const std::string& name) { return std::filesystem::exists(store + "/" + name); };
-  auto load = [&](const std::string& name) { return TsvTable::load(store + "/" + name); };
+  auto stored = [&](const std::string& name) { return store.has(name); };
+  auto load = [&](const std::string& name) -> const TsvTable& { return store.table(name); };
   auto published = [&](const std::string& table) { return TsvTable::load(published_file(published_dir, table)); };
 
   if (stored("thesis_poisson_diagnostic.tsv")) {
-    const TsvTable diag = load("thesis_poisson_diagnostic.tsv");
+    const TsvTable& diag = load("thesis_poisson_diagnostic.tsv");
     // A diagnostic file from before the consistency prediction has nothing to check with.
     if (diag.column("tau_predicted") >= 0)
       add_volume_mismatch_reasons(published("thesis_table4_4"), diag, tol, out);
   }
   if (stored("thesis_table4_3.tsv")) {
-    const TsvTable data = load("thesis_table4_3.tsv"), pub = published("thesis_table4_3");
+    const TsvTable &data = load("thesis_table4_3.tsv"), pub = published("thesis_table4_3");
     for (const char* reading : {"printed", "scaled"}) add_gradient_smoothing_reasons(pub, data, reading, tol, out);
   }
   if (stored("thesis_table4_2.tsv")) {
-    const TsvTable data = load("thesis_table4_2.tsv"), pub = published("thesis_table4_2");
+    const TsvTable &data = load("thesis_table4_2.tsv"), pub = published("thesis_table4_2");
     for (const char* reading : {"printed", "scaled"}) add_interpolant_smoothing_reasons(pub, data, reading, tol, out);
   }
   for (const HeatTable& t : heat_tables()) {
     std::string name = "thesis_table" + t.table;
     std::replace(name.begin(), name.end(), '.', '_');
     std::optional<TsvTable> pub;  // read once a reading of the table is stored
-    for (const PdeSetup& r : pde_setup_matrix({HRule::h10}, {PdeVolumes::lattice}, {DtRule::fit, DtRule::exact})) {
+    for (const PdeReading& r : pde_reading_matrix({HRule::h10}, {PdeVolumes::lattice}, {DtRule::fit, DtRule::exact})) {
       const std::string file = name + r.file_suffix() + ".tsv";
       if (!stored(file)) continue;
-      const TsvTable data = load(file);
+      const TsvTable& data = load(file);
       if (!pub) pub = published(name);
       // The V_i = dx^2 run counts only under the same time-step rule as the data it is set
       // against (the files' `steps` lines agree; the later of the two candidates where both do).
       std::string cell;
-      for (const PdeSetup& c : pde_setup_matrix({HRule::h10}, {PdeVolumes::cell}, {DtRule::fit, DtRule::exact})) {
+      for (const PdeReading& c : pde_reading_matrix({HRule::h10}, {PdeVolumes::cell}, {DtRule::fit, DtRule::exact})) {
         const std::string candidate = name + c.file_suffix() + ".tsv";
-        if (stored(candidate) && TsvTable::load(store + "/" + candidate, false).get("steps") == data.get("steps"))
+        if (stored(candidate) && store.table(candidate, false).get("steps") == data.get("steps"))
           cell = candidate;
       }
       const std::vector<ModeRow> cell_rows = cell.empty() ? std::vector<ModeRow>{} : mode_model(load(cell));

@@ -40,6 +40,11 @@ std::optional<TsvTable> load_if(const std::string& path) {
   return TsvTable::load(path);
 }
 
+// A store file's table, none where the store does not hold it.
+const TsvTable* stored_if(const StoreSnapshot& store, const std::string& name) {
+  return store.has(name) ? &store.table(name) : nullptr;
+}
+
 // One row of the table, by column name: its columns are set in decisions() at the end of this
 // file, while each question below writes its own row.
 void add_question(TsvTable& out, const std::string& question, const std::string& evidence,
@@ -54,12 +59,12 @@ void add_question(TsvTable& out, const std::string& question, const std::string&
 
 // The two-level rates at `levels` ("7,8") of a heat file's series that never blew up, joined
 // with the published Table 4.7 rates (as rate_table --key weight,theta writes them).
-TsvTable heat_rates(const std::string& file, const TsvTable& published, const std::string& levels) {
+TsvTable heat_rates(const TsvTable& data, const TsvTable& published, const std::string& levels) {
   RateJoin join;
   join.keys = {"weight", "theta"};
   join.levels = levels;
   TsvTable out;
-  join_rates(finite_series(TsvTable::load(file)), published, join, out);
+  join_rates(finite_series(data), published, join, out);
   return out;
 }
 
@@ -85,16 +90,16 @@ double mean_distance(const TsvTable& r) {
   return s / static_cast<double>(r.rows.size());
 }
 
-void time_step_question(const std::string& store, const std::string& pub_dir, TsvTable& out) {
-  const std::string fit = store + "/thesis_table4_7.tsv", ex = store + "/thesis_table4_7_dtexact.tsv";
-  if (!fs::exists(fit) || !fs::exists(ex)) {
+void time_step_question(const StoreSnapshot& store, const std::string& pub_dir, TsvTable& out) {
+  const TsvTable *fit = stored_if(store, "thesis_table4_7.tsv"), *ex = stored_if(store, "thesis_table4_7_dtexact.tsv");
+  if (!fit || !ex) {
     add_question(out, "Table 4.7 (dt = 0.5h, T = 0.1): dt = T/K or dt = dt0", "not yet in the store", "open");
     return;
   }
   const TsvTable published = TsvTable::load(pub_dir + "/thesis_table4_7_long.tsv");
   std::string ev, verdict;
   for (const auto& [levels, shown] : {std::pair<std::string, std::string>{"7,8", "7/8"}, {"8,9", "8/9"}}) {
-    const TsvTable f = heat_rates(fit, published, levels), e = heat_rates(ex, published, levels);
+    const TsvTable f = heat_rates(*fit, published, levels), e = heat_rates(*ex, published, levels);
     const std::string f1 = span(f, "reproduced", 1), e1 = span(e, "reproduced", 1);
     if (f1 == "none" || e1 == "none") {
       ev += " levels " + shown + ": not yet computed under both readings.";
@@ -110,14 +115,14 @@ void time_step_question(const std::string& store, const std::string& pub_dir, Ts
   // The same set-up with V_i = dx^2 (the volume mismatch that sets Table 4.4's rates removed).
   for (const auto& [suffix, rule] : {std::pair<std::string, std::string>{"_cellvol", "dt = T/K"},
                                      {"_dtexact_cellvol", "dt = dt0"}}) {
-    const std::string file = store + "/thesis_table4_7" + suffix + ".tsv";
-    if (!fs::exists(file)) continue;
-    const TsvTable c = heat_rates(file, published, "8,9");
+    const TsvTable* file = stored_if(store, "thesis_table4_7" + suffix + ".tsv");
+    if (!file) continue;
+    const TsvTable c = heat_rates(*file, published, "8,9");
     ev += " With V_i = dx^2 (" + rule + "), levels 8/9: theta=1 " + span(c, "reproduced", 1) + ", theta=1/2 " +
           span(c, "reproduced", 0.5) + ".";
   }
   // The steps K of dt = T/K per level (the last row of a level names it).
-  const TsvTable t = TsvTable::load(fit);
+  const TsvTable& t = *fit;
   const int cl = t.require_column("level"), ck = t.require_column("K");
   std::map<std::string, std::string> steps;
   for (std::size_t i = 0; i < t.rows.size(); ++i) steps[t.text(i, cl)] = t.text(i, ck);
@@ -135,8 +140,8 @@ void time_step_question(const std::string& store, const std::string& pub_dir, Ts
 // ------------------------------------------------------------------------------------------
 // Table 4.4: what sets the error.
 
-void poisson_volume_question(const std::string& store, const std::string& pub_dir, TsvTable& out) {
-  const std::optional<TsvTable> diag = load_if(store + "/thesis_poisson_diagnostic.tsv");
+void poisson_volume_question(const StoreSnapshot& store, const std::string& pub_dir, TsvTable& out) {
+  const TsvTable* diag = stored_if(store, "thesis_poisson_diagnostic.tsv");
   if (!diag || diag->column("tau_predicted") < 0) {
     add_question(out, "Table 4.4: the volumes of (A.10)", "not yet in the store", "open");
     return;
@@ -212,16 +217,16 @@ void poisson_volume_question(const std::string& store, const std::string& pub_di
 
 // The stored Table 1 files of seed 1, seeds 2 and 3 and the plain grid that exist, with the
 // name of each realization.
-std::vector<std::pair<std::string, TsvTable>> imoto_realizations(const std::string& store) {
+std::vector<std::pair<std::string, TsvTable>> imoto_realizations(const StoreSnapshot& store) {
   std::vector<std::pair<std::string, TsvTable>> files;
   for (const auto& [suffix, name] : std::vector<std::pair<std::string, std::string>>{
            {"", "seed1"}, {"_seed2", "seed2"}, {"_seed3", "seed3"}, {"_plain", "plain"}})
-    if (auto t = load_if(store + "/imoto_fig5_table1" + suffix + ".tsv")) files.emplace_back(name, *t);
+    if (const TsvTable* t = stored_if(store, "imoto_fig5_table1" + suffix + ".tsv")) files.emplace_back(name, *t);
   return files;
 }
 
-void imoto_smoothing_question(const std::string& store, const std::string& pub_dir, TsvTable& out) {
-  if (!fs::exists(store + "/imoto_fig5_table1_plain.tsv")) return;
+void imoto_smoothing_question(const StoreSnapshot& store, const std::string& pub_dir, TsvTable& out) {
+  if (!store.has("imoto_fig5_table1_plain.tsv")) return;
   const auto files = imoto_realizations(store);
   const double area_H = Domain{}.area_H();
   const TsvTable pub = TsvTable::load(pub_dir + "/imoto_table1.tsv");
@@ -277,7 +282,7 @@ void imoto_smoothing_question(const std::string& store, const std::string& pub_d
 }
 
 // (A diagnostic of tables/imoto_where.sh, not a study's sealed store file: results/diagnostics.)
-void imoto_where_question(const std::string& store, const std::string& diagnostics, TsvTable& out) {
+void imoto_where_question(const StoreSnapshot& store, const std::string& diagnostics, TsvTable& out) {
   const std::optional<TsvTable> where = load_if(diagnostics + "/imoto_m5_where.tsv");
   if (!where) return;
   const auto files = imoto_realizations(store);
@@ -414,7 +419,7 @@ void omega_h_question(TsvTable& out) {
 
 }  // namespace
 
-TsvTable decisions(const std::string& store, const std::string& published_dir, const std::string& diagnostics,
+TsvTable decisions(const StoreSnapshot& store, const std::string& published_dir, const std::string& diagnostics,
                    const std::optional<TsvTable>& score) {
   TsvTable out;
   out.columns = {"question", "evidence", "decision"};

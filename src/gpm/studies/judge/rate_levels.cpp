@@ -80,14 +80,19 @@ double rate_between(const Series& s, int lo, int hi) {
   return std::log(a->second.second / b->second.second) / std::log(a->second.first / b->second.first);
 }
 
-TsvTable load_or_refuse(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw InputError("rate levels: the store has no " + path);
+TsvTable published_or_refuse(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw InputError("rate levels: no published file " + path);
   return TsvTable::load(path, false);
+}
+
+const TsvTable& stored_or_refuse(const StoreSnapshot& store, const std::string& name) {
+  if (!store.has(name)) throw InputError("rate levels: the store has no " + store.path(name));
+  return store.table(name, false);
 }
 
 }  // namespace
 
-RateLevels rate_levels(const std::string& store, const std::string& published) {
+RateLevels rate_levels(const StoreSnapshot& store, const std::string& published) {
   RateLevels out;
   out.rates.columns = {"table", "reading", "weight", "theta", "level_lo", "level_hi", "pair", "rate", "band_lo",
                        "band_hi", "seeds", "published", "theoretical", "where"};
@@ -96,21 +101,21 @@ RateLevels rate_levels(const std::string& store, const std::string& published) {
   const StudyRegistry& reg = study_registry();
   for (const HeatTable& hp : heat_tables()) {
     const RegisteredStudy& study = reg.study(heat_study_name(hp));
-    const TsvTable pub = load_or_refuse(published + "/" + study.name + "_long.tsv");
+    const TsvTable pub = published_or_refuse(published + "/" + study.name + "_long.tsv");
     const std::string doc_levels = pub.get("rate_levels").value_or(hp.rate_levels);
     const int doc_hi = std::stoi(doc_levels.substr(doc_levels.find(',') + 1));
     for (const std::string reading : {"h10", "h15_cell_exact"}) {
-      const std::string base = store + "/" + study.store_file_of(reading).name;
-      const auto seed1 = series_of(load_or_refuse(base + ".tsv"));
+      const std::string base = study.store_file_of(reading).name;
+      const auto seed1 = series_of(stored_or_refuse(store, base + ".tsv"));
       std::vector<std::map<std::pair<std::string, std::string>, Series>> others;
       for (int seed = 2; seed <= 9; ++seed)
-        if (std::filesystem::exists(base + "_seed" + std::to_string(seed) + ".tsv"))
-          others.push_back(series_of(load_or_refuse(base + "_seed" + std::to_string(seed) + ".tsv")));
+        if (store.has(base + "_seed" + std::to_string(seed) + ".tsv"))
+          others.push_back(series_of(stored_or_refuse(store, base + "_seed" + std::to_string(seed) + ".tsv")));
       for (std::size_t p = 0; p < pub.rows.size(); ++p) {
         const std::string w = pub.text(p, "weight"), th = pub.text(p, "theta");
         const double published_rate = pub.number(p, pub.require_column("numerical"));
         // The theory's rate, or none where the document gives a word ("unstable": Table 4.6's
-        // explicit series, whose growth is a fingerprint, not a rate).
+        // explicit series, whose growth is the set-up fingerprint, not a rate).
         const std::string theory_text = pub.text(p, "theoretical");
         char* end = nullptr;
         const double parsed = std::strtod(theory_text.c_str(), &end);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "gpm/io/tsv.hpp"
+#include "gpm/studies/judge/snapshot.hpp"
 
 namespace gpm {
 
@@ -38,6 +39,6 @@ TrendFinding judge_trend(const std::vector<double>& rates, double theory, bool f
 struct RateLevels {
   TsvTable rates, findings;
 };
-RateLevels rate_levels(const std::string& store, const std::string& published);
+RateLevels rate_levels(const StoreSnapshot& store, const std::string& published);
 
 }  // namespace gpm

@@ -15,15 +15,12 @@ namespace gpm {
 
 namespace {
 
-// One reading of the set-up (h rule, volumes, time step): PdeSetup (heat_tables.hpp).
-using Reading = PdeSetup;
-
 // The details in the order they are decided, each with its printed value first, by name:
 // the rule compares values of any detail alike.
 const std::vector<std::pair<std::string, std::vector<std::string>>> kDetails = {
     {"h_rule", {"h10", "h15"}}, {"volumes", {"lattice", "cell"}}, {"dt_rule", {"fit", "exact"}}};
 
-std::string detail(const Reading& r, const std::string& d) {
+std::string detail(const PdeReading& r, const std::string& d) {
   return d == "h_rule" ? h_rule_name(r.h_rule) : d == "volumes" ? pde_volumes_name(r.volumes) : dt_rule_name(r.dt_rule);
 }
 
@@ -31,7 +28,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The fingerprint rate of `weight` (rows where column = value: θ = 0) between the levels l1,
 // l2, NaN where a level is missing or an error is not a positive finite number.
-double fingerprint_rate(const TsvTable& t, const std::pair<std::string, std::string>& fp, const std::string& weight,
+double setup_fingerprint_rate(const TsvTable& t, const std::pair<std::string, std::string>& fp, const std::string& weight,
                         int l1, int l2) {
   double h[2] = {NAN, NAN}, e[2] = {NAN, NAN};
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
@@ -48,12 +45,12 @@ double fingerprint_rate(const TsvTable& t, const std::pair<std::string, std::str
 
 // The mean over the weights of |ln(rate/published)| of one data file (inf: a rate missing or
 // of the other sign); `rates` gets each weight's rate (NaN where none).
-double fingerprint_distance(const TsvTable& data, const std::pair<std::string, std::string>& fp,
+double setup_fingerprint_distance(const TsvTable& data, const std::pair<std::string, std::string>& fp,
                             const std::map<std::string, double>& published, int l1, int l2,
                             std::vector<double>* rates = nullptr) {
   double sum = 0;
   for (auto& [w, p] : published) {
-    const double rate = data.rows.empty() ? NAN : fingerprint_rate(data, fp, w, l1, l2);
+    const double rate = data.rows.empty() ? NAN : setup_fingerprint_rate(data, fp, w, l1, l2);
     if (rates) rates->push_back(rate);
     sum += (rate / p > 0) ? std::fabs(std::log(rate / p)) : kInf;
   }
@@ -67,7 +64,7 @@ struct DistanceBand {
   double lo = kInf, hi = -kInf;
   void add(double d) { ++seeds, lo = std::min(lo, d), hi = std::max(hi, d); }
 };
-DistanceBand distance_band(const std::string& store, const RegisteredStudy& study, const std::string& reading,
+DistanceBand distance_band(const StoreSnapshot& store, const RegisteredStudy& study, const std::string& reading,
                            double seed1, const std::pair<std::string, std::string>& fp,
                            const std::map<std::string, double>& published, int l1, int l2) {
   DistanceBand b;
@@ -75,18 +72,17 @@ DistanceBand distance_band(const std::string& store, const RegisteredStudy& stud
   for (const StoreFile& f : study.store_files) {
     if (f.slice.rfind(reading + "_seed", 0) != 0 || f.slice.size() == reading.size() + 5) continue;
     if (f.slice.find_first_not_of("0123456789", reading.size() + 5) != std::string::npos) continue;
-    const std::string path = store + "/" + f.name + ".tsv";
-    if (std::filesystem::exists(path)) b.add(fingerprint_distance(TsvTable::load(path), fp, published, l1, l2));
+    if (store.has(f.name + ".tsv")) b.add(setup_fingerprint_distance(store.table(f.name + ".tsv"), fp, published, l1, l2));
   }
   return b;
 }
 
 }  // namespace
 
-SetupIdentification identify_setup(const std::string& store, const RegisteredStudy& study, const TsvTable& pub) {
-  if (!study.published || study.published->fingerprint.first.empty())
+SetupIdentification identify_setup(const StoreSnapshot& store, const RegisteredStudy& study, const TsvTable& pub) {
+  if (!study.published || study.published->setup_fingerprint.first.empty())
     throw InputError("study '" + study.name + "' carries no set-up fingerprint");
-  const auto& fp = study.published->fingerprint;
+  const auto& fp = study.published->setup_fingerprint;
   const auto levels_text = pub.get("rate_levels").value_or("");
   int l1 = 0, l2 = 0;
   if (std::sscanf(levels_text.c_str(), "%d,%d", &l1, &l2) != 2)
@@ -98,7 +94,7 @@ SetupIdentification identify_setup(const std::string& store, const RegisteredStu
 
   // --- Every reading: its θ = 0 rates and distance. -----------------------------------------
   // The eight readings, the printed one (h10, lattice, fit) first.
-  const std::vector<Reading>& readings = pde_setups();
+  const std::vector<PdeReading>& readings = pde_readings();
   SetupIdentification id;
   TsvTable& t = id.table;
   t.set("program", "setup_identification");
@@ -109,7 +105,7 @@ SetupIdentification identify_setup(const std::string& store, const RegisteredStu
   const std::string item = study.item.substr(study.item.find("Table"));
   t.set("fingerprint", item + ", " + fp.first + " = " + fp.second + ", rates in h between levels " + levels_text);
   t.set("distance", "mean over the weights of |ln(rate/published)|; inf: a rate missing or of the other sign");
-  t.set("store", store);
+  t.set("store", store.dir());
   t.columns = {"reading", "h_rule", "volumes", "dt_rule", "file"};
   for (const auto& entry : published) t.columns.push_back("rate_" + entry.first);
   t.columns.push_back("distance");
@@ -121,13 +117,12 @@ SetupIdentification identify_setup(const std::string& store, const RegisteredStu
                          "lowest, highest, how many");
   std::map<std::string, double> distance;
   std::map<std::string, DistanceBand> band;
-  for (const Reading& r : readings) {
+  for (const PdeReading& r : readings) {
     const std::string file = study.store_file_of(r.name()).name + ".tsv";
-    const std::string path = store + "/" + file;
     std::vector<std::string> row = {r.name(), detail(r, "h_rule"), detail(r, "volumes"), detail(r, "dt_rule"), file};
-    const bool present = std::filesystem::exists(path);
+    const bool present = store.has(file);
     std::vector<double> rates;
-    distance[r.name()] = fingerprint_distance(present ? TsvTable::load(path) : TsvTable{}, fp, published, l1, l2, &rates);
+    distance[r.name()] = setup_fingerprint_distance(present ? store.table(file) : TsvTable{}, fp, published, l1, l2, &rates);
     for (double rate : rates) {
       row.push_back(std::isnan(rate) ? "NA" : fmt(rate));
       if (std::isnan(rate) && (id.incomplete.empty() || id.incomplete.back() != r.name()))
@@ -150,11 +145,11 @@ SetupIdentification identify_setup(const std::string& store, const RegisteredStu
   }
 
   // --- The details, one at a time. ------------------------------------------------------------
-  std::vector<Reading> left = readings;
+  std::vector<PdeReading> left = readings;
   for (auto& [name, values] : kDetails) {
     std::map<std::string, double> best;
     for (auto& v : values) best[v] = kInf;
-    for (const Reading& r : left) best[detail(r, name)] = std::min(best[detail(r, name)], distance[r.name()]);
+    for (const PdeReading& r : left) best[detail(r, name)] = std::min(best[detail(r, name)], distance[r.name()]);
     std::string chosen = values.front();  // as printed unless a value stands out
     std::string why = "as printed: no value is closer than the others by a factor of two";
     for (auto& v : values) {
@@ -174,15 +169,15 @@ SetupIdentification identify_setup(const std::string& store, const RegisteredStu
     // the other's lowest, with five realizations of each (kSeedBandDecides, as a seed band of
     // a rate needs); "suggested" when not; with fewer realizations, not assessed.
     auto closest = [&](const std::string& v) {
-      const Reading* c = nullptr;
-      for (const Reading& r : left)
+      const PdeReading* c = nullptr;
+      for (const PdeReading& r : left)
         if (detail(r, name) == v && (!c || distance[r.name()] < distance[c->name()])) c = &r;
       return c;
     };
     std::string robust = "yes";
     for (auto& o : values) {
       if (o == chosen) continue;
-      const Reading *a = closest(chosen), *b = closest(o);
+      const PdeReading *a = closest(chosen), *b = closest(o);
       if (!a || !b) continue;
       const DistanceBand &ba = band[a->name()], &bb = band[b->name()];
       char txt[200];
@@ -201,7 +196,7 @@ SetupIdentification identify_setup(const std::string& store, const RegisteredStu
       }
     }
     if (robust == "yes") robust = "firm";
-    std::erase_if(left, [&](const Reading& r) { return detail(r, name) != chosen; });
+    std::erase_if(left, [&](const PdeReading& r) { return detail(r, name) != chosen; });
     t.set("decided_" + name, chosen + " (" + why + ")");
     t.set("robust_" + name, robust);
     id.decisions += (id.decisions.empty() ? "" : ", ") + name + " = " + chosen;

@@ -9,7 +9,7 @@
 // K = ⌈T/Δt₀⌉ and so fixes h (and, through g, Δt and the volumes slightly).  These rates do
 // not measure the convergence the other tables judge.
 //
-// The study and its key column come from the registry (fingerprint_study: the one whose
+// The study and its key column come from the registry (setup_fingerprint_study: the one whose
 // PublishedRates::fingerprint is set, Table 4.6's theta = 0).  For each of the eight
 // readings, its store file (RegisteredStudy::store_file_of: thesis_table4_6{,_h15}{,_dtexact}
 // {,_cellvol}.tsv):
@@ -27,6 +27,7 @@
 #include "gpm/io/tsv.hpp"
 #include "gpm/studies/define/heat_tables.hpp"
 #include "gpm/studies/define/registry.hpp"
+#include "gpm/studies/judge/snapshot.hpp"
 
 namespace gpm {
 
@@ -35,7 +36,7 @@ struct SetupIdentification {
   // detail with its reason, `identified` (a reading's name, or NA) and `printed`.  No
   // provenance: the caller adds it when it writes the table.
   TsvTable table;
-  std::optional<PdeSetup> identified;  // none while a reading has no θ = 0 rate yet
+  std::optional<PdeReading> identified;  // none while a reading has no θ = 0 rate yet
   std::vector<std::string> incomplete;    // the readings without a θ = 0 rate for some weight
   std::string decisions;                  // "h_rule = h15, volumes = cell, dt_rule = exact"
 };
@@ -44,6 +45,6 @@ struct SetupIdentification {
 // rows).  InputError for a published file without rate_levels or θ = 0 rates, or a store file
 // that cannot be read.
 // `study`: the fingerprint's study (its published file is `published`).
-SetupIdentification identify_setup(const std::string& store, const RegisteredStudy& study, const TsvTable& published);
+SetupIdentification identify_setup(const StoreSnapshot& store, const RegisteredStudy& study, const TsvTable& published);
 
 }  // namespace gpm

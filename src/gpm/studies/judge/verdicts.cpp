@@ -38,7 +38,7 @@ const std::vector<VerdictSpelling>& spellings() {
       {Verdict::unexplained, "differs, unexplained", "unexplained", "not_explained"},
       {Verdict::not_computed, "not computed", "not_computed", "missing"},
       {Verdict::undefined, "undefined", "undefined", "undecided"},
-      {Verdict::fingerprint, "fingerprint", "fingerprint", "used_for_setup"},
+      {Verdict::setup_fingerprint, "fingerprint", "fingerprint", "used_for_setup"},
       {Verdict::indeterminate, "indeterminate", "indeterminate", "undecided"},
       {Verdict::not_counted, "not counted", "", ""},
   };
@@ -62,7 +62,7 @@ std::vector<std::pair<std::string, std::string>> printed_slices(const StudyRegis
 
 // The slice of each table on the identified board: a table whose slice follows the set-up
 // reading (Chapter 4's PDE tables) takes the identified one; the rest as printed.
-std::map<std::string, std::string> identified_slices(const std::optional<PdeSetup>& identified,
+std::map<std::string, std::string> identified_slices(const std::optional<PdeReading>& identified,
                                                      const StudyRegistry& registry) {
   const auto printed = printed_slices(registry);
   std::map<std::string, std::string> s(printed.begin(), printed.end());
@@ -329,11 +329,11 @@ CheckedReasons passed_reasons(const TsvTable& checked) {
 }
 
 // Whether a rate is one of the set-up rule's fingerprint rates (its study's
-// PublishedRates::fingerprint: the key column's value in the rate's key).
-bool is_fingerprint(const StoreRate& r, const StudyRegistry& registry) {
+// PublishedRates::setup_fingerprint: the key column's value in the rate's key).
+bool is_setup_fingerprint(const StoreRate& r, const StudyRegistry& registry) {
   for (auto& s : registry) {
-    if (!s.published || s.published->table != r.table || s.published->fingerprint.first.empty()) continue;
-    const auto& [column, value] = s.published->fingerprint;
+    if (!s.published || s.published->table != r.table || s.published->setup_fingerprint.first.empty()) continue;
+    const auto& [column, value] = s.published->setup_fingerprint;
     const std::vector<std::string> key = s.published->rate_key();
     std::istringstream cells(r.key);  // the key's cells, space-separated, in key order
     std::string cell;
@@ -345,7 +345,7 @@ bool is_fingerprint(const StoreRate& r, const StudyRegistry& registry) {
 
 std::vector<JudgedRate> judge_rates(const std::vector<StoreRate>& rates, const UnstableSeries& unstable,
                                     const CheckedReasons& checked, double tolerance,
-                                    const std::optional<PdeSetup>& identified, const StudyRegistry& registry) {
+                                    const std::optional<PdeReading>& identified, const StudyRegistry& registry) {
   const std::map<RateKey, SeedBand> bands = seed_bands(rates);
   const auto printed_list = printed_slices(registry);
   const std::map<std::string, std::string> printed(printed_list.begin(), printed_list.end());
@@ -369,8 +369,8 @@ std::vector<JudgedRate> judge_rates(const std::vector<StoreRate>& rates, const U
     j.printed = on_board(printed, r);
     j.identified = on_board(ident, r);
     // The fingerprint rates identified the reading: on that board they are evidence, not results.
-    const bool fingerprint = j.identified && identified && is_fingerprint(r, registry);
-    j.verdict_identified = fingerprint ? Verdict::fingerprint : j.verdict;
+    const bool fingerprint = j.identified && identified && is_setup_fingerprint(r, registry);
+    j.verdict_identified = fingerprint ? Verdict::setup_fingerprint : j.verdict;
     out.push_back(j);
   }
   return out;
@@ -498,12 +498,11 @@ TsvTable score_table(const std::vector<JudgedRate>& rates, const std::string& pu
   return t;
 }
 
-std::vector<StoreSlice> stored_slices(const RegisteredStudy& s, const std::string& store) {
+std::vector<StoreSlice> stored_slices(const RegisteredStudy& s, const StoreSnapshot& store) {
   std::vector<StoreSlice> out;
   for (const StoreFile& f : s.store_files) {
-    const std::string path = store + "/" + f.name + ".tsv";
-    if (!std::filesystem::exists(path)) continue;
-    const TsvTable data = TsvTable::load(path);
+    if (!store.has(f.name + ".tsv")) continue;
+    const TsvTable& data = store.table(f.name + ".tsv");
     if (s.published && s.published->cut) {
       for (StoreSlice& slice : s.published->cut(f, data)) out.push_back(std::move(slice));
     } else {
@@ -513,7 +512,7 @@ std::vector<StoreSlice> stored_slices(const RegisteredStudy& s, const std::strin
   return out;
 }
 
-std::vector<StoreRate> store_rates(const std::string& store, const std::string& published_dir,
+std::vector<StoreRate> store_rates(const StoreSnapshot& store, const std::string& published_dir,
                                    double tolerance, const StudyRegistry& registry) {
   // Per slice, named "table.slice": its rows (the slices in the order of their names).
   std::map<std::string, std::vector<StoreRate>> slices;
@@ -536,7 +535,7 @@ std::vector<StoreRate> store_rates(const std::string& store, const std::string& 
   return out;
 }
 
-UnstableSeries store_unstable_series(const std::string& store, const std::string& published_dir,
+UnstableSeries store_unstable_series(const StoreSnapshot& store, const std::string& published_dir,
                                      const StudyRegistry& registry) {
   UnstableSeries out;
   // The studies whose rates come from the series that never blew up (the heat tables).
@@ -551,31 +550,26 @@ UnstableSeries store_unstable_series(const std::string& store, const std::string
   return out;
 }
 
-TsvTable store_summary(const std::string& store) {
-  std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(store)) {
-    const std::string name = e.path().filename().string();
-    if (e.is_regular_file() && name[0] != '.' && name.size() > 4 && name.ends_with(".tsv")) files.push_back(name);
-  }
-  std::sort(files.begin(), files.end());
+TsvTable store_summary(const StoreSnapshot& store) {
+  const std::vector<std::string> files = store.data_files();
   const std::vector<std::string> programs = fingerprinted_programs();
   TsvTable t;
   t.columns = {"file", "program", "rows", "levels", "current_computed", "current_by_recheck", "other_code", "made_on"};
   for (const std::string& name : files) {
-    const TsvTable data = TsvTable::load(store + "/" + name, false);
+    const TsvTable& data = store.table(name, false);
     const int code_col = data.column("code");
     if (code_col < 0) continue;  // a derived file (cost, rates input) or a script's: no code column
     const std::string program = data.get("program").value_or("");
     const bool known = std::find(programs.begin(), programs.end(), program) != programs.end();
     const std::string code = known ? code_fingerprint(program) : "";
-    const int level_col = data.column("level"), made_col = data.column("made_on"), checked_col = data.column("checked");
+    const int level_col = data.column("level"), made_col = data.column("made_on"), recheck_col = data.column("checked");
     std::set<std::string> levels, made_on;
     int fresh = 0, carried = 0, other = 0;
     for (std::size_t i = 0; i < data.rows.size(); ++i) {
       levels.insert(cell_or_empty(data, i, level_col));
       made_on.insert(cell_or_empty(data, i, made_col));
       if (cell_or_empty(data, i, code_col) != code) ++other;
-      else if (cell_or_empty(data, i, checked_col).find("recheck") != std::string::npos) ++carried;
+      else if (cell_or_empty(data, i, recheck_col).find("recheck") != std::string::npos) ++carried;
       else ++fresh;
     }
     std::vector<std::string> level_list;

@@ -57,6 +57,7 @@
 #include "gpm/io/tsv.hpp"
 #include "gpm/studies/define/heat_tables.hpp"
 #include "gpm/studies/define/registry.hpp"
+#include "gpm/studies/judge/snapshot.hpp"
 
 namespace gpm {
 
@@ -72,7 +73,7 @@ enum class Verdict {
   unexplained,
   not_computed,
   undefined,
-  fingerprint,
+  setup_fingerprint,  // a set-up fingerprint rate: evidence that identified the reading, not judged
   indeterminate,
   not_counted,
 };
@@ -158,7 +159,7 @@ CheckedReasons passed_reasons(const TsvTable& checked);
 // the printed one).
 std::vector<JudgedRate> judge_rates(const std::vector<StoreRate>& rates, const UnstableSeries& unstable,
                                     const CheckedReasons& checked, double tolerance,
-                                    const std::optional<PdeSetup>& identified,
+                                    const std::optional<PdeReading>& identified,
                                     const StudyRegistry& registry = study_registry());
 
 // The rates file: columns table, slice, setup, key, published, reproduced, levels, status,
@@ -178,19 +179,19 @@ std::string published_file(const std::string& published_dir, const std::string& 
                            const StudyRegistry& registry = study_registry());
 // The slices of a study's files in the store (its store_files that are there, each cut by
 // its published rates' cut, else one slice).
-std::vector<StoreSlice> stored_slices(const RegisteredStudy& study, const std::string& store);
+std::vector<StoreSlice> stored_slices(const RegisteredStudy& study, const StoreSnapshot& store);
 // Every slice of every stored study file of the registry's studies with published rates
 // (stored_slices, then store_rates_of), in the order of their names "table.slice".
-std::vector<StoreRate> store_rates(const std::string& store, const std::string& published_dir,
+std::vector<StoreRate> store_rates(const StoreSnapshot& store, const std::string& published_dir,
                                    double tolerance, const StudyRegistry& registry = study_registry());
 // The unstable series of every stored reading of the studies judged on finite series (heat).
-UnstableSeries store_unstable_series(const std::string& store, const std::string& published_dir,
+UnstableSeries store_unstable_series(const StoreSnapshot& store, const std::string& published_dir,
                                      const StudyRegistry& registry = study_registry());
 // Where the stored rows come from, file by file: rows, levels, and how many the current code
 // made (the code column is this build's fingerprint of the file's program), how many a
 // recorded re-check carried over, how many other code made; the machines they were made on.
 // Files without a code column (derived files, a script's) are left out.
-TsvTable store_summary(const std::string& store);
+TsvTable store_summary(const StoreSnapshot& store);
 // The header lines every output of gpm store-rates carries (the report prints them under each
 // table): profile (the committed store), seed, git_revision, written_utc.
 std::vector<std::pair<std::string, std::string>> store_provenance(const std::string& store);

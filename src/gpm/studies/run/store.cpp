@@ -73,11 +73,11 @@ std::string row_seal_without_checked(const std::vector<std::string>& row) {
   return fnv_seal(row, row.size() >= 2 ? row.size() - 2 : 0);
 }
 
-std::size_t recheck_count(const std::string& checked) {
+std::size_t recheck_count(const std::string& record) {
   std::size_t n = 0;
-  const auto plus = checked.rfind("(+");
-  if (plus != std::string::npos) n = std::strtoul(checked.c_str() + plus + 2, nullptr, 10);
-  for (auto at = checked.find("recheck "); at != std::string::npos; at = checked.find("recheck ", at + 1)) ++n;
+  const auto plus = record.rfind("(+");
+  if (plus != std::string::npos) n = std::strtoul(record.c_str() + plus + 2, nullptr, 10);
+  for (auto at = record.find("recheck "); at != std::string::npos; at = record.find("recheck ", at + 1)) ++n;
   return n;
 }
 
@@ -332,7 +332,7 @@ void UnitCache::load(const std::vector<std::pair<std::string, std::string>>& par
   for (auto& r : table_.rows) reused_ += r[ccode] == code_;
   const std::size_t other = table_.rows.size() - reused_;
   if (other && running())
-    std::fprintf(stderr, "[store] %s: %zu rows come from other code (fingerprint now %s): not "
+    std::fprintf(stderr, "[store] %s: %zu rows come from other code (code fingerprint now %s): not "
                          "reused without --recheck\n", path_.c_str(), other, code_.c_str());
   if (!running()) reused_ = 0;  // verify, recheck, census reuse nothing
 }

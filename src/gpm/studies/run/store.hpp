@@ -4,7 +4,7 @@
 // A study writes one or more data files (its registry entry's store files: a reading, a seed);
 // in each, rows whose first `key_columns` values agree form one finished unit of work (a level, or a level × order, …).  Every row ends with three
 // provenance columns:
-//   code     the fingerprint of the program that computed it (provenance.hpp),
+//   code     the code fingerprint of the program that computed it (provenance.hpp),
 //   made_on  CPU, threads and date,
 //   checked  "computed" (by that code), or the record of the re-check that carried it
 //            over from older code.
@@ -63,9 +63,10 @@ std::string row_seal(const std::vector<std::string>& row);
 // The seal as written before 2026-12-03, which left `checked` out: read only by
 // `gpm store-seal`, which verifies rows under it once and seals them anew.
 std::string row_seal_without_checked(const std::vector<std::string>& row);
-// The re-checks a row's `checked` cell stands for: each "recheck …" record it holds (an older
-// chain "a; b; c") plus the count it carries as "(+N earlier)"; 0 for "computed".
-std::size_t recheck_count(const std::string& checked);
+// The re-checks a row's `checked` cell (its re-check record; not a checked reason, which
+// judges a rate: judge/checked_reasons.hpp) stands for: each "recheck …" record it holds (an
+// older chain "a; b; c") plus the count it carries as "(+N earlier)"; 0 for "computed".
+std::size_t recheck_count(const std::string& record);
 // A `checked` cell: the last re-check's record and, if any, the count of earlier ones.
 std::string checked_cell(const std::string& last, std::size_t earlier);
 // A text with its invisible characters made visible (\r, \t, \xEF…), for messages.
@@ -149,7 +150,7 @@ class UnitCache {
   TsvTable table_;
   int key_columns_;
   CacheMode mode_;
-  std::string code_;  // the current program's fingerprint
+  std::string code_;  // the current program's code fingerprint
   std::string made_on_;
   int lock_fd_ = -1;
   std::size_t reused_ = 0, added_ = 0;
