@@ -239,36 +239,37 @@ TsvTable checked_reasons(const StoreSnapshot& store, const std::string& publishe
   auto load = [&](const std::string& name) -> const TsvTable& { return store.table(name); };
   auto published = [&](const std::string& table) { return TsvTable::load(published_file(published_dir, table)); };
 
-  if (stored("thesis_poisson_diagnostic.tsv")) {
-    const TsvTable& diag = load("thesis_poisson_diagnostic.tsv");
+  if (const std::string diagnostic = stored_file("thesis_poisson_diagnostic"); stored(diagnostic)) {
+    const TsvTable& diag = load(diagnostic);
     // A diagnostic file from before the consistency prediction has nothing to check with.
     if (diag.column("tau_predicted") >= 0)
       add_volume_mismatch_reasons(published("thesis_table4_4"), diag, tol, out);
   }
-  if (stored("thesis_table4_3.tsv")) {
-    const TsvTable &data = load("thesis_table4_3.tsv"), pub = published("thesis_table4_3");
+  if (const std::string file = stored_file("thesis_table4_3"); stored(file)) {
+    const TsvTable &data = load(file), pub = published("thesis_table4_3");
     for (const char* reading : {"printed", "scaled"}) add_gradient_smoothing_reasons(pub, data, reading, tol, out);
   }
-  if (stored("thesis_table4_2.tsv")) {
-    const TsvTable &data = load("thesis_table4_2.tsv"), pub = published("thesis_table4_2");
+  if (const std::string file = stored_file("thesis_table4_2"); stored(file)) {
+    const TsvTable &data = load(file), pub = published("thesis_table4_2");
     for (const char* reading : {"printed", "scaled"}) add_interpolant_smoothing_reasons(pub, data, reading, tol, out);
   }
   for (const HeatTable& t : heat_tables()) {
-    std::string name = "thesis_table" + t.table;
-    std::replace(name.begin(), name.end(), '.', '_');
+    const std::string name = heat_study_name(t);
+    const RegisteredStudy& study = study_registry().study(name);
     std::optional<TsvTable> pub;  // read once a reading of the table is stored
     for (const PdeReading& r : pde_reading_matrix({HRule::h10}, {PdeVolumes::lattice}, {DtRule::fit, DtRule::exact})) {
-      const std::string file = name + r.file_suffix() + ".tsv";
-      if (!stored(file)) continue;
+      const std::optional<std::string> named = reading_file(study, r.name());
+      if (!named || !stored(*named)) continue;
+      const std::string& file = *named;
       const TsvTable& data = load(file);
       if (!pub) pub = published(name);
       // The V_i = dx^2 run counts only under the same time-step rule as the data it is set
       // against (the files' `steps` lines agree; the later of the two candidates where both do).
       std::string cell;
       for (const PdeReading& c : pde_reading_matrix({HRule::h10}, {PdeVolumes::cell}, {DtRule::fit, DtRule::exact})) {
-        const std::string candidate = name + c.file_suffix() + ".tsv";
-        if (stored(candidate) && store.table(candidate, false).get("steps") == data.get("steps"))
-          cell = candidate;
+        const std::optional<std::string> candidate = reading_file(study, c.name());
+        if (candidate && stored(*candidate) && store.table(*candidate, false).get("steps") == data.get("steps"))
+          cell = *candidate;
       }
       const std::vector<ModeRow> cell_rows = cell.empty() ? std::vector<ModeRow>{} : mode_model(load(cell));
       add_heat_mode_reasons(name, r.name(), *pub, mode_rates(t, mode_model(data), cell_rows), tol, out);

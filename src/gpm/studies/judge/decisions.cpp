@@ -91,12 +91,17 @@ double mean_distance(const TsvTable& r) {
 }
 
 void time_step_question(const StoreSnapshot& store, const std::string& pub_dir, TsvTable& out) {
-  const TsvTable *fit = stored_if(store, "thesis_table4_7.tsv"), *ex = stored_if(store, "thesis_table4_7_dtexact.tsv");
+  const RegisteredStudy& table47 = study_registry().study("thesis_table4_7");
+  auto reading = [&](const std::string& name) {
+    const std::optional<std::string> file = reading_file(table47, name);
+    return file ? stored_if(store, *file) : nullptr;
+  };
+  const TsvTable *fit = reading("h10"), *ex = reading("h10_exact");
   if (!fit || !ex) {
     add_question(out, "Table 4.7 (dt = 0.5h, T = 0.1): dt = T/K or dt = dt0", "not yet in the store", "open");
     return;
   }
-  const TsvTable published = TsvTable::load(pub_dir + "/thesis_table4_7_long.tsv");
+  const TsvTable published = TsvTable::load(published_file(pub_dir, "thesis_table4_7"));
   std::string ev, verdict;
   for (const auto& [levels, shown] : {std::pair<std::string, std::string>{"7,8", "7/8"}, {"8,9", "8/9"}}) {
     const TsvTable f = heat_rates(*fit, published, levels), e = heat_rates(*ex, published, levels);
@@ -113,9 +118,9 @@ void time_step_question(const StoreSnapshot& store, const std::string& pub_dir, 
                      shown.c_str(), b < a ? "dt = dt0" : "dt = T/K", b < a ? b : a, b < a ? a : b);
   }
   // The same set-up with V_i = dx^2 (the volume mismatch that sets Table 4.4's rates removed).
-  for (const auto& [suffix, rule] : {std::pair<std::string, std::string>{"_cellvol", "dt = T/K"},
-                                     {"_dtexact_cellvol", "dt = dt0"}}) {
-    const TsvTable* file = stored_if(store, "thesis_table4_7" + suffix + ".tsv");
+  for (const auto& [name, rule] : {std::pair<std::string, std::string>{"h10_cell", "dt = T/K"},
+                                   {"h10_cell_exact", "dt = dt0"}}) {
+    const TsvTable* file = reading(name);
     if (!file) continue;
     const TsvTable c = heat_rates(*file, published, "8,9");
     ev += " With V_i = dx^2 (" + rule + "), levels 8/9: theta=1 " + span(c, "reproduced", 1) + ", theta=1/2 " +
@@ -141,12 +146,12 @@ void time_step_question(const StoreSnapshot& store, const std::string& pub_dir, 
 // Table 4.4: what sets the error.
 
 void poisson_volume_question(const StoreSnapshot& store, const std::string& pub_dir, TsvTable& out) {
-  const TsvTable* diag = stored_if(store, "thesis_poisson_diagnostic.tsv");
+  const TsvTable* diag = stored_if(store, stored_file("thesis_poisson_diagnostic"));
   if (!diag || diag->column("tau_predicted") < 0) {
     add_question(out, "Table 4.4: the volumes of (A.10)", "not yet in the store", "open");
     return;
   }
-  const TsvTable pub = TsvTable::load(pub_dir + "/thesis_table4_4_long.tsv");
+  const TsvTable pub = TsvTable::load(published_file(pub_dir, "thesis_table4_4"));
   std::map<std::pair<std::string, std::string>, std::string> published;  // (h rule, weight)
   for (std::size_t i = 0; i < pub.rows.size(); ++i)
     published[{pub.text(i, "h_rule"), pub.text(i, "weight")}] = pub.text(i, "numerical");
@@ -219,17 +224,17 @@ void poisson_volume_question(const StoreSnapshot& store, const std::string& pub_
 // name of each realization.
 std::vector<std::pair<std::string, TsvTable>> imoto_realizations(const StoreSnapshot& store) {
   std::vector<std::pair<std::string, TsvTable>> files;
-  for (const auto& [suffix, name] : std::vector<std::pair<std::string, std::string>>{
-           {"", "seed1"}, {"_seed2", "seed2"}, {"_seed3", "seed3"}, {"_plain", "plain"}})
-    if (const TsvTable* t = stored_if(store, "imoto_fig5_table1" + suffix + ".tsv")) files.emplace_back(name, *t);
+  for (const auto& [slice, name] : std::vector<std::pair<std::string, std::string>>{
+           {"", "seed1"}, {"seed2", "seed2"}, {"seed3", "seed3"}, {"plain", "plain"}})
+    if (const TsvTable* t = stored_if(store, stored_file("imoto_fig5_table1", slice))) files.emplace_back(name, *t);
   return files;
 }
 
 void imoto_smoothing_question(const StoreSnapshot& store, const std::string& pub_dir, TsvTable& out) {
-  if (!store.has("imoto_fig5_table1_plain.tsv")) return;
+  if (!store.has(stored_file("imoto_fig5_table1", "plain"))) return;
   const auto files = imoto_realizations(store);
   const double area_H = Domain{}.area_H();
-  const TsvTable pub = TsvTable::load(pub_dir + "/imoto_table1.tsv");
+  const TsvTable pub = TsvTable::load(published_file(pub_dir, "imoto_table1"));
   for (const std::string w : {"Lap1", "Lap2"}) {
     // Per level: each realization's error, and h, N, dx (the last file's row of the level).
     std::map<std::pair<int, std::string>, double> e;

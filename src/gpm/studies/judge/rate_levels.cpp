@@ -12,6 +12,7 @@
 #include "gpm/studies/define/heat_tables.hpp"
 #include "gpm/studies/judge/rates.hpp"
 #include "gpm/studies/define/registry.hpp"
+#include "gpm/studies/judge/verdicts.hpp"  // seed_files
 
 namespace gpm {
 
@@ -101,16 +102,14 @@ RateLevels rate_levels(const StoreSnapshot& store, const std::string& published)
   const StudyRegistry& reg = study_registry();
   for (const HeatTable& hp : heat_tables()) {
     const RegisteredStudy& study = reg.study(heat_study_name(hp));
-    const TsvTable pub = published_or_refuse(published + "/" + study.name + "_long.tsv");
+    const TsvTable pub = published_or_refuse(published_file(published, study.published->table));
     const std::string doc_levels = pub.get("rate_levels").value_or(hp.rate_levels);
     const int doc_hi = std::stoi(doc_levels.substr(doc_levels.find(',') + 1));
     for (const std::string reading : {"h10", "h15_cell_exact"}) {
-      const std::string base = study.store_file_of(reading).name;
-      const auto seed1 = series_of(stored_or_refuse(store, base + ".tsv"));
+      const auto seed1 = series_of(stored_or_refuse(store, study.store_file_of(reading).name + ".tsv"));
       std::vector<std::map<std::pair<std::string, std::string>, Series>> others;
-      for (int seed = 2; seed <= 9; ++seed)
-        if (store.has(base + "_seed" + std::to_string(seed) + ".tsv"))
-          others.push_back(series_of(stored_or_refuse(store, base + "_seed" + std::to_string(seed) + ".tsv")));
+      for (const StoreFile* f : seed_files(study, reading))
+        if (store.has(f->name + ".tsv")) others.push_back(series_of(store.table(f->name + ".tsv", false)));
       for (std::size_t p = 0; p < pub.rows.size(); ++p) {
         const std::string w = pub.text(p, "weight"), th = pub.text(p, "theta");
         const double published_rate = pub.number(p, pub.require_column("numerical"));

@@ -69,11 +69,8 @@ DistanceBand distance_band(const StoreSnapshot& store, const RegisteredStudy& st
                            const std::map<std::string, double>& published, int l1, int l2) {
   DistanceBand b;
   b.add(seed1);
-  for (const StoreFile& f : study.store_files) {
-    if (f.slice.rfind(reading + "_seed", 0) != 0 || f.slice.size() == reading.size() + 5) continue;
-    if (f.slice.find_first_not_of("0123456789", reading.size() + 5) != std::string::npos) continue;
-    if (store.has(f.name + ".tsv")) b.add(setup_fingerprint_distance(store.table(f.name + ".tsv"), fp, published, l1, l2));
-  }
+  for (const StoreFile* f : seed_files(study, reading))
+    if (store.has(f->name + ".tsv")) b.add(setup_fingerprint_distance(store.table(f->name + ".tsv"), fp, published, l1, l2));
   return b;
 }
 

@@ -394,6 +394,32 @@ TsvTable rates_table(const std::vector<JudgedRate>& rates) {
   return t;
 }
 
+std::string stored_file(const std::string& study, const std::string& slice, const StudyRegistry& registry) {
+  const RegisteredStudy& s = registry.study(study);
+  if (slice.empty() && !s.store_files.empty()) return s.store_files.front().name + ".tsv";
+  for (const StoreFile& f : s.store_files)
+    if (f.slice == slice) return f.name + ".tsv";
+  throw InputError("study '" + study + "' keeps no slice '" + slice + "' in the store");
+}
+
+std::optional<std::string> reading_file(const RegisteredStudy& study, const std::string& reading) {
+  if (!study.published || !study.published->identified_slice) return std::nullopt;
+  const std::string slice = study.published->identified_slice(PdeReading::named(reading));
+  for (const StoreFile& f : study.store_files)
+    if (std::find(f.readings.begin(), f.readings.end(), slice) != f.readings.end()) return f.name + ".tsv";
+  return std::nullopt;
+}
+
+std::vector<const StoreFile*> seed_files(const RegisteredStudy& study, const std::string& reading) {
+  std::vector<const StoreFile*> out;
+  const std::string prefix = reading + "_seed";
+  for (const StoreFile& f : study.store_files)
+    if (f.slice.size() > prefix.size() && f.slice.rfind(prefix, 0) == 0 &&
+        f.slice.find_first_not_of("0123456789", prefix.size()) == std::string::npos)
+      out.push_back(&f);
+  return out;
+}
+
 std::string published_file(const std::string& published_dir, const std::string& table,
                            const StudyRegistry& registry) {
   for (auto& s : registry)

@@ -175,6 +175,17 @@ TsvTable score_table(const std::vector<JudgedRate>& rates, const std::string& pu
 // --- From the store ----------------------------------------------------------------------------
 
 // The published file of a table (the registry's): imoto_table1.tsv, thesis_table4_N_long.tsv.
+// The store file (NAME.tsv) of a study's slice, as the registry names it (store_files; slice
+// "": the study's first file, seed 1); InputError if the study keeps no such slice.  The
+// judges name no store file themselves.
+std::string stored_file(const std::string& study, const std::string& slice = "",
+                        const StudyRegistry& registry = study_registry());
+// The store file (NAME.tsv) of a set-up reading (RegisteredStudy::store_file_of), none where
+// the study keeps no file of it.
+std::optional<std::string> reading_file(const RegisteredStudy& study, const std::string& reading);
+// The store files of a reading's other jitter realizations: the study's slices
+// "<reading>_seed<N>", in the registry's order.
+std::vector<const StoreFile*> seed_files(const RegisteredStudy& study, const std::string& reading);
 std::string published_file(const std::string& published_dir, const std::string& table,
                            const StudyRegistry& registry = study_registry());
 // The slices of a study's files in the store (its store_files that are there, each cut by
