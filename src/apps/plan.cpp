@@ -22,6 +22,7 @@
 #include "gpm/io/tsv.hpp"
 #include "gpm/io/progress.hpp"
 #include "gpm/studies/define/profile.hpp"
+#include "gpm/studies/define/registry.hpp"
 #include "gpm/studies/plan/study_plan.hpp"
 
 using namespace gpm;
@@ -77,11 +78,16 @@ class Plan {
     a_.parse(argc, argv);
     a_.required("out");
     profile_ = parse_profile(a_.str("profile"));
+    scope_.study = a_.str("study");
+    if (!scope_.study.empty()) study_registry().study(scope_.study);  // an unknown one, before any work
+    if (!a_.str("levels").empty()) scope_.levels = levels_option(a_, profile_, {}, {}, 3, 13);
+    if (!scope_.levels.empty() && scope_.study.empty())
+      throw InputError("--levels " + a_.str("levels") + ": name the study it prices (--study)");
   }
 
   int run() {
     calibrate_or_reuse();
-    units_ = plan_units(profile_, cal_);
+    units_ = plan_units(profile_, cal_, study_registry(), scope_);
     write_units();
     write_summary();
     write_heat_matrix();
@@ -93,6 +99,7 @@ class Plan {
  private:
   Args a_;
   Profile profile_{};
+  PlanScope scope_;
   Stopwatch wall_;
   Calibration cal_;
   std::vector<PlanUnit> units_;
@@ -118,7 +125,10 @@ class Plan {
                                    "  reading and batched (heat_matrix_costs; optional)")
         .opt("bench", "data/bench/kernel.tsv", "make bench's kernel file, shown beside the "
                                                "calibration when present")
-        .flag("quiet", "do not print the table");
+        .flag("quiet", "do not print the table")
+        .opt("study", "", "price this study only (gpm study --list names them)")
+        .opt("levels", "", "with --study: these comma-separated levels instead of the profile's, every\n"
+                           "  part of the study at them (e.g. levels past the documents before running them)");
   }
 
   // A few seconds of the studies' own code paths on small levels, or an earlier plan's header.

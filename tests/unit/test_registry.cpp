@@ -179,3 +179,22 @@ TEST_CASE("registry: a trimmed unit is priced and marked in the plan, never run"
   CHECK(marked == over);
   for (auto& u : plan_units(Profile::quick, c)) CHECK(u.trimmed.empty());
 }
+
+TEST_CASE("plan: one study priced at levels past its profile (plan --study --levels)", "[unit][registry]") {
+  const Calibration c = made_up_calibration();
+  const auto units = plan_units(Profile::paper, c, study_registry(), {.study = "thesis_table4_6", .levels = {10, 11}});
+  REQUIRE(!units.empty());
+  std::set<std::string> parts;
+  for (auto& u : units) {
+    CHECK(u.study.rfind("thesis_table4_6", 0) == 0);  // its parts (h rules) only
+    CHECK((u.level == 10 || u.level == 11));
+    CHECK(u.time_s > 0);
+    parts.insert(u.study);
+  }
+  CHECK(parts.size() == 2);  // both h rules run at levels given, as --levels runs them
+  // The finer level costs more: four times the particles, smaller steps.
+  double t10 = 0, t11 = 0;
+  for (auto& u : units) (u.level == 10 ? t10 : t11) += u.time_s;
+  CHECK(t11 > 4 * t10);
+  CHECK_THROWS_AS(plan_units(Profile::paper, c, study_registry(), {.study = "thesis_table9"}), InputError);
+}

@@ -233,12 +233,21 @@ std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c) {
 }
 
 std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c, const StudyRegistry& registry) {
+  return plan_units(profile, c, registry, {});
+}
+
+std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c, const StudyRegistry& registry,
+                                 const PlanScope& scope) {
+  if (!scope.study.empty()) registry.study(scope.study);  // InputError naming the valid ones
   UnitPricer pricer(profile, c);
   for (auto& study : registry) {
+    if (!scope.study.empty() && study.name != scope.study) continue;
+    const std::vector<int>& profile_levels = pricer.paper() ? study.levels.paper : study.levels.quick;
+    const bool given = !scope.levels.empty();
     // The program's own units, priced one by one; what a trimmed unit adds is marked with
     // its reason.  A shared set-up is priced with the first unit that uses it, so a catalog
     // lists a unit that runs before a trimmed one of the same set-up.
-    for (const StudyUnit& u : study.units({pricer.paper(), pricer.paper() ? study.levels.paper : study.levels.quick, false})) {
+    for (const StudyUnit& u : study.units({pricer.paper(), given ? scope.levels : profile_levels, given})) {
       const std::size_t before = pricer.units().size();
       study.price(pricer, u);
       for (std::size_t i = before; i < pricer.units().size(); ++i) pricer.units()[i].trimmed = u.trimmed;

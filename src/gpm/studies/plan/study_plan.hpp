@@ -56,6 +56,15 @@ class StudyRegistry;
 // Every unit of the profile of every study of `registry` (default: the package's), priced.
 std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c);
 std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c, const StudyRegistry& registry);
+// Which units a plan prices besides a profile's: one study (empty: every study) at the levels
+// given (empty: the profile's), every part of it at them as its program's --levels runs them
+// (the levels past the documents a run is about to add: plan --study NAME --levels 10,11).
+struct PlanScope {
+  std::string study;
+  std::vector<int> levels;
+};
+std::vector<PlanUnit> plan_units(Profile profile, const Calibration& c, const StudyRegistry& registry,
+                                 const PlanScope& scope);
 
 
 // The heat tables' whole reading matrix (2 h rules × 2 volumes × 2 time-step rules, every θ
