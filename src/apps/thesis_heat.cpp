@@ -32,6 +32,7 @@
 #include "gpm/geometry/domain.hpp"
 #include "gpm/geometry/influence_radius.hpp"
 #include "gpm/geometry/volumes.hpp"
+#include "gpm/io/progress.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/solvers/heat.hpp"
 #include "gpm/solvers/heat_krylov.hpp"
@@ -330,9 +331,15 @@ class HeatTables {
         hows.push_back(rechecking_ ? stored_propagator(*caches_[todo[u].reading], {wname, fmt(todo[u].theta), fmt(k)})
                                    : how_);
       }
-      const std::vector<HeatResult> rs =
-          naming_unit("Table " + ts_->table + ", " + h_rule_name(h_rule) + ", " + wname + ", level " + fmt(k),
-                      [&] { return run_heat(p_, L, settings, hows, dx); });
+      // A fine level's subspace grows for up to an hour: one line per size tried says how far.
+      const std::string unit = "Table " + ts_->table + ", " + h_rule_name(h_rule) + ", " + wname + ", level " + fmt(k);
+      const Stopwatch clock;
+      KrylovSettings ks;
+      ks.on_size = [&](int m, double change) {
+        std::fprintf(stderr, "[thesis_heat] %s: Krylov subspace m=%d, trajectories moved %.2g of the error (stop at %.0e), %.0f s\n",
+                     unit.c_str(), m, change, ks.tol, clock.seconds());
+      };
+      const std::vector<HeatResult> rs = naming_unit(unit, [&] { return run_heat(p_, L, settings, hows, dx, ks); });
       for (std::size_t i = 0; i < here.size(); ++i) write_row(todo[here[i]], rs[i], L, wname, k, dx, h);
     }
   }

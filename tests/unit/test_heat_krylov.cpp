@@ -153,7 +153,17 @@ TEST_CASE("Krylov propagator: one subspace per operator, products counted", "[he
   const auto V = pde_volumes(PdeVolumes::lattice, p, dx);
   const DiscreteLaplacian L(p, V, weight("piecewise_cubic_polynomial"), h);
   std::vector<HeatSetting> settings = table_settings(h, true);
-  const auto r = propagate_heat(p, L, settings);
+  // Each larger size tried is reported (a run's progress lines): sizes growing, the last one
+  // the subspace taken, whose change is the first within the tolerance.
+  KrylovSettings ks;
+  std::vector<std::pair<int, double>> tried;
+  ks.on_size = [&tried](int m, double change) { tried.emplace_back(m, change); };
+  const auto r = propagate_heat(p, L, settings, ks);
+  REQUIRE(tried.size() >= 2);
+  for (std::size_t i = 1; i < tried.size(); ++i) CHECK(tried[i].first > tried[i - 1].first);
+  for (std::size_t i = 0; i + 1 < tried.size(); ++i) CHECK(tried[i].second > ks.tol);
+  CHECK(tried.back().first == r[0].subspace);
+  CHECK(tried.back().second <= ks.tol);
   // Every series of one operator shares one subspace: one dimension, equal shares of it.
   for (auto& x : r) {
     CHECK(x.subspace == r[0].subspace);

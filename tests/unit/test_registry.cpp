@@ -196,5 +196,5 @@ TEST_CASE("plan: one study priced at levels past its profile (plan --study --lev
   double t10 = 0, t11 = 0;
   for (auto& u : units) (u.level == 10 ? t10 : t11) += u.time_s;
   CHECK(t11 > 4 * t10);
-  CHECK_THROWS_AS(plan_units(Profile::paper, c, study_registry(), {.study = "thesis_table9"}), InputError);
+  CHECK_THROWS_AS(plan_units(Profile::paper, c, study_registry(), {.study = "thesis_table9", .levels = {}}), InputError);
 }

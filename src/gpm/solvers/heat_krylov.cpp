@@ -330,6 +330,7 @@ void propagate_group(const Particles& p, const DiscreteLaplacian& L,
     double worst = 0;
     for (const Series& sr : series) worst = std::max(worst, trajectory_change(sr, lo, hi, ex.out_l2sq, u0));
     lo = std::move(hi);
+    if (ks.on_size) ks.on_size(m, worst);
     if (worst <= ks.tol) break;
   }
   if (B.exhausted()) lo = modes_of(B, B.applied());

@@ -28,6 +28,7 @@
 // Validated against the stepper (tests/unit/test_heat_krylov.cpp: trajectories and errors
 // equal to 1e-9 of the error), which stays the reference: --propagator stepped.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,9 @@ struct KrylovSettings {
   double tol = 1e-10;   // the trajectories' change between two sizes, relative to the error
   int first = 32;       // the first size tried
   int max_dim = 3000;   // NumericalError when no size up to this converges
+  // Told after each larger size is tried (the size and how far the trajectories moved, in
+  // units of the errors): a fine level's subspace takes an hour, and a run should say so.
+  std::function<void(int m, double change)> on_size;
 };
 
 // Every series of `settings` (any θ, time step and volumes; blow-up guards as in solve_heat)

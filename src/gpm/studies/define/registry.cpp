@@ -544,13 +544,18 @@ std::vector<std::string> RegisteredStudy::header() const {
   return h;
 }
 
+const StoreFile* RegisteredStudy::find_store_file_of(const std::string& reading) const {
+  if (!published || !published->identified_slice) return nullptr;
+  const std::string slice = published->identified_slice(PdeReading::named(reading));
+  for (const StoreFile& f : store_files)
+    if (std::find(f.readings.begin(), f.readings.end(), slice) != f.readings.end()) return &f;
+  return nullptr;
+}
+
 const StoreFile& RegisteredStudy::store_file_of(const std::string& reading) const {
-  const PdeReading r = PdeReading::named(reading);
   if (!published || !published->identified_slice)
     throw InputError("study '" + name + "' keeps no set-up readings in the store");
-  const std::string slice = published->identified_slice(r);
-  for (const StoreFile& f : store_files)
-    if (std::find(f.readings.begin(), f.readings.end(), slice) != f.readings.end()) return f;
+  if (const StoreFile* f = find_store_file_of(reading)) return *f;
   throw InputError("study '" + name + "' stores no file of the reading '" + reading + "'");
 }
 

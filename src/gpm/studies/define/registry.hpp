@@ -168,6 +168,9 @@ struct RegisteredStudy {
   // h15_cell_exact, …; Table 4.4 ignores the time step); InputError if the reading is unknown
   // or the study stores none of it.
   const StoreFile& store_file_of(const std::string& reading) const;
+  // The same lookup without the refusal: none where the study keeps no set-up readings or no
+  // file of this one (the judges ask for readings a study may not store).
+  const StoreFile* find_store_file_of(const std::string& reading) const;
 };
 
 class StudyRegistry {

@@ -221,12 +221,12 @@ void poisson_volume_question(const StoreSnapshot& store, const std::string& pub_
 // Imoto Table 1, Lap1/Lap2 at m = 5.
 
 // The stored Table 1 files of seed 1, seeds 2 and 3 and the plain grid that exist, with the
-// name of each realization.
-std::vector<std::pair<std::string, TsvTable>> imoto_realizations(const StoreSnapshot& store) {
-  std::vector<std::pair<std::string, TsvTable>> files;
+// name of each realization (the snapshot's tables, not copies).
+std::vector<std::pair<std::string, const TsvTable*>> imoto_realizations(const StoreSnapshot& store) {
+  std::vector<std::pair<std::string, const TsvTable*>> files;
   for (const auto& [slice, name] : std::vector<std::pair<std::string, std::string>>{
            {"", "seed1"}, {"seed2", "seed2"}, {"seed3", "seed3"}, {"plain", "plain"}})
-    if (const TsvTable* t = stored_if(store, stored_file("imoto_fig5_table1", slice))) files.emplace_back(name, *t);
+    if (const TsvTable* t = stored_if(store, stored_file("imoto_fig5_table1", slice))) files.emplace_back(name, t);
   return files;
 }
 
@@ -239,7 +239,8 @@ void imoto_smoothing_question(const StoreSnapshot& store, const std::string& pub
     // Per level: each realization's error, and h, N, dx (the last file's row of the level).
     std::map<std::pair<int, std::string>, double> e;
     std::map<int, double> h, N, dx;
-    for (const auto& [v, t] : files) {
+    for (const auto& [v, file] : files) {
+      const TsvTable& t = *file;
       const int cw = t.require_column("weight"), cm = t.require_column("m"), cl = t.require_column("level");
       for (std::size_t i = 0; i < t.rows.size(); ++i) {
         if (t.text(i, cw) != w || num(t.text(i, cm)) != 5 || num(t.text(i, cl)) < 9) continue;
@@ -313,7 +314,8 @@ void imoto_where_question(const StoreSnapshot& store, const std::string& diagnos
       }
       levels.insert(static_cast<int>(num(t.text(i, cl))));
     }
-    for (const auto& [v, s] : files) {
+    for (const auto& [v, file] : files) {
+      const TsvTable& s = *file;
       const int sw = s.require_column("weight"), sm = s.require_column("m"), sl = s.require_column("level");
       for (std::size_t i = 0; i < s.rows.size(); ++i)
         if (s.text(i, sw) == w && num(s.text(i, sm)) == 5) stored[{v, s.text(i, sl)}] = num(s.text(i, "rel_error"));

@@ -403,10 +403,7 @@ std::string stored_file(const std::string& study, const std::string& slice, cons
 }
 
 std::optional<std::string> reading_file(const RegisteredStudy& study, const std::string& reading) {
-  if (!study.published || !study.published->identified_slice) return std::nullopt;
-  const std::string slice = study.published->identified_slice(PdeReading::named(reading));
-  for (const StoreFile& f : study.store_files)
-    if (std::find(f.readings.begin(), f.readings.end(), slice) != f.readings.end()) return f.name + ".tsv";
+  if (const StoreFile* f = study.find_store_file_of(reading)) return f->name + ".tsv";
   return std::nullopt;
 }
 
