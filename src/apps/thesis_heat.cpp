@@ -331,11 +331,13 @@ class HeatTables {
         hows.push_back(rechecking_ ? stored_propagator(*caches_[todo[u].reading], {wname, fmt(todo[u].theta), fmt(k)})
                                    : how_);
       }
-      // A fine level's subspace grows for up to an hour: one line per size tried says how far.
+      // A fine level's subspace grows for up to an hour: one line per size tried says how far
+      // (none in a unit's first seconds, so the coarse levels' logs stay short).
       const std::string unit = "Table " + ts_->table + ", " + h_rule_name(h_rule) + ", " + wname + ", level " + fmt(k);
       const Stopwatch clock;
       KrylovSettings ks;
       ks.on_size = [&](int m, double change) {
+        if (clock.seconds() < 5) return;
         std::fprintf(stderr, "[thesis_heat] %s: Krylov subspace m=%d, trajectories moved %.2g of the error (stop at %.0e), %.0f s\n",
                      unit.c_str(), m, change, ks.tol, clock.seconds());
       };
