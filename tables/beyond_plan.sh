@@ -14,6 +14,8 @@ set -euo pipefail
 build=$1 store=$2 calibration=$3 out=$4
 here=$(dirname "$0")
 [ -f "$calibration" ] || { echo "beyond_plan.sh: no calibration file '$calibration' (the make run's plan)" >&2; exit 2; }
+# shellcheck source=tables/census_lib.sh
+. "$here/census_lib.sh"
 listing=$("$build/gpm" study --store-rows)
 work=$(mktemp -d)
 trap 'rm -rf "$work" "$out.tmp"' EXIT
@@ -39,13 +41,12 @@ while IFS=$'\t' read -r file level plan_study variant census_match why; do
   if [ ! -f "$f" ]; then
     state="not in the store"; missing=${priced%%$'\t'*}
   else
-    # shellcheck disable=SC2086  # the options are words
-    log=$("$build/$program" $args --levels "$level" --profile paper --out "$f" --census 2>&1) || true
-    if grep -q '^\[store\] census ' <<<"$log"; then
-      missing=$( (grep '^\[store\]   missing: ' <<<"$log" || true) | awk -v p="$census_match" '$0 ~ p { n++ } END { print n + 0 }')
+    census_read "$build" "$program" "$args --levels $level" "$f"
+    if [ -n "$census_line" ]; then
+      missing=$(awk -v p="$census_match" 'NF && $0 ~ p { n++ } END { print n + 0 }' <<<"$census_missing")
       state=read
     else
-      missing=-; state=$(grep -m1 . <<<"$log" | tr '\t' ' ')
+      missing=-; state=$census_problem
     fi
   fi
   printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$file" "$level" "$plan_study" "$priced" "$missing" "$state" "$why" >> "$rows"
@@ -55,7 +56,7 @@ done < "$here/beyond.tsv"
   echo "# list = tables/beyond.tsv (the units past the documents issue 40 asks for)"
   echo "# store = $store"
   echo "# calibration = $calibration (the plan's calibration of this run)"
-  echo "# machine = $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores, $(awk '/MemTotal/ { printf "%.1f GiB", $2 / 1048576 }' /proc/meminfo) (the plan's calibration ran here)"
+  echo "# machine = $(machine_line), $(awk '/MemTotal/ { printf "%.1f GiB", $2 / 1048576 }' /proc/meminfo) (the plan's calibration ran here)"
   echo "# calibration_load = $(sed -n 's/^# calibration_load_before = //p' "$calibration" | head -1) (load average when the plan calibrated: above the cores, the predictions are slower than an idle run)"
   echo "# plan_h = predicted hours for the row's units on this machine, idle, every thread (Laplacian set-up included; the theta of one weight share one Krylov subspace); peak_gib = the largest unit's predicted peak memory"
   echo "# stored = units of the row the store holds (its census at the level); missing = units the census names as missing"

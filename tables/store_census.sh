@@ -13,6 +13,8 @@ export LC_ALL=C  # numbers are read and printed with '.' whatever the user's loc
 set -euo pipefail
 [ $# -eq 4 ] || { echo "usage: store_census.sh BUILD_DIR STORE_DIR PLAN_SUMMARY OUT" >&2; exit 2; }
 build=$1 store=$2 plan=$3 out=$4
+# shellcheck source=tables/census_lib.sh
+. "$(dirname "$0")/census_lib.sh"
 listing=$("$build/gpm" study --store-rows)
 rows=$(mktemp)
 trap 'rm -f "$rows" "$out.tmp"' EXIT
@@ -22,15 +24,13 @@ while IFS=$'\t' read -r study file program args census _coarse _slice; do
   [ "$census" = - ] && census=""
   f=$store/$file.tsv
   if [ ! -f "$f" ]; then printf '%s\t%s\t0\tall\t-\tnot in the store\n' "$study" "$file" >> "$rows"; continue; fi
-  # shellcheck disable=SC2086  # the options are words
-  log=$("$build/$program" $args $census --profile paper --out "$f" --census 2>&1) || true
-  line=$(grep '^\[store\] census ' <<<"$log" | head -1)
-  if [ -z "$line" ]; then
-    printf '%s\t%s\t-\t-\t-\t%s\n' "$study" "$file" "$(grep -m1 . <<<"$log" | tr '\t' ' ')" >> "$rows"
+  census_read "$build" "$program" "$args $census" "$f"
+  if [ -z "$census_line" ]; then
+    printf '%s\t%s\t-\t-\t-\t%s\n' "$study" "$file" "$census_problem" >> "$rows"
     continue
   fi
-  n=$(sed 's/.*: \([0-9]*\) rows, \([0-9]*\) units.*/\1 \2/' <<<"$line")
-  levels=$( (grep '^\[store\]   missing: ' <<<"$log" || true) | sed -n 's/.*level \([0-9]*\).*/\1/p' | sort -n |
+  n=$(sed 's/.*: \([0-9]*\) rows, \([0-9]*\) units.*/\1 \2/' <<<"$census_line")
+  levels=$(sed -n 's/.*level \([0-9]*\).*/\1/p' <<<"$census_missing" | sort -n |
            uniq -c | awk '{ printf "%s%s:%s", (NR > 1 ? "," : ""), $2, $1 }')
   printf '%s\t%s\t%s\t%s\t%s\tread\n' "$study" "$file" "${n% *}" "${n#* }" "${levels:--}" >> "$rows"
 done <<<"$listing"
@@ -39,7 +39,7 @@ done <<<"$listing"
   echo "# store = $store"
   echo "# plan = $plan"
   echo "# census = each registry store file read by its program with --census (the units of its census levels it lacks)"
-  echo "# machine = $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores (the plan's calibration ran here)"
+  echo "# machine = $(machine_line) (the plan's calibration ran here)"
   echo "# calibration_load = $(sed -n 's/^# calibration_load_before = //p' "${plan/_summary.tsv/.tsv}" "$plan" 2>/dev/null | head -1) (load average when the plan calibrated: above the 2 cores, the predictions are slower than an idle run)"
   echo "# git_revision = $(git describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)"
   echo "# written_utc = $(date -u +%Y-%m-%dT%H:%M:%SZ)"

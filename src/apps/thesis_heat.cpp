@@ -336,10 +336,11 @@ class HeatTables {
       const std::string unit = "Table " + ts_->table + ", " + h_rule_name(h_rule) + ", " + wname + ", level " + fmt(k);
       const Stopwatch clock;
       KrylovSettings ks;
-      ks.on_size = [&](int m, double change) {
+      ks.on_size = [&](const KrylovTry& t) {
         if (clock.seconds() < 5) return;
-        std::fprintf(stderr, "[thesis_heat] %s: Krylov subspace m=%d, trajectories moved %.2g of the error (stop at %.0e), %.0f s\n",
-                     unit.c_str(), m, change, ks.tol, clock.seconds());
+        std::fprintf(stderr, "[thesis_heat] %s: Krylov subspace m=%d, trajectories moved %.2g of the error (stop at %.0e), %.2g of its size%s, %.0f s\n",
+                     unit.c_str(), t.m, t.change, ks.tol, t.of_data, t.rounding ? " (stalled: rounding, taken)" : "",
+                     clock.seconds());
       };
       const std::vector<HeatResult> rs = naming_unit(unit, [&] { return run_heat(p_, L, settings, hows, dx, ks); });
       for (std::size_t i = 0; i < here.size(); ++i) write_row(todo[here[i]], rs[i], L, wname, k, dx, h);

@@ -156,14 +156,16 @@ TEST_CASE("Krylov propagator: one subspace per operator, products counted", "[he
   // Each larger size tried is reported (a run's progress lines): sizes growing, the last one
   // the subspace taken, whose change is the first within the tolerance.
   KrylovSettings ks;
-  std::vector<std::pair<int, double>> tried;
-  ks.on_size = [&tried](int m, double change) { tried.emplace_back(m, change); };
+  std::vector<KrylovTry> tried;
+  ks.on_size = [&tried](const KrylovTry& t) { tried.push_back(t); };
   const auto r = propagate_heat(p, L, settings, ks);
   REQUIRE(tried.size() >= 2);
-  for (std::size_t i = 1; i < tried.size(); ++i) CHECK(tried[i].first > tried[i - 1].first);
-  for (std::size_t i = 0; i + 1 < tried.size(); ++i) CHECK(tried[i].second > ks.tol);
-  CHECK(tried.back().first == r[0].subspace);
-  CHECK(tried.back().second <= ks.tol);
+  for (std::size_t i = 1; i < tried.size(); ++i) CHECK(tried[i].m > tried[i - 1].m);
+  for (std::size_t i = 0; i + 1 < tried.size(); ++i) CHECK(tried[i].change > ks.tol);
+  CHECK(tried.back().m == r[0].subspace);
+  CHECK(tried.back().change <= ks.tol);
+  // Here the tolerance is reached while the change still falls fast: never a rounding stop.
+  for (const KrylovTry& t : tried) CHECK_FALSE(t.rounding);
   // Every series of one operator shares one subspace: one dimension, equal shares of it.
   for (auto& x : r) {
     CHECK(x.subspace == r[0].subspace);
@@ -187,4 +189,41 @@ TEST_CASE("Krylov propagator: one subspace per operator, products counted", "[he
   }
   CHECK(parse_heat_propagator("auto") == HeatPropagator::automatic);
   CHECK_THROWS_AS(parse_heat_propagator("rk4"), InputError);
+}
+
+TEST_CASE("Krylov propagator: a tolerance below rounding stops where the change stalls", "[heat][krylov]") {
+  const double dx = std::ldexp(1.0, -5), h = pde_h(HRule::h15, dx);
+  const Particles p = jittered_grid(dx, 1);
+  const auto V = pde_volumes(PdeVolumes::lattice, p, dx);
+  const DiscreteLaplacian L(p, V, weight("piecewise_quintic_polynomial"), h);
+  // Table 4.5's series (Δt = 0.0025h²) for each θ, as at the level where this stop was needed.
+  std::vector<HeatSetting> settings;
+  for (double th : {0.0, 0.5, 1.0}) {
+    HeatSetting s;
+    s.theta = th, s.dt_nominal = 0.0025 * h * h, s.fit_T = false;
+    settings.push_back(s);
+  }
+  const auto reference = propagate_heat(p, L, settings);
+  // 1e-30 of the error is far below what doubles resolve: the change stalls at rounding, and
+  // the subspace where it stalls gives the errors of the default tolerance.
+  KrylovSettings ks;
+  ks.tol = 1e-30;
+  std::vector<KrylovTry> tried;
+  ks.on_size = [&tried](const KrylovTry& t) { tried.push_back(t); };
+  const auto r = propagate_heat(p, L, settings, ks);
+  REQUIRE(tried.size() >= 2);
+  CHECK(tried.back().rounding);
+  CHECK(tried.back().of_data <= ks.rounding);
+  for (std::size_t i = 0; i + 1 < tried.size(); ++i) CHECK_FALSE(tried[i].rounding);
+  CHECK(r[0].subspace >= reference[0].subspace);
+  for (std::size_t i = 0; i < settings.size(); ++i) {
+    INFO("series " << i);
+    CHECK(r[i].blew_up == reference[i].blew_up);
+    if (!reference[i].blew_up) CHECK(r[i].rel_error == Approx(reference[i].rel_error).epsilon(1e-8));
+  }
+  // Without the rounding stop the same tolerance is never met: a numerical failure, not a hang.
+  ks.rounding = 0, ks.max_dim = 2 * r[0].subspace, ks.on_size = nullptr;
+  CHECK_THROWS_AS(propagate_heat(p, L, settings, ks), NumericalError);
+  ks.stall = 1;
+  CHECK_THROWS_AS(propagate_heat(p, L, settings, ks), InputError);
 }

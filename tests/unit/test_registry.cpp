@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "gpm/error.hpp"
@@ -150,6 +151,25 @@ TEST_CASE("registry: the heat tables' units, every one run, and the plan's price
   for (auto& u : p.units()) setups += u.variant.rfind("setup/", 0) == 0;
   CHECK(setups == t.paper.size() * 2 * pde_weights().size());
   CHECK(p.units().size() == setups + units.size());
+  // A series run in the Krylov subspace holds it: its peak is its set-up's plus 2.5 vectors of
+  // the unknowns per dimension (basis grown by half, and the ℓ∞ map), a stepped one's is not.
+  std::map<std::string, const PlanUnit*> setup_of;
+  for (auto& u : p.units())
+    if (u.variant.rfind("setup/", 0) == 0) setup_of[u.study + "|" + fmt(u.level) + "|" + u.variant.substr(6)] = &u;
+  std::size_t propagated = 0;
+  for (auto& u : p.units()) {
+    if (u.variant.rfind("setup/", 0) == 0) continue;
+    const PlanUnit& a = *setup_of.at(u.study + "|" + fmt(u.level) + "|" + u.variant.substr(0, u.variant.find('/')));
+    INFO(u.study << " " << u.variant << " at 2^-" << u.level);
+    if (u.basis.find("Krylov") == std::string::npos) {
+      CHECK(u.mem_mib == a.mem_mib);
+      continue;
+    }
+    ++propagated;
+    CHECK(u.mem_mib == Approx(a.mem_mib + p.heat_krylov_mib(u)));
+    CHECK(p.heat_krylov_mib(u) == Approx(2.5 * p.heat_krylov_dim(u) * u.targets * 8 / (1024.0 * 1024.0)));
+  }
+  CHECK(propagated > 0);
 }
 
 TEST_CASE("registry: a trimmed unit is priced and marked in the plan, never run", "[unit][registry]") {

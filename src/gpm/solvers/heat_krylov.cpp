@@ -210,13 +210,18 @@ double decay(const Series& sr, long k) {
 }
 
 // How far the series' coefficient trajectories in the basis move from modes `lo` to `hi`,
-// relative to its largest ℓ² error: max_k ‖W_hi ξ_hi^k − W_lo ξ_lo^k‖ / max_k ‖e^k ξ⁰ − ξ^k‖
-// (over the steps both run without a blow-up; a different blow-up step is a change of 1).
-double trajectory_change(const Series& sr, const Modes& lo, const Modes& hi, double out_l2sq,
+// max_k ‖W_hi ξ_hi^k − W_lo ξ_lo^k‖, relative to its largest ℓ² error max_k ‖e^k ξ⁰ − ξ^k‖
+// (`rel`) and to its largest value max(‖S U⁰‖, max_k ‖ξ^k‖) (`of_data`: the scale of its
+// rounding), over the steps both run without a blow-up; a different blow-up step is a change
+// of 1.
+struct Change {
+  double rel = 0, of_data = 0;
+};
+Change trajectory_change(const Series& sr, const Modes& lo, const Modes& hi, double out_l2sq,
                          double u0) {
   std::vector<Mat> zlo;
   const long blo = run_modes(sr, lo, out_l2sq, u0, [&](long, const auto& X) { zlo.push_back(lo.W * X); });
-  double change = 0, err = 0;
+  double change = 0, err = 0, size = u0;
   std::size_t chunk = 0;
   const long bhi = run_modes(sr, hi, out_l2sq, u0, [&](long k0, const auto& X) {
     if (chunk >= zlo.size()) return;
@@ -227,11 +232,11 @@ double trajectory_change(const Series& sr, const Modes& lo, const Modes& hi, dou
       const double d2 = (Z.col(c).head(lo.m) - Zl.col(c)).squaredNorm() + Z.col(c).tail(hi.m - lo.m).squaredNorm();
       change = std::max(change, std::sqrt(d2));
       err = std::max(err, (decay(sr, k0 + c) * hi.xi0 - X.col(c)).norm());
+      size = std::max(size, X.col(c).norm());
     }
   });
-  if (blo != bhi) return 1;
-  if (!std::isfinite(change) || !std::isfinite(err)) return 1;
-  return err > 0 ? change / err : change;
+  if (blo != bhi || !std::isfinite(change) || !std::isfinite(err) || !std::isfinite(size)) return {1, 1};
+  return {err > 0 ? change / err : change, change / size};
 }
 
 // max_k ‖V z_k‖_∞ over the columns of Z, exactly, evaluating only the columns whose bound
@@ -318,6 +323,7 @@ void propagate_group(const Particles& p, const DiscreteLaplacian& L,
   int m = std::min(ks.first, limit);
   B.grow_to(m);
   Modes lo = modes_of(B, std::min(m, B.applied()));
+  std::vector<double> last(series.size(), std::numeric_limits<double>::infinity());
   for (;;) {
     if (B.exhausted()) break;
     if (m >= limit)
@@ -327,17 +333,31 @@ void propagate_group(const Particles& p, const DiscreteLaplacian& L,
     m += m % 2;
     B.grow_to(m);
     Modes hi = modes_of(B, std::min(m, B.applied()));
-    double worst = 0;
-    for (const Series& sr : series) worst = std::max(worst, trajectory_change(sr, lo, hi, ex.out_l2sq, u0));
+    // Each series is settled within the tolerance or at its rounding (header); the size is
+    // taken when every series is.
+    KrylovTry t;
+    t.m = m;
+    bool settled = true;
+    for (std::size_t i = 0; i < series.size(); ++i) {
+      const Change c = trajectory_change(series[i], lo, hi, ex.out_l2sq, u0);
+      t.change = std::max(t.change, c.rel), t.of_data = std::max(t.of_data, c.of_data);
+      const bool stalled = c.of_data <= ks.rounding && c.of_data * ks.stall > last[i];
+      if (c.rel > ks.tol) t.rounding = true, settled = settled && stalled;
+      last[i] = c.of_data;
+    }
+    t.rounding = t.rounding && settled;
     lo = std::move(hi);
-    if (ks.on_size) ks.on_size(m, worst);
-    if (worst <= ks.tol) break;
+    if (ks.on_size) ks.on_size(t);
+    if (settled) break;
   }
   if (B.exhausted()) lo = modes_of(B, B.applied());
   const Modes& md = lo;
   const double build_s = seconds_since(t0);
   // The ℓ∞ errors' map from eigen-coordinates to the unknowns: S⁻¹ Q W, and its columns' maxima.
-  const Mat V = (B.Q().leftCols(md.m) * md.W).array().colwise() / s.array();
+  // Formed in place (no temporary of the product): at 2^-10 each N×m matrix is gigabytes.
+  Mat V(B.Q().rows(), md.m);
+  V.noalias() = B.Q().leftCols(md.m) * md.W;
+  V.array().colwise() /= s.array();
   const Vec colmax = V.cwiseAbs().colwise().maxCoeff().transpose();
   for (std::size_t i = 0; i < series.size(); ++i) {
     const auto t1 = std::chrono::steady_clock::now();
@@ -382,8 +402,8 @@ void propagate_group(const Particles& p, const DiscreteLaplacian& L,
 std::vector<HeatResult> propagate_heat(const Particles& p, const DiscreteLaplacian& L,
                                        const std::vector<HeatSetting>& settings,
                                        const KrylovSettings& ks) {
-  if (!(ks.tol > 0) || ks.first < 2 || ks.max_dim < ks.first)
-    throw InputError("Krylov propagator: tol must be positive and 2 <= first <= max_dim");
+  if (!(ks.tol > 0) || !(ks.rounding >= 0) || !(ks.stall > 1) || ks.first < 2 || ks.max_dim < ks.first)
+    throw InputError("Krylov propagator: tol must be positive, rounding non-negative, stall above 1 and 2 <= first <= max_dim");
   // One subspace per operator: the series grouped by their volumes.
   std::map<const DiscreteLaplacian::Volumes*, std::vector<std::size_t>> groups;
   for (std::size_t i = 0; i < settings.size(); ++i) groups[settings[i].volumes].push_back(i);

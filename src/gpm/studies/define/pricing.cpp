@@ -189,6 +189,10 @@ double UnitPricer::heat_cg_its(const std::string& table, HRule rule,
 
 double UnitPricer::heat_krylov_dim(const PlanUnit& u) const { return heat_krylov_products(u.dx, u.h); }
 
+double UnitPricer::heat_krylov_mib(const PlanUnit& u) const {
+  return 2.5 * heat_krylov_dim(u) * u.targets * 8.0 / kMiB;
+}
+
 double UnitPricer::heat_krylov_s(const PlanUnit& u, bool assembled) const {
   const double m = heat_krylov_dim(u);
   return m * product_s(u, assembled) +

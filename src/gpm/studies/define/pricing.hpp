@@ -91,6 +91,10 @@ class UnitPricer {
   // re-orthogonalization, 2·N_Ω·m² basis entries streamed at the assembled product's bytes
   // per second (8 bytes each against kAssembledBytesPerNonzero per non-zero).
   double heat_krylov_dim(const PlanUnit& u) const;
+  // The subspace's memory on top of the Laplacian's: its basis (a vector of the unknowns per
+  // dimension, its capacity grown by half, old and new copies side by side while it grows) and
+  // the ℓ∞ map S⁻¹QW formed beside it: up to 2.5 m vectors.
+  double heat_krylov_mib(const PlanUnit& u) const;
   double heat_krylov_s(const PlanUnit& u, bool assembled) const;
   // Whether thesis_heat's default propagator (auto) sends a series of Table `table` and θ at
   // the unit's h to the subspace: run_heat's own rule (heat_stepped_products against

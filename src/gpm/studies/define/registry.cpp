@@ -326,11 +326,11 @@ struct HeatBeyond {
 };
 HeatBeyond heat_beyond(const std::string& table, const std::string& reading) {
   if (reading != "h15_cell_exact") return {};
-  // Table 4.5 one level past its 2^-8, Table 4.7 one past its 2^-9.  Those not yet stored
-  // whole (Table 4.5's 2^-10, Table 4.6's 2^-10, the third realization of Table 4.7's) join
-  // as they land: tables/beyond.tsv lists every unit still owed, and the report prices it.
-  if (table == "4.5") return {{9}, {"2", "3"}};
-  if (table == "4.7") return {{10}, {"2"}};
+  // Table 4.5 one and two levels past its 2^-8, Table 4.7 one past its 2^-9 with three
+  // realizations.  Those not yet stored whole (Table 4.6's 2^-10) join as they land:
+  // tables/beyond.tsv lists every unit still owed, and the report prices it.
+  if (table == "4.5") return {{9, 10}, {"2", "3"}};
+  if (table == "4.7") return {{10}, {"2", "3"}};
   return {};
 }
 
@@ -433,6 +433,7 @@ RegisteredStudy heat(const HeatTable& hp) {
       const double n = static_cast<double>(hp.thetas.size());
       u.products = p.heat_krylov_dim(u) / n;
       u.time_s = p.heat_krylov_s(u, as) / n;
+      u.mem_mib = a.mem_mib + p.heat_krylov_mib(u);
       u.basis = "K=" + fmt(K) + " steps, Krylov m=" + fmt(std::round(p.heat_krylov_dim(u))) + " shared by " +
                 fmt(hp.thetas.size()) + " series";
     } else {
