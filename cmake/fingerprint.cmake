@@ -7,10 +7,11 @@
 #   in   the numerics (geometry, weights, kernel, operators, solvers, theory), the data
 #        format (io/tsv: how a number is written) and the studies' definitions
 #        (studies/define: catalog, set-ups, each unit's level, h, volumes and time step);
-#   out  the rest of io (options, progress, provenance, text), error messages, and the
+#   out  the rest of io (options, progress, provenance, text), error messages, the
 #        rooms that run units and keep the store (studies/run), price profiles
-#        (studies/plan) and judge stored rates (studies/judge): they compute no number a
-#        row stores.
+#        (studies/plan) and judge stored rates (studies/judge), and the store's census
+#        (studies/define/census: which readings, seeds and levels the store must hold):
+#        they compute no number a row stores.
 # A core source that no rule names stops the build: a new folder is placed on purpose.
 # A data row carries the fingerprint of the program that computed it (src/gpm/studies/run/store.hpp):
 # a row is reused as current only under the same fingerprint, otherwise after a recorded
@@ -24,7 +25,9 @@ list(SORT core)
 set(core_text "")
 foreach(f IN LISTS core)
   file(RELATIVE_PATH r ${SRC}/src/gpm ${f})
-  if(r MATCHES "^(geometry|weights|kernel|operators|solvers|theory)/" OR r MATCHES "^io/tsv\\.(c|h)pp$"
+  if(r MATCHES "^studies/define/census\\.(c|h)pp$")
+    continue()
+  elseif(r MATCHES "^(geometry|weights|kernel|operators|solvers|theory)/" OR r MATCHES "^io/tsv\\.(c|h)pp$"
      OR r MATCHES "^studies/define/")
     file(SHA256 ${f} h)
     string(APPEND core_text "src/gpm/${r} ${h}\n")

@@ -37,7 +37,7 @@ const Subcommand kSubcommands[] = {
     {"store-add-columns", "add a column with one value to stored rows made before it existed",
      cmd_store_add_columns},
     {"store-rates", "the documents' rates judged against the result store: verdicts, boards", cmd_store_rates},
-    {"rate-levels", "the heat tables' rates at every pair of stored levels: toward the theory?", cmd_rate_levels},
+    {"rate-levels", "the heat and Poisson rates at every pair of stored levels: toward the theory?", cmd_rate_levels},
     {"checked-reasons", "the reasons for differing rates, each checked against the result store",
      cmd_checked_reasons},
     {"verdicts", "page one of the report: a verdict per figure and table of the documents", cmd_verdicts},

@@ -238,15 +238,17 @@ TsvTable decisions_table(const StoreSnapshot& store, const std::string& publishe
   return table;
 }
 
-// gpm rate-levels: the heat tables' rates at every consecutive pair of stored levels, with
-// their seed bands, beside the published and the theory's rates, and a finding per series
-// (rate_levels.hpp): whether the rates approach Theorem 3.7's as the thesis conjectured.
+// gpm rate-levels: the heat tables' and Table 4.4's rates at every consecutive pair of stored
+// levels, with their seed bands, beside the published and the theory's rates, and a finding
+// per series (rate_levels.hpp): whether the rates approach the theory's as the thesis
+// conjectured.
 // (gpm store-rates --rate-levels writes the same in its judging pass.)
 int cmd_rate_levels(int argc, char** argv) {
   Args a("gpm rate-levels",
-         "The heat tables' two-level rates at every consecutive pair of stored levels (printed and\n"
-         "identified reading), with seed bands, beside the published and the theory's rates; and\n"
-         "per series whether the rates approach the theory's (src/gpm/studies/judge/rate_levels.hpp).");
+         "The two-level rates at every consecutive pair of stored levels of the heat tables (printed\n"
+         "and identified reading) and of Table 4.4 (both h rules, V_i = dx^2), with seed bands, beside\n"
+         "the published and the theory's rates; and per series whether the rates approach the\n"
+         "theory's (src/gpm/studies/judge/rate_levels.hpp).");
   a.opt("store", "results/paper", "the result store")
       .opt("published", "tables/published", "the published values (thesis_table4_N_long.tsv)")
       .output("out", "", "the rates per pair of levels (required)")

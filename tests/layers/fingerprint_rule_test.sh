@@ -1,7 +1,8 @@
 #!/bin/bash
 # The code fingerprint by rule (cmake/fingerprint.cmake), on a copy of the sources: a change of
 # h in the registry (studies/define) moves the fingerprint of the programs that compute with
-# it; an edit of the judging room (studies/judge) moves none; a core source in a folder no
+# it; an edit of the judging room (studies/judge) or of the store's census
+# (studies/define/census) moves none; a core source in a folder no
 # rule names stops the script, naming it.
 # usage: fingerprint_rule_test.sh SOURCE_DIR
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
@@ -30,9 +31,13 @@ cp "$src/src/gpm/studies/define/registry.cpp" "$reg"
 echo "// an edit of the judging room" >> "$t/tree/src/gpm/studies/judge/verdicts.cpp"
 same=$(fp "$t/c.cpp")
 [ "$same" = "$before" ] || { echo "FAIL: an edit of studies/judge moved a fingerprint ($before -> $same)"; fail=1; }
+# A census edit (a level the store must hold): no stored number depends on it.
+echo "// a level added to the census" >> "$t/tree/src/gpm/studies/define/census.cpp"
+same=$(fp "$t/e.cpp")
+[ "$same" = "$before" ] || { echo "FAIL: an edit of studies/define/census moved a fingerprint ($before -> $same)"; fail=1; }
 # A folder no rule names.
 mkdir -p "$t/tree/src/gpm/newroom" && echo "int x;" > "$t/tree/src/gpm/newroom/x.cpp"
 if fp "$t/d.cpp" >/dev/null; then echo "FAIL: a core source in an unnamed folder was accepted"; fail=1
 else grep -q "src/gpm/newroom/x.cpp" "$t/err" || { echo "FAIL: the refusal does not name the file:"; cat "$t/err"; fail=1; }; fi
-[ $fail -eq 0 ] && echo "fingerprint rule: h in define moves it, judge does not, an unnamed folder is refused"
+[ $fail -eq 0 ] && echo "fingerprint rule: h in define moves it, judge and the census do not, an unnamed folder is refused"
 exit $fail

@@ -1,10 +1,14 @@
 // The finding on the thesis' conjecture (rate_levels.hpp): rates against level judged as
 // approaching the theory's, staying away from it, or not decided, on sequences made for each
-// branch of the rule.
+// branch of the rule; and the view of Table 4.4 read from a fixture store.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <fstream>
 
+#include "gpm/studies/define/heat_tables.hpp"
+#include "gpm/studies/define/registry.hpp"
 #include "gpm/studies/judge/rate_levels.hpp"
+#include "../temp_dir.hpp"
 
 using namespace gpm;
 
@@ -32,4 +36,78 @@ TEST_CASE("rate levels: the trend rule, branch by branch", "[unit][rate_levels]"
   CHECK(judge_trend({2.0}, 2, true, tol).trend == Trend::not_decided);
   CHECK(judge_trend({2.0, std::nan("")}, 2, true, tol).trend == Trend::not_decided);
   CHECK(trend_name(Trend::stays_away) == "stays away");
+}
+
+namespace {
+
+// A store file of (key columns, level, h, rel_error) rows: per series the errors at levels
+// from `first` on with h halving per level, so the rate of the pair (k, k+1) is rates[k - first].
+void write_series(std::ofstream& f, const std::string& key, int first, const std::vector<double>& rates) {
+  double h = 1, e = 1;
+  f << key << "\t" << first << "\t" << h << "\t" << e << "\n";
+  for (std::size_t i = 0; i < rates.size(); ++i) {
+    h /= 2, e /= std::exp2(rates[i]);
+    f << key << "\t" << first + static_cast<int>(i) + 1 << "\t" << h << "\t" << e << "\n";
+  }
+}
+
+}  // namespace
+
+TEST_CASE("rate levels: Table 4.4 on a fixture store, one level past the thesis", "[unit][rate_levels]") {
+  TempDir tmp("gpm_rate_levels_");
+  const StudyRegistry& reg = study_registry();
+  // The heat tables' files the view reads, empty: only Table 4.4 is judged here.
+  for (const HeatTable& hp : heat_tables())
+    for (const char* reading : {"h10", "h15_cell_exact"})
+      std::ofstream(tmp.dir / (reg.study(heat_study_name(hp)).store_file_of(reading).name + ".tsv"))
+          << "weight\ttheta\tlevel\th\trel_error\n";
+  const RegisteredStudy& poisson = reg.study("thesis_table4_4");
+  const std::string columns = "h_rule\tweight\tlevel\th\trel_error\n";
+  {
+    // Seed 1 (V_i = dx^2): levels 5-10, the thesis' pair 8/9, one pair beyond it.
+    std::ofstream f(tmp.dir / (poisson.store_file_of("h15_cell").name + ".tsv"));
+    f << columns;
+    write_series(f, "h10\tquartic_polynomial", 5, {3.0, 2.2, 2.1, 2.05, 2.01});        // approaches
+    write_series(f, "h15\tpiecewise_quintic_polynomial", 5, {9.0, 6.9, 5.3, 5.4, 5.4});  // stays away
+    write_series(f, "h15\tquartic_polynomial", 5, {7.0, 5.0, 3.0, 2.6});                // levels 5-9 only
+  }
+  {
+    // A second realization of the quartic under h10 at the thesis' pair and the one beyond.
+    std::ofstream f(tmp.dir / "thesis_table4_4_cellvol_seed2.tsv");
+    f << columns;
+    write_series(f, "h10\tquartic_polynomial", 8, {2.3, 1.9});
+  }
+  const RateLevels r = rate_levels(StoreSnapshot(tmp.dir.string()), std::string(GPM_SOURCE_DIR) + "/tables/published");
+  auto finding = [&](const std::string& reading, const std::string& w) {
+    for (std::size_t i = 0; i < r.findings.rows.size(); ++i)
+      if (r.findings.text(i, "table") == "4.4" && r.findings.text(i, "reading") == reading &&
+          r.findings.text(i, "weight") == w)
+        return r.findings.text(i, "finding");
+    return std::string("absent");
+  };
+  CHECK(finding("h10_cell", "quartic_polynomial") == "approaches");
+  CHECK(finding("h15_cell", "piecewise_quintic_polynomial") == "stays away");
+  CHECK(finding("h15_cell", "quartic_polynomial") == "not decided");
+  CHECK(finding("h10_cell", "piecewise_cubic_polynomial") == "absent");  // no stored series
+  // The thesis' pair carries the published rate (1.95) and the band of both realizations; the
+  // pair past it is marked beyond the documents.
+  int seen = 0;
+  for (std::size_t i = 0; i < r.rates.rows.size(); ++i) {
+    if (r.rates.text(i, "reading") != "h10_cell") continue;
+    const std::string pair = r.rates.text(i, "pair");
+    if (pair == "2^-8/2^-9") {
+      ++seen;
+      CHECK(r.rates.number(i, r.rates.require_column("rate")) == Approx(2.05));
+      CHECK(r.rates.number(i, r.rates.require_column("published")) == Approx(1.95));
+      CHECK(r.rates.number(i, r.rates.require_column("band_hi")) == Approx(2.3));
+      CHECK(r.rates.text(i, "seeds") == "2");
+      CHECK(r.rates.text(i, "where") == "document");
+    }
+    if (pair == "2^-9/2^-10") {
+      ++seen;
+      CHECK(r.rates.number(i, r.rates.require_column("band_lo")) == Approx(1.9));
+      CHECK(r.rates.text(i, "where") == "beyond");
+    }
+  }
+  CHECK(seen == 2);
 }

@@ -24,14 +24,14 @@
 // error ‖e^k ξ⁰ − ξ^k‖, the larger subspace is taken.  Where that error is a small part of the
 // solution, the tolerance can lie below what double precision resolves: 1e-10 of an error of
 // 1.6e-4 is 1.6e-14 of the data, and Table 4.5's piecewise quintic at 2^-9 (seed 2) moves by
-// 1e-14 to 2e-12 of the data from m = 282 on, size after size, a run reaching the tolerance
-// by chance (m = 526 in one run, 836 in the next) and at 2^-10 never within m = 850.  So a
-// change that has stopped falling (by less than `stall` from one size to the next) while below
-// `rounding` of the
-// series' largest value (its data's norm ‖S U⁰‖ or a larger iterate's) is rounding, and the
-// larger subspace is taken as well; the progress callback says which stop was met.  An invariant subspace (the space is
-// exhausted, e.g. θ = 0 after m = 2(K+1)) is exact.  One subspace serves every series that
-// shares the operator (every θ and time step of one Laplacian and one choice of volumes).
+// 1e-14 to 2e-12 of the data from m = 282 on, size after size: one run met the tolerance by
+// chance (m = 526), a re-run had not met it by m = 836, and at 2^-10 no size up to 850 met it.
+// So a change that has stopped falling (by less than `stall` from one size to the next) while
+// below `rounding` of the series' largest value (its data's norm ‖S U⁰‖ or a larger iterate's)
+// is rounding, and the larger subspace is taken as well; the progress callback says which stop
+// was met.  An invariant subspace (the space is exhausted, e.g. θ = 0 after m = 2(K+1)) is
+// exact.  One subspace serves every series that shares the operator (every θ and time step of
+// one Laplacian and one choice of volumes).
 //
 // Validated against the stepper (tests/unit/test_heat_krylov.cpp: trajectories and errors
 // equal to 1e-9 of the error), which stays the reference: --propagator stepped.

@@ -6,8 +6,8 @@
 // influence_radius.hpp (h10 as printed, h15 the alternative reading).
 //
 // The paper profile runs every reading at the table's paper levels; which readings, seeds
-// and levels past the thesis' the store holds is the registry's (heat_store_readings,
-// heat_band_seeds, heat_beyond in define/registry.cpp).  `--levels` runs any level.
+// and levels past the thesis' the store holds is the census' (heat_store_readings,
+// heat_band_seeds, heat_beyond in define/census.hpp).  `--levels` runs any level.
 #pragma once
 #include <string>
 #include <vector>

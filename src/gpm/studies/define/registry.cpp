@@ -10,6 +10,7 @@
 #include "gpm/geometry/influence_radius.hpp"
 #include "gpm/io/args.hpp"
 #include "gpm/studies/define/catalog.hpp"
+#include "gpm/studies/define/census.hpp"
 #include "gpm/studies/define/heat_tables.hpp"
 #include "gpm/studies/define/thesis_tables.hpp"
 
@@ -223,11 +224,16 @@ RegisteredStudy poisson() {
               .rates = {{.name = "thesis_table4_4_rates", .input = "thesis_table4_4", .scored = true}}}};
   // Both readings of h in one file (the verdicts give each its slice); cellvol is the reading
   // V_i = dx^2; seeds 2, 3 at the coarse and the rate levels, and under V_i = dx^2 (the
-  // identified volumes) seeds 2-5: a band that decides (five realizations).
+  // identified volumes) seeds 2-5: a band that decides (five realizations).  Under V_i = dx^2
+  // also the levels past the thesis (census.hpp: poisson_beyond), for seed 1 and the seeds
+  // it names at the first of them; no published value exists there (gpm rate-levels).
+  const StoreBeyond beyond = poisson_beyond();
   const std::vector<std::string> coarse = {"--levels", "5,6"}, rate_levels = {"--levels", "5,6,8,9"};
+  const std::vector<std::string> rate_levels_beyond = {"--levels", with_levels("5,6,8,9", beyond.first())};
   s.store_files = {{.name = "thesis_table4_4", .slice = "all", .coarse = coarse, .readings = {"h10", "h15"}},
                    {.name = "thesis_table4_4_cellvol", .slice = "cell", .args = {"--volumes", "cell"},
-                    .coarse = coarse, .readings = {"h10_cell", "h15_cell"}},
+                    .census = {"--levels", with_levels("5,6,7,8,9", beyond.levels)}, .coarse = coarse,
+                    .readings = {"h10_cell", "h15_cell"}},
                    {.name = "thesis_table4_4_seed2", .slice = "seed2", .args = {"--seed", "2"},
                     .census = rate_levels, .coarse = coarse},
                    {.name = "thesis_table4_4_seed3", .slice = "seed3", .args = {"--seed", "3"},
@@ -235,7 +241,8 @@ RegisteredStudy poisson() {
   for (const char* seed : {"2", "3", "4", "5"})
     s.store_files.push_back({.name = std::string("thesis_table4_4_cellvol_seed") + seed,
                              .slice = std::string("cell_seed") + seed,
-                             .args = {"--volumes", "cell", "--seed", seed}, .census = rate_levels, .coarse = coarse});
+                             .args = {"--volumes", "cell", "--seed", seed},
+                             .census = beyond.holds(seed) ? rate_levels_beyond : rate_levels, .coarse = coarse});
   s.published = PublishedRates{
       .table = "thesis_table4_4", .file = "thesis_table4_4_long.tsv", .key = {"h_rule", "weight"},
       .printed_slice = "h10",
@@ -269,76 +276,6 @@ std::string heat_file(const HeatTable& hp, HRule rule) {
   return heat_study_name(hp) + (rule == HRule::h15 ? "_h15" : "");
 }
 
-// The readings of a heat table the store holds (a reading's name, heat_tables.hpp), with the
-// levels each must hold (empty: the table's paper levels): the
-// printed reading and h15 at the paper levels, the others at 2^-5 and the rate levels, Table
-// 4.6 at every level under each time step (its theta = 0 rates are the set-up rule's
-// fingerprint, setup_identification), and the identified reading (h15, V_i = dx^2,
-// dt = dt0) at every level of Tables 4.5 and 4.6.
-struct HeatStoreReading {
-  std::string reading, census;
-};
-std::vector<HeatStoreReading> heat_store_readings(const std::string& table) {
-  if (table == "4.5") return {{"h10", ""}, {"h15", ""}, {"h10_cell", "5,7,8"}, {"h15_cell_exact", "4,5,6,7,8"}};
-  if (table == "4.6")
-    return {{"h10", ""},
-            {"h15", ""},
-            {"h10_cell", "5,8,9"},
-            {"h10_exact", "5,6,7,8,9"},
-            {"h10_cell_exact", "5,6,7,8,9"},
-            {"h15_cell", "5,6,7,8,9"},
-            {"h15_exact", "5,6,7,8,9"},
-            {"h15_cell_exact", "5,6,7,8,9"}};
-  if (table == "4.7")
-    return {{"h10", ""},           {"h15", ""},
-            {"h10_cell", "5,8,9"}, {"h10_exact", "5,8,9"},
-            {"h10_cell_exact", "5,6,7,8,9"}, {"h15_cell", "5,6,7,8,9"},
-            {"h15_exact", "5,6,7,8,9"},      {"h15_cell_exact", "5,8,9"}};
-  throw InputError("heat_store_readings: unknown table '" + table + "'");
-}
-
-// The seeds beside seed 1 stored for a heat table's reading, at level 5 and the table's rate
-// levels: every table under the identified reading (h15_cell_exact) and the printed one (h10),
-// Table 4.6 also under each reading that differs from the identified one in one detail
-// (h15_cell, h15_exact, h10_cell_exact) and under h10_cell; the Krylov propagator makes a
-// seed minutes (10-15 min for h10_cell_exact and h10_cell at 2^-9 here, 15 min for the
-// printed reading of Table 4.6 or 4.7 alone).
-std::vector<std::string> heat_band_seeds(const std::string& table, const std::string& reading) {
-  // The identified reading and the reading as printed: the seed bands of both boards.
-  if (reading == "h15_cell_exact" || reading == "h10") return {"2", "3", "4", "5"};
-  // Table 4.6 under the readings the time-step and volume decisions compare with the identified
-  // one, and under h10 with the identified volumes and time step (the h decision): the set-up
-  // identification's distance bands (setup_identification.hpp).
-  // h10_cell is the reading the h decision's band is measured against.
-  if (table == "4.6" && (reading == "h15_cell" || reading == "h15_exact" || reading == "h10_cell_exact" ||
-                         reading == "h10_cell"))
-    return {"2", "3", "4", "5"};
-  return {};
-}
-
-// The levels stored beyond the documents' finest for a reading (the thesis' conjecture, that its
-// rates had not reached the asymptotic regime: gpm rate-levels), in the census of its file, and
-// the band seeds stored at the first of them too.  No published value exists there: the boards
-// never use these rows (their rates pair levels the documents did not compute).
-struct HeatBeyond {
-  std::vector<int> levels;
-  std::vector<std::string> seeds;
-};
-HeatBeyond heat_beyond(const std::string& table, const std::string& reading) {
-  if (reading != "h15_cell_exact") return {};
-  // Table 4.5 one and two levels past its 2^-8, Table 4.7 one past its 2^-9 with three
-  // realizations.  Those not yet stored whole (Table 4.6's 2^-10) join as they land:
-  // tables/beyond.tsv lists every unit still owed, and the report prices it.
-  if (table == "4.5") return {{9, 10}, {"2", "3"}};
-  if (table == "4.7") return {{10}, {"2", "3"}};
-  return {};
-}
-
-std::string with_levels(std::string census, const std::vector<int>& more) {
-  for (int k : more) census += (census.empty() ? "" : ",") + std::to_string(k);
-  return census;
-}
-
 // Tables 4.5–4.7 under both h rules: K = ⌈T/Δt₀⌉ steps, one product per step (M·U^k, which
 // also serves the CG's initial and true residuals) plus (θ > 0) the CG iterations; the
 // Laplacian's set-up once per (level, weight), not in the per-row seconds.
@@ -362,7 +299,7 @@ RegisteredStudy heat(const HeatTable& hp) {
     if (reading.h_rule != HRule::h10) args.insert(args.end(), {"--h-rule", h_rule_name(reading.h_rule)});
     if (reading.dt_rule != DtRule::fit) args.insert(args.end(), {"--dt-rule", dt_rule_name(reading.dt_rule)});
     if (reading.volumes != PdeVolumes::lattice) args.insert(args.end(), {"--volumes", pde_volumes_name(reading.volumes)});
-    const HeatBeyond beyond = heat_beyond(hp.table, r.reading);
+    const StoreBeyond beyond = heat_beyond(hp.table, r.reading);
     const std::string census = with_levels(r.census, beyond.levels);
     s.store_files.push_back(
         {.name = name + reading.file_suffix(), .slice = reading.name(), .args = args,
@@ -373,8 +310,7 @@ RegisteredStudy heat(const HeatTable& hp) {
     for (const std::string& seed : heat_band_seeds(hp.table, r.reading)) {
       std::vector<std::string> seeded = args;
       seeded.insert(seeded.end(), {"--seed", seed});
-      const bool further = std::find(beyond.seeds.begin(), beyond.seeds.end(), seed) != beyond.seeds.end();
-      const std::vector<int> first = further ? std::vector<int>{beyond.levels.front()} : std::vector<int>{};
+      const std::vector<int> first = beyond.holds(seed) ? beyond.first() : std::vector<int>{};
       s.store_files.push_back({.name = name + reading.file_suffix() + "_seed" + seed,
                                .slice = reading.name() + "_seed" + seed, .args = seeded,
                                .census = {"--levels", with_levels("5," + hp.rate_levels, first)},

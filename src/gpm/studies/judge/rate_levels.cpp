@@ -62,15 +62,17 @@ namespace {
 
 // A series' finite errors by level: level → (h, error).
 using Series = std::map<int, std::pair<double, double>>;
+// A file's series by key: (weight, θ) for the heat tables, (h rule, weight) for Table 4.4.
+using SeriesMap = std::map<std::pair<std::string, std::string>, Series>;
 
-std::map<std::pair<std::string, std::string>, Series> series_of(const TsvTable& t) {
-  std::map<std::pair<std::string, std::string>, Series> out;
-  const int cw = t.require_column("weight"), ct = t.require_column("theta"), cl = t.require_column("level"),
+SeriesMap series_of(const TsvTable& t, const std::string& key1, const std::string& key2) {
+  SeriesMap out;
+  const int c1 = t.require_column(key1), c2 = t.require_column(key2), cl = t.require_column("level"),
             ch = t.require_column("h"), ce = t.require_column("rel_error");
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     const double e = t.number(i, ce);
     if (!std::isfinite(e) || e <= 0) continue;
-    out[{t.text(i, cw), t.text(i, ct)}][static_cast<int>(t.integer(i, cl))] = {t.number(i, ch), e};
+    out[{t.text(i, c1), t.text(i, c2)}][static_cast<int>(t.integer(i, cl))] = {t.number(i, ch), e};
   }
   return out;
 }
@@ -91,6 +93,115 @@ const TsvTable& stored_or_refuse(const StoreSnapshot& store, const std::string& 
   return store.table(name, false);
 }
 
+// The series of a store file and of its stored jitter realizations (`<file>_seedN`).
+struct Realizations {
+  SeriesMap seed1;
+  std::vector<SeriesMap> others;
+};
+Realizations realizations(const StoreSnapshot& store, const RegisteredStudy& study, const StoreFile& file,
+                          const std::string& key1, const std::string& key2) {
+  Realizations r{series_of(stored_or_refuse(store, file.name + ".tsv"), key1, key2), {}};
+  for (const StoreFile* f : seed_files(study, file.slice))
+    if (store.has(f->name + ".tsv")) r.others.push_back(series_of(store.table(f->name + ".tsv", false), key1, key2));
+  return r;
+}
+
+// One series as the view names it, and what the documents say of it.
+struct SeriesLabel {
+  std::string table, reading, weight, theta;
+  double published = std::numeric_limits<double>::quiet_NaN();
+  std::string theory_text;  // the published file's `theoretical` cell: a rate, or a word
+};
+
+// The rows of one series (its rates at every consecutive pair of stored levels, with the band
+// over the realizations holding both levels) and its finding.  `doc_levels`: the documents'
+// pair ("8,9").
+void add_series(RateLevels& out, const SeriesLabel& label, const Realizations& reals,
+                const std::pair<std::string, std::string>& key, const std::string& doc_levels) {
+  const auto it = reals.seed1.find(key);
+  if (it == reals.seed1.end()) return;
+  const Series& s = it->second;
+  const int doc_hi = std::stoi(doc_levels.substr(doc_levels.find(',') + 1));
+  // The theory's rate, or none where the document gives a word ("unstable": Table 4.6's
+  // explicit series, whose growth is the set-up fingerprint, not a rate).
+  char* end = nullptr;
+  const double parsed = std::strtod(label.theory_text.c_str(), &end);
+  const double theory = !label.theory_text.empty() && !*end ? parsed : std::numeric_limits<double>::quiet_NaN();
+  const std::string theory_cell = std::isfinite(theory) ? cell(theory) : label.theory_text;
+  std::vector<int> levels;
+  for (auto& [k, v] : s) levels.push_back(k);
+  std::vector<double> rates;
+  for (std::size_t i = 0; i + 1 < levels.size(); ++i) {
+    const int lo = levels[i], hi = levels[i + 1];
+    const double r = rate_between(s, lo, hi);
+    rates.push_back(r);
+    double blo = r, bhi = r;
+    int seeds = 1;
+    for (auto& o : reals.others) {
+      const auto oi = o.find(key);
+      if (oi == o.end()) continue;
+      const double ro = rate_between(oi->second, lo, hi);
+      if (!std::isfinite(ro)) continue;
+      blo = std::min(blo, ro), bhi = std::max(bhi, ro), ++seeds;
+    }
+    const bool document = fmt(lo) + "," + fmt(hi) == doc_levels;
+    TsvRow row = out.rates.named_row();
+    row["table"] = label.table, row["reading"] = label.reading, row["weight"] = label.weight, row["theta"] = label.theta;
+    row["level_lo"] = fmt(lo), row["level_hi"] = fmt(hi), row["pair"] = "2^-" + fmt(lo) + "/2^-" + fmt(hi);
+    row["rate"] = cell(r), row["band_lo"] = seeds > 1 ? cell(blo) : "NA";
+    row["band_hi"] = seeds > 1 ? cell(bhi) : "NA", row["seeds"] = fmt(seeds);
+    row["published"] = document ? cell(label.published) : "NA", row["theoretical"] = theory_cell;
+    row["where"] = document ? "document" : hi > doc_hi ? "beyond" : "coarser";
+    out.rates.add_row(row);
+  }
+  const bool beyond = !levels.empty() && levels.back() > doc_hi;
+  const TrendFinding f = std::isfinite(theory)
+                             ? judge_trend(rates, theory, beyond, kRateTolerance)
+                             : TrendFinding{Trend::not_decided, "no theoretical rate ('" + label.theory_text + "')"};
+  TsvRow row = out.findings.named_row();
+  row["table"] = label.table, row["reading"] = label.reading, row["weight"] = label.weight, row["theta"] = label.theta;
+  row["pairs"] = fmt(rates.size());
+  row["finest_pair"] = levels.size() < 2 ? "NA" : fmt(levels[levels.size() - 2]) + "," + fmt(levels.back());
+  row["finest_rate"] = rates.empty() ? "NA" : cell(rates.back());
+  row["theoretical"] = theory_cell;
+  row["published"] = cell(label.published), row["finding"] = trend_name(f.trend), row["why"] = f.why;
+  out.findings.add_row(row);
+}
+
+// Tables 4.5–4.7 under the printed reading (h10) and the identified one (h15_cell_exact).
+void heat_rate_levels(RateLevels& out, const StoreSnapshot& store, const std::string& published) {
+  const StudyRegistry& reg = study_registry();
+  for (const HeatTable& hp : heat_tables()) {
+    const RegisteredStudy& study = reg.study(heat_study_name(hp));
+    const TsvTable pub = published_or_refuse(published_file(published, study.published->table));
+    const std::string doc_levels = pub.get("rate_levels").value_or(hp.rate_levels);
+    for (const std::string reading : {"h10", "h15_cell_exact"}) {
+      const Realizations reals = realizations(store, study, study.store_file_of(reading), "weight", "theta");
+      for (std::size_t p = 0; p < pub.rows.size(); ++p) {
+        const std::string w = pub.text(p, "weight"), th = pub.text(p, "theta");
+        const SeriesLabel label{hp.table, reading, w, th, pub.number(p, pub.require_column("numerical")),
+                                pub.text(p, "theoretical")};
+        add_series(out, label, reals, {w, th}, doc_levels);
+      }
+    }
+  }
+}
+
+// Table 4.4 (the Poisson problem, no θ) under both h rules with V_i = Δx², the volumes the
+// set-up rule identifies: one file holds both rules (readings h10_cell and h15_cell).
+void poisson_rate_levels(RateLevels& out, const StoreSnapshot& store, const std::string& published) {
+  const RegisteredStudy& study = study_registry().study("thesis_table4_4");
+  const TsvTable pub = published_or_refuse(published_file(published, study.published->table));
+  const std::string doc_levels = pub.get("rate_levels").value_or("8,9");
+  const Realizations reals = realizations(store, study, study.store_file_of("h15_cell"), "h_rule", "weight");
+  for (std::size_t p = 0; p < pub.rows.size(); ++p) {
+    const std::string rule = pub.text(p, "h_rule"), w = pub.text(p, "weight");
+    const SeriesLabel label{"4.4", rule + "_cell", w, "NA", pub.number(p, pub.require_column("numerical")),
+                            pub.text(p, "theoretical")};
+    add_series(out, label, reals, {rule, w}, doc_levels);
+  }
+}
+
 }  // namespace
 
 RateLevels rate_levels(const StoreSnapshot& store, const std::string& published) {
@@ -99,71 +210,8 @@ RateLevels rate_levels(const StoreSnapshot& store, const std::string& published)
                        "band_hi", "seeds", "published", "theoretical", "where"};
   out.findings.columns = {"table", "reading", "weight", "theta", "pairs", "finest_pair", "finest_rate",
                           "theoretical", "published", "finding", "why"};
-  const StudyRegistry& reg = study_registry();
-  for (const HeatTable& hp : heat_tables()) {
-    const RegisteredStudy& study = reg.study(heat_study_name(hp));
-    const TsvTable pub = published_or_refuse(published_file(published, study.published->table));
-    const std::string doc_levels = pub.get("rate_levels").value_or(hp.rate_levels);
-    const int doc_hi = std::stoi(doc_levels.substr(doc_levels.find(',') + 1));
-    for (const std::string reading : {"h10", "h15_cell_exact"}) {
-      const auto seed1 = series_of(stored_or_refuse(store, study.store_file_of(reading).name + ".tsv"));
-      std::vector<std::map<std::pair<std::string, std::string>, Series>> others;
-      for (const StoreFile* f : seed_files(study, reading))
-        if (store.has(f->name + ".tsv")) others.push_back(series_of(store.table(f->name + ".tsv", false)));
-      for (std::size_t p = 0; p < pub.rows.size(); ++p) {
-        const std::string w = pub.text(p, "weight"), th = pub.text(p, "theta");
-        const double published_rate = pub.number(p, pub.require_column("numerical"));
-        // The theory's rate, or none where the document gives a word ("unstable": Table 4.6's
-        // explicit series, whose growth is the set-up fingerprint, not a rate).
-        const std::string theory_text = pub.text(p, "theoretical");
-        char* end = nullptr;
-        const double parsed = std::strtod(theory_text.c_str(), &end);
-        const double theory = !theory_text.empty() && !*end ? parsed : std::numeric_limits<double>::quiet_NaN();
-        const auto it = seed1.find({w, th});
-        if (it == seed1.end()) continue;
-        const Series& s = it->second;
-        std::vector<int> levels;
-        for (auto& [k, v] : s) levels.push_back(k);
-        std::vector<double> rates;
-        for (std::size_t i = 0; i + 1 < levels.size(); ++i) {
-          const int lo = levels[i], hi = levels[i + 1];
-          const double r = rate_between(s, lo, hi);
-          rates.push_back(r);
-          // The band: seed 1 and every other realization that holds both levels.
-          double blo = r, bhi = r;
-          int seeds = 1;
-          for (auto& o : others) {
-            const auto oi = o.find({w, th});
-            if (oi == o.end()) continue;
-            const double ro = rate_between(oi->second, lo, hi);
-            if (!std::isfinite(ro)) continue;
-            blo = std::min(blo, ro), bhi = std::max(bhi, ro), ++seeds;
-          }
-          const std::string pair = fmt(lo) + "," + fmt(hi);
-          const bool document = pair == doc_levels;
-          TsvRow row = out.rates.named_row();
-          row["table"] = hp.table, row["reading"] = reading, row["weight"] = w, row["theta"] = th;
-          row["level_lo"] = fmt(lo), row["level_hi"] = fmt(hi), row["pair"] = "2^-" + fmt(lo) + "/2^-" + fmt(hi);
-          row["rate"] = cell(r), row["band_lo"] = seeds > 1 ? cell(blo) : "NA";
-          row["band_hi"] = seeds > 1 ? cell(bhi) : "NA", row["seeds"] = fmt(seeds);
-          row["published"] = document ? cell(published_rate) : "NA", row["theoretical"] = std::isfinite(theory) ? cell(theory) : theory_text;
-          row["where"] = document ? "document" : hi > doc_hi ? "beyond" : "coarser";
-          out.rates.add_row(row);
-        }
-        const bool beyond = !levels.empty() && levels.back() > doc_hi;
-        const TrendFinding f = std::isfinite(theory) ? judge_trend(rates, theory, beyond, kRateTolerance)
-                                                     : TrendFinding{Trend::not_decided, "no theoretical rate ('" + theory_text + "')"};
-        TsvRow row = out.findings.named_row();
-        row["table"] = hp.table, row["reading"] = reading, row["weight"] = w, row["theta"] = th;
-        row["pairs"] = fmt(rates.size());
-        row["finest_pair"] = levels.size() < 2 ? "NA" : fmt(levels[levels.size() - 2]) + "," + fmt(levels.back());
-        row["finest_rate"] = rates.empty() ? "NA" : cell(rates.back());
-        row["theoretical"] = std::isfinite(theory) ? cell(theory) : theory_text;
-        row["published"] = cell(published_rate), row["finding"] = trend_name(f.trend), row["why"] = f.why;
-        out.findings.add_row(row);
-      }
-    }
-  }
+  poisson_rate_levels(out, store, published);
+  heat_rate_levels(out, store, published);
   return out;
 }
 

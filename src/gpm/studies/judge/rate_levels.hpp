@@ -1,7 +1,8 @@
 // Rates against level: the thesis' conjecture tested (issue 40).  For Tables 4.5–4.7 the
 // thesis finds rates far from Theorem 3.7's and suggests its levels were not yet asymptotic.
 // This computes, per table, reading (the printed h10 and the identified h15_cell_exact),
-// weight and θ, the two-level rate log(e₁/e₂)/log(h₁/h₂) at every consecutive pair of stored
+// weight and θ (and for Table 4.4, the Poisson problem, per h rule with V_i = Δx² and
+// weight: readings h10_cell and h15_cell, θ NA), the two-level rate log(e₁/e₂)/log(h₁/h₂) at every consecutive pair of stored
 // levels, the band over the stored jitter realizations of that pair (seed 1 and every
 // `<file>_seedN`), the published rate at the documents' pair and the theory's rate, and a
 // finding per series:
@@ -35,7 +36,7 @@ TrendFinding judge_trend(const std::vector<double>& rates, double theory, bool f
 
 // The rows (one per table, reading, weight, θ and pair of levels) and the findings (one per
 // table, reading, weight and θ) of the store at `store` against `published`
-// (thesis_table4_N_long.tsv).  Columns: see rate_levels.cpp.
+// (thesis_table4_N_long.tsv), Table 4.4's rows first.  Columns: see rate_levels.cpp.
 struct RateLevels {
   TsvTable rates, findings;
 };
