@@ -8,7 +8,7 @@
 # of a pair, its band is drawn as an error bar on the seed-1 point.
 # Drawn at print size: 640 px wide, 14 px text; the key in the last slot of the grid.
 load 'figures/style.gp'
-set terminal svg size 640,1250 dynamic enhanced font 'Helvetica,14' background rgb 'white'
+set terminal svg size 640,1120 dynamic enhanced font 'Helvetica,14' background rgb 'white'
 set output out
 set datafile columnheaders
 f = datadir.'/rate_levels.tsv'
@@ -24,8 +24,9 @@ sel(t, r, th, i) = rows_named(f, sprintf('$c["table"]=="%s" && $c["reading"]=="%
 # The pairs whose band is stored (other realizations hold both levels).
 selband(t, r, th, i) = rows_named(f, sprintf('$c["table"]=="%s" && $c["reading"]=="%s" && $c["theta"]=="%s" && $c["weight"]=="%s" && $c["band_lo"]!="NA"', t, r, th, w(i)))
 seltheta(t, r, th) = rows_named(f, sprintf('$c["table"]=="%s" && $c["reading"]=="%s" && $c["theta"]=="%s"', t, r, th))
-# Nine panels on a 2 x 5 grid, the tenth slot for the key (pixel sizes as four rows at 1000 px).
-PL = 0.11; PW = 0.37; GX = 0.12; PT = 0.968; PH = 0.136; GY = 0.06
+# Nine panels on a 2 x 5 grid, the tenth slot for the key; 1120 px tall, so that the page's
+# largest figure height (232 mm) prints its text at 8 pt or more.
+PL = 0.11; PW = 0.37; GX = 0.12; PT = 0.968; PH = 0.1321; GY = 0.0625
 set multiplot
 T = '4.4 4.4 4.5 4.5 4.5 4.6 4.6 4.7 4.7'
 R = 'h10_cell h15_cell h15_cell_exact h15_cell_exact h15_cell_exact h15_cell_exact h15_cell_exact h15_cell_exact h15_cell_exact'
