@@ -3,7 +3,9 @@
 // branch of the rule; and the view of Table 4.4 read from a fixture store.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <string>
 
 #include "gpm/studies/define/heat_tables.hpp"
 #include "gpm/studies/define/registry.hpp"
@@ -110,4 +112,14 @@ TEST_CASE("rate levels: Table 4.4 on a fixture store, one level past the thesis"
     }
   }
   CHECK(seen == 2);
+  // The documents' pair comes from the published file only: one without its rate_levels line
+  // is refused, not judged at a typed default pair.
+  const auto pub = tmp.dir / "published";
+  std::filesystem::copy(std::string(GPM_SOURCE_DIR) + "/tables/published", pub);
+  const auto table = pub / "thesis_table4_4_long.tsv";
+  std::string kept, line;
+  for (std::ifstream in(table); std::getline(in, line);)
+    if (line.rfind("# rate_levels", 0) != 0) kept += line + "\n";
+  std::ofstream(table) << kept;
+  CHECK_THROWS_WITH(rate_levels(StoreSnapshot(tmp.dir.string()), pub.string()), Catch::Contains("rate_levels"));
 }
