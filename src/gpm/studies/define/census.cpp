@@ -46,11 +46,11 @@ std::vector<std::string> heat_band_seeds(const std::string& table, const std::st
 StoreBeyond heat_beyond(const std::string& table, const std::string& reading) {
   if (reading != "h15_cell_exact") return {};
   // Table 4.5 one and two levels past its 2^-8, Tables 4.6 and 4.7 one past their 2^-9, with
-  // three realizations at the first new level (Table 4.6's seed 3 joins when it lands);
+  // three realizations at the first new level;
   // the second level of Tables 4.6, 4.7 (2^-11) needs more memory than the machine has:
   // tables/beyond.tsv lists every unit still owed, and the report prices it.
   if (table == "4.5") return {{9, 10}, {"2", "3"}};
-  if (table == "4.6") return {{10}, {"2"}};
+  if (table == "4.6") return {{10}, {"2", "3"}};
   if (table == "4.7") return {{10}, {"2", "3"}};
   return {};
 }
