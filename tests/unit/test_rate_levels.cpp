@@ -40,6 +40,27 @@ TEST_CASE("rate levels: the trend rule, branch by branch", "[unit][rate_levels]"
   CHECK(trend_name(Trend::stays_away) == "stays away");
 }
 
+TEST_CASE("rate levels: a band at the finest pair must agree with seed 1", "[unit][rate_levels]") {
+  const double tol = 0.15;
+  // Seed 1 approaches; the band's far end within 0.3 keeps it, and the why names the band.
+  const TrendFinding kept = judge_trend({3.4, 2.6, 2.25}, 2, true, tol, {2.1, 2.29});
+  CHECK(kept.trend == Trend::approaches);
+  CHECK(kept.why.find("2.10 to 2.29") != std::string::npos);
+  // A realization 0.35 off: not decided, saying how far.
+  const TrendFinding spread = judge_trend({3.4, 2.6, 2.25}, 2, true, tol, {2.2, 2.35});
+  CHECK(spread.trend == Trend::not_decided);
+  CHECK(spread.why.find("0.35") != std::string::npos);
+  // Below the theory counts the same as above.
+  CHECK(judge_trend({3.1, 2.1, 1.95}, 2, false, tol, {1.65, 2.0}).trend == Trend::not_decided);
+  // Stays away only if every realization is beyond the reach; a band holding the theory's
+  // rate is not decided.
+  CHECK(judge_trend({7.6, 6.9, 5.3, 5.4}, 2, true, tol, {4.9, 5.6}).trend == Trend::stays_away);
+  CHECK(judge_trend({7.6, 6.9, 5.3, 5.4}, 2, true, tol, {1.9, 5.6}).trend == Trend::not_decided);
+  CHECK(judge_trend({7.6, 6.9, 5.3, 5.4}, 2, true, tol, {2.25, 5.6}).trend == Trend::not_decided);
+  // Not decided by seed 1 stays not decided whatever the band.
+  CHECK(judge_trend({4.0, 3.0, 2.5}, 2, true, tol, {2.0, 2.1}).trend == Trend::not_decided);
+}
+
 namespace {
 
 // A store file of (key columns, level, h, rel_error) rows: per series the errors at levels
@@ -72,12 +93,14 @@ TEST_CASE("rate levels: Table 4.4 on a fixture store, one level past the thesis"
     write_series(f, "h10\tquartic_polynomial", 5, {3.0, 2.2, 2.1, 2.05, 2.01});        // approaches
     write_series(f, "h15\tpiecewise_quintic_polynomial", 5, {9.0, 6.9, 5.3, 5.4, 5.4});  // stays away
     write_series(f, "h15\tquartic_polynomial", 5, {7.0, 5.0, 3.0, 2.6});                // levels 5-9 only
+    write_series(f, "h10\tpiecewise_quintic_polynomial", 5, {3.0, 2.2, 2.1, 2.05, 2.01});  // seed 2 disagrees
   }
   {
-    // A second realization of the quartic under h10 at the thesis' pair and the one beyond.
+    // A second realization of the quartic and the quintic under h10 at the thesis' pair and the one beyond.
     std::ofstream f(tmp.dir / "thesis_table4_4_cellvol_seed2.tsv");
     f << columns;
     write_series(f, "h10\tquartic_polynomial", 8, {2.3, 1.9});
+    write_series(f, "h10\tpiecewise_quintic_polynomial", 8, {2.3, 2.4});
   }
   const RateLevels r = rate_levels(StoreSnapshot(tmp.dir.string()), std::string(GPM_SOURCE_DIR) + "/tables/published");
   auto finding = [&](const std::string& reading, const std::string& w) {
@@ -91,11 +114,13 @@ TEST_CASE("rate levels: Table 4.4 on a fixture store, one level past the thesis"
   CHECK(finding("h15_cell", "piecewise_quintic_polynomial") == "stays away");
   CHECK(finding("h15_cell", "quartic_polynomial") == "not decided");
   CHECK(finding("h10_cell", "piecewise_cubic_polynomial") == "absent");  // no stored series
+  // Seed 1 approaches, but the second realization's finest rate is 0.4 off.
+  CHECK(finding("h10_cell", "piecewise_quintic_polynomial") == "not decided");
   // The thesis' pair carries the published rate (1.95) and the band of both realizations; the
   // pair past it is marked beyond the documents.
   int seen = 0;
   for (std::size_t i = 0; i < r.rates.rows.size(); ++i) {
-    if (r.rates.text(i, "reading") != "h10_cell") continue;
+    if (r.rates.text(i, "reading") != "h10_cell" || r.rates.text(i, "weight") != "quartic_polynomial") continue;
     const std::string pair = r.rates.text(i, "pair");
     if (pair == "2^-8/2^-9") {
       ++seen;

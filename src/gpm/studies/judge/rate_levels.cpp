@@ -34,10 +34,8 @@ constexpr double kApproachReach = 0.3;
 std::string num(double v) { return std::isfinite(v) ? format_text("%.2f", v) : "NA"; }
 std::string cell(double v) { return std::isfinite(v) ? fmt(v) : "NA"; }
 
-}  // namespace
-
-TrendFinding judge_trend(const std::vector<double>& rates, double theory, bool finest_beyond,
-                         double tolerance) {
+// The rule on seed 1's rates alone.
+TrendFinding seed1_trend(const std::vector<double>& rates, double theory, bool finest_beyond, double tolerance) {
   const std::size_t n = rates.size();
   if (n < 2) return {Trend::not_decided, "fewer than two pairs of levels"};
   std::vector<double> d;
@@ -56,6 +54,25 @@ TrendFinding judge_trend(const std::vector<double>& rates, double theory, bool f
   if (!finest_beyond) return {Trend::not_decided, "no level beyond the documents' stored yet"};
   return {Trend::not_decided, "distance to " + num(theory) + " " + num(d[n - 2]) + " then " + num(d[n - 1]) +
                                   ": a level further would decide"};
+}
+
+}  // namespace
+
+TrendFinding judge_trend(const std::vector<double>& rates, double theory, bool finest_beyond,
+                         double tolerance, FinestBand band) {
+  TrendFinding f = seed1_trend(rates, theory, finest_beyond, tolerance);
+  if (!std::isfinite(band.lo) || !std::isfinite(band.hi) || f.trend == Trend::not_decided) return f;
+  // Every realization must agree: the band's far end decides "approaches", its near end
+  // (0 where the band holds the theory's rate) "stays away".
+  const double dlo = std::fabs(band.lo - theory), dhi = std::fabs(band.hi - theory);
+  const double far = std::max(dlo, dhi), near = band.lo <= theory && theory <= band.hi ? 0 : std::min(dlo, dhi);
+  const std::string spread = "realizations " + num(band.lo) + " to " + num(band.hi) + " at the finest pair";
+  if (f.trend == Trend::approaches && far > kApproachReach)
+    return {Trend::not_decided, f.why + ", but the " + spread + " reach " + num(far) + " from " + num(theory)};
+  if (f.trend == Trend::stays_away && near <= kApproachReach)
+    return {Trend::not_decided, f.why + ", but the " + spread + " come within " + num(near) + " of " + num(theory)};
+  f.why += " (" + spread + ")";
+  return f;
 }
 
 namespace {
@@ -131,6 +148,7 @@ void add_series(RateLevels& out, const SeriesLabel& label, const Realizations& r
   std::vector<int> levels;
   for (auto& [k, v] : s) levels.push_back(k);
   std::vector<double> rates;
+  FinestBand band;
   for (std::size_t i = 0; i + 1 < levels.size(); ++i) {
     const int lo = levels[i], hi = levels[i + 1];
     const double r = rate_between(s, lo, hi);
@@ -144,6 +162,7 @@ void add_series(RateLevels& out, const SeriesLabel& label, const Realizations& r
       if (!std::isfinite(ro)) continue;
       blo = std::min(blo, ro), bhi = std::max(bhi, ro), ++seeds;
     }
+    if (i + 2 == levels.size() && seeds > 1) band = {blo, bhi};
     const bool document = fmt(lo) + "," + fmt(hi) == doc_levels;
     TsvRow row = out.rates.named_row();
     row["table"] = label.table, row["reading"] = label.reading, row["weight"] = label.weight, row["theta"] = label.theta;
@@ -156,7 +175,7 @@ void add_series(RateLevels& out, const SeriesLabel& label, const Realizations& r
   }
   const bool beyond = !levels.empty() && levels.back() > doc_hi;
   const TrendFinding f = std::isfinite(theory)
-                             ? judge_trend(rates, theory, beyond, kRateTolerance)
+                             ? judge_trend(rates, theory, beyond, kRateTolerance, band)
                              : TrendFinding{Trend::not_decided, "no theoretical rate ('" + label.theory_text + "')"};
   TsvRow row = out.findings.named_row();
   row["table"] = label.table, row["reading"] = label.reading, row["weight"] = label.weight, row["theta"] = label.theta;

@@ -11,8 +11,12 @@
 //   stays away    the finest pair lies beyond the documents, its rate is more than 0.3 from
 //                 the theory's and no nearer than the pair before (by the tolerance);
 //   not decided   otherwise, with what would decide it.
+// Where other jitter realizations hold the finest pair, a verdict must hold for all of them:
+// "approaches" needs the band's far end there within 0.3 of the theory's, "stays away" its near
+// end beyond 0.3; a band straddling the reach is not decided (the band names the spread).
 // Everything is read from the result store; nothing is run.
 #pragma once
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -29,10 +33,17 @@ struct TrendFinding {
   std::string why;
 };
 
+// The band over the jitter realizations (seed 1 included) at the finest pair; empty (NaN)
+// where seed 1 alone holds it.
+struct FinestBand {
+  double lo = std::numeric_limits<double>::quiet_NaN(), hi = std::numeric_limits<double>::quiet_NaN();
+};
+
 // The finding for a series' rates in level order (seed 1), the theory's rate, whether the
-// finest pair lies beyond the documents' levels, and the agreement tolerance.
+// finest pair lies beyond the documents' levels, the agreement tolerance and the band at the
+// finest pair.
 TrendFinding judge_trend(const std::vector<double>& rates, double theory, bool finest_beyond,
-                         double tolerance);
+                         double tolerance, FinestBand band = {});
 
 // The rows (one per table, reading, weight, θ and pair of levels) and the findings (one per
 // table, reading, weight and θ) of the store at `store` against `published`
