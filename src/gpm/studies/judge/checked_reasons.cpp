@@ -30,18 +30,6 @@ namespace {
 const char* pass_fail(bool ok) { return ok ? "pass" : "fail"; }
 const char* yes_no(bool b) { return b ? "yes" : "no"; }
 
-// The document's two rate levels, coarse first, from a published file's rate_levels ("8,9").
-std::pair<int, int> rate_levels_of(const TsvTable& published) {
-  const auto lv = published.get("rate_levels");
-  if (!lv) throw InputError(published.source + ": no '# rate_levels = ' line");
-  std::vector<int> k;
-  std::stringstream ss(*lv);
-  for (std::string item; std::getline(ss, item, ',');)
-    k.push_back(static_cast<int>(parse_integer(item, published.source + " rate_levels", 0, 63)));
-  if (k.size() != 2 || !(k[0] < k[1]))
-    throw InputError(published.source + ": rate_levels '" + *lv + "' is not two increasing levels");
-  return {k[0], k[1]};
-}
 
 // A published rate as the heat tables print one: a plain decimal (an optional '-', digits and
 // points); anything else (a word where the document prints no rate) has no number to check.
@@ -104,7 +92,7 @@ const std::vector<std::string>& checked_reason_columns() {
 }
 
 void add_volume_mismatch_reasons(const TsvTable& pub, const TsvTable& diag, double tol, TsvTable& out) {
-  const auto [l1, l2] = rate_levels_of(pub);
+  const auto [l1, l2] = documents_levels(pub);
   // (h_rule, weight, level, variant) -> its diagnostic row (the last one, where repeated);
   // cells are read only for the rows a published rate uses.
   std::map<std::tuple<std::string, std::string, std::string, std::string>, std::size_t> at;
@@ -155,7 +143,7 @@ void add_gradient_smoothing_reasons(const TsvTable& pub, const TsvTable& data, c
   for (std::size_t i = 0; i < pub.rows.size(); ++i)
     if (pub.text(i, "operator") == "grad" && pub.text(i, "function") == "case2")
       published[pub.text(i, "weight")] = pub.text(i, "numerical");
-  const auto rows = voronoi_rows(data, reading, "grad", "case2", rate_levels_of(pub), published,
+  const auto rows = voronoi_rows(data, reading, "grad", "case2", documents_levels(pub), published,
                                  [](const WeightFunction& w, double h) {
                                    return gradient_smoothing_error(w, kSin2piWaveNumber * h);
                                  });
@@ -180,7 +168,7 @@ void add_interpolant_smoothing_reasons(const TsvTable& pub, const TsvTable& data
   std::map<std::string, std::string> published;  // weight -> its Case 1 rate
   for (std::size_t i = 0; i < pub.rows.size(); ++i)
     if (pub.text(i, "function") == "case1") published[pub.text(i, "weight")] = pub.text(i, "numerical");
-  const auto levels = rate_levels_of(pub);
+  const auto levels = documents_levels(pub);
   const auto rows = voronoi_rows(data, reading, "interp", "case1", levels, published,
                                  [](const WeightFunction& w, double h) {
                                    return interpolant_smoothing_error_case1(w, h);

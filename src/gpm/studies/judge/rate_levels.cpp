@@ -193,7 +193,7 @@ void heat_rate_levels(RateLevels& out, const StoreSnapshot& store, const std::st
   for (const HeatTable& hp : heat_tables()) {
     const RegisteredStudy& study = reg.study(heat_study_name(hp));
     const TsvTable pub = published_or_refuse(published_file(published, study.published->table));
-    const std::string doc_levels = pub.get("rate_levels").value_or(hp.rate_levels);
+    const std::string doc_levels = documents_levels_text(pub);
     for (const std::string reading : {"h10", "h15_cell_exact"}) {
       const Realizations reals = realizations(store, study, study.store_file_of(reading), "weight", "theta");
       for (std::size_t p = 0; p < pub.rows.size(); ++p) {
@@ -211,15 +211,13 @@ void heat_rate_levels(RateLevels& out, const StoreSnapshot& store, const std::st
 void poisson_rate_levels(RateLevels& out, const StoreSnapshot& store, const std::string& published) {
   const RegisteredStudy& study = study_registry().study("thesis_table4_4");
   const TsvTable pub = published_or_refuse(published_file(published, study.published->table));
-  // The documents' pair is the published file's, as for every verdict (rates.cpp): no default.
-  const auto doc_levels = pub.get("rate_levels");
-  if (!doc_levels) throw InputError("gpm rate-levels: " + pub.source + " has no rate_levels line");
+  const std::string doc_levels = documents_levels_text(pub);
   const Realizations reals = realizations(store, study, study.store_file_of("h15_cell"), "h_rule", "weight");
   for (std::size_t p = 0; p < pub.rows.size(); ++p) {
     const std::string rule = pub.text(p, "h_rule"), w = pub.text(p, "weight");
     const SeriesLabel label{"4.4", rule + "_cell", w, "NA", pub.number(p, pub.require_column("numerical")),
                             pub.text(p, "theoretical")};
-    add_series(out, label, reals, {rule, w}, *doc_levels);
+    add_series(out, label, reals, {rule, w}, doc_levels);
   }
 }
 

@@ -24,11 +24,7 @@ std::vector<int> fixed_levels(const RateJoin& join, const TsvTable& pub, TsvTabl
   std::vector<int> fixed;
   if (join.levels.empty()) return fixed;
   std::string lv = join.levels;
-  if (lv == "published") {
-    const auto v = pub.get("rate_levels");
-    if (!v) throw InputError("--levels published: " + pub.source + " has no rate_levels");
-    lv = *v;
-  }
+  if (lv == "published") lv = documents_levels_text(pub);
   std::stringstream ss(lv);
   for (std::string item; std::getline(ss, item, ',');)
     fixed.push_back(static_cast<int>(parse_integer(item, "--levels", 0, 63)));
@@ -39,6 +35,23 @@ std::vector<int> fixed_levels(const RateJoin& join, const TsvTable& pub, TsvTabl
 }
 
 }  // namespace
+
+std::pair<int, int> documents_levels(const TsvTable& published) {
+  const auto lv = published.get("rate_levels");
+  if (!lv) throw InputError(published.source + ": no '# rate_levels = ' line");
+  std::vector<int> k;
+  std::stringstream ss(*lv);
+  for (std::string item; std::getline(ss, item, ',');)
+    k.push_back(static_cast<int>(parse_integer(item, published.source + " rate_levels", 0, 63)));
+  if (k.size() != 2 || !(k[0] < k[1]))
+    throw InputError(published.source + ": rate_levels '" + *lv + "' is not two increasing levels");
+  return {k[0], k[1]};
+}
+
+std::string documents_levels_text(const TsvTable& published) {
+  const auto [a, b] = documents_levels(published);
+  return std::to_string(a) + "," + std::to_string(b);
+}
 
 std::map<std::string, int> join_rates(const TsvTable& data, const TsvTable& pub,
                                       const RateJoin& join, TsvTable& out) {

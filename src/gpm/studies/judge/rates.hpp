@@ -28,6 +28,12 @@ namespace gpm {
 // tolerance every verdict of the result store is judged with (one number, one place).
 inline constexpr double kRateTolerance = 0.15;
 
+// The documents' two rate levels, coarse first, from a published file's `rate_levels` line
+// ("8,9"): the one source of the pair every judge reads.  A file without the line, or with
+// anything but two increasing levels, is refused (InputError naming the file).
+std::pair<int, int> documents_levels(const TsvTable& published);
+std::string documents_levels_text(const TsvTable& published);  // "8,9"
+
 struct RateJoin {
   std::vector<std::string> keys;  // key columns shared by the data and the published file
   std::string level = "level";    // the data's level column (Δx = 2^-level)

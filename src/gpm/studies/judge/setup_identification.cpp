@@ -9,6 +9,7 @@
 
 #include "gpm/error.hpp"
 #include "gpm/operators/norms.hpp"
+#include "gpm/studies/judge/rates.hpp"
 #include "gpm/studies/judge/verdicts.hpp"  // kSeedBandDecides
 
 namespace gpm {
@@ -80,10 +81,7 @@ SetupIdentification identify_setup(const StoreSnapshot& store, const RegisteredS
   if (!study.published || study.published->setup_fingerprint.first.empty())
     throw InputError("study '" + study.name + "' carries no set-up fingerprint");
   const auto& fp = study.published->setup_fingerprint;
-  const auto levels_text = pub.get("rate_levels").value_or("");
-  int l1 = 0, l2 = 0;
-  if (std::sscanf(levels_text.c_str(), "%d,%d", &l1, &l2) != 2)
-    throw InputError(pub.source + ": no '# rate_levels = A,B' line");
+  const auto [l1, l2] = documents_levels(pub);
   std::map<std::string, double> published;
   for (std::size_t i = 0; i < pub.rows.size(); ++i)
     if (pub.text(i, fp.first) == fp.second) published[pub.text(i, "weight")] = pub.number(i, pub.require_column("numerical"));
@@ -100,7 +98,7 @@ SetupIdentification identify_setup(const StoreSnapshot& store, const RegisteredS
                 "value's; otherwise as printed (h10, lattice, fit)");
   // "Table 4.6, theta = 0": the study's document item without the document's name.
   const std::string item = study.item.substr(study.item.find("Table"));
-  t.set("fingerprint", item + ", " + fp.first + " = " + fp.second + ", rates in h between levels " + levels_text);
+  t.set("fingerprint", item + ", " + fp.first + " = " + fp.second + ", rates in h between levels " + documents_levels_text(pub));
   t.set("distance", "mean over the weights of |ln(rate/published)|; inf: a rate missing or of the other sign");
   t.set("store", store.dir());
   t.columns = {"reading", "h_rule", "volumes", "dt_rule", "file"};

@@ -566,7 +566,7 @@ UnstableSeries store_unstable_series(const StoreSnapshot& store, const std::stri
     if (!s.published || !s.published->finite_series) continue;
     std::optional<std::string> levels;
     for (StoreSlice& slice : stored_slices(s, store)) {
-      if (!levels) levels = TsvTable::load(published_dir + "/" + s.published->file).get("rate_levels").value_or("");
+      if (!levels) levels = documents_levels_text(TsvTable::load(published_dir + "/" + s.published->file));
       add_unstable_series(s.published->table, slice.slice, slice.data, *levels, out);
     }
   }
