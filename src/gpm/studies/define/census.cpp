@@ -58,12 +58,9 @@ StoreBeyond heat_beyond(const std::string& table, const std::string& reading) {
 // 2^-10 for seeds 1, 2 and 3 (tables/beyond.tsv).
 StoreBeyond poisson_beyond() { return {{10}, {"2", "3"}}; }
 
-bool StoreBeyond::holds(const std::string& seed) const {
-  return !levels.empty() && std::find(seeds.begin(), seeds.end(), seed) != seeds.end();
-}
-
-std::vector<int> StoreBeyond::first() const {
-  return levels.empty() ? std::vector<int>{} : std::vector<int>{levels.front()};
+std::vector<int> StoreBeyond::levels_for(const std::string& seed) const {
+  const bool held = seed.empty() || std::find(seeds.begin(), seeds.end(), seed) != seeds.end();
+  return held && !levels.empty() ? std::vector<int>{levels.front()} : std::vector<int>{};
 }
 
 std::string with_levels(std::string census, const std::vector<int>& more) {

@@ -31,8 +31,9 @@ std::vector<std::string> heat_band_seeds(const std::string& table, const std::st
 struct StoreBeyond {
   std::vector<int> levels;
   std::vector<std::string> seeds;
-  bool holds(const std::string& seed) const;  // whether that seed's file reaches levels.front()
-  std::vector<int> first() const;             // {levels.front()}, or none
+  // The levels past the documents that `seed`'s file holds: {levels.front()} for seed 1 ("")
+  // and the seeds named, none for the others (their census stops at the documents' levels).
+  std::vector<int> levels_for(const std::string& seed) const;
 };
 StoreBeyond heat_beyond(const std::string& table, const std::string& reading);
 // Table 4.4 under V_i = Δx² (both h rules, one file): the levels past the thesis' 2^-9.

@@ -229,7 +229,6 @@ RegisteredStudy poisson() {
   // it names at the first of them; no published value exists there (gpm rate-levels).
   const StoreBeyond beyond = poisson_beyond();
   const std::vector<std::string> coarse = {"--levels", "5,6"}, rate_levels = {"--levels", "5,6,8,9"};
-  const std::vector<std::string> rate_levels_beyond = {"--levels", with_levels("5,6,8,9", beyond.first())};
   s.store_files = {{.name = "thesis_table4_4", .slice = "all", .coarse = coarse, .readings = {"h10", "h15"}},
                    {.name = "thesis_table4_4_cellvol", .slice = "cell", .args = {"--volumes", "cell"},
                     .census = {"--levels", with_levels("5,6,7,8,9", beyond.levels)}, .coarse = coarse,
@@ -242,7 +241,8 @@ RegisteredStudy poisson() {
     s.store_files.push_back({.name = std::string("thesis_table4_4_cellvol_seed") + seed,
                              .slice = std::string("cell_seed") + seed,
                              .args = {"--volumes", "cell", "--seed", seed},
-                             .census = beyond.holds(seed) ? rate_levels_beyond : rate_levels, .coarse = coarse});
+                             .census = {"--levels", with_levels("5,6,8,9", beyond.levels_for(seed))},
+                             .coarse = coarse});
   s.published = PublishedRates{
       .table = "thesis_table4_4", .file = "thesis_table4_4_long.tsv", .key = {"h_rule", "weight"},
       .printed_slice = "h10",
@@ -310,10 +310,9 @@ RegisteredStudy heat(const HeatTable& hp) {
     for (const std::string& seed : heat_band_seeds(hp.table, r.reading)) {
       std::vector<std::string> seeded = args;
       seeded.insert(seeded.end(), {"--seed", seed});
-      const std::vector<int> first = beyond.holds(seed) ? beyond.first() : std::vector<int>{};
       s.store_files.push_back({.name = name + reading.file_suffix() + "_seed" + seed,
                                .slice = reading.name() + "_seed" + seed, .args = seeded,
-                               .census = {"--levels", with_levels("5," + hp.rate_levels, first)},
+                               .census = {"--levels", with_levels("5," + hp.rate_levels, beyond.levels_for(seed))},
                                .coarse = {"--levels", "5"}});
     }
   }
