@@ -59,7 +59,7 @@ StoreBeyond heat_beyond(const std::string& table, const std::string& reading) {
 StoreBeyond poisson_beyond() { return {{10}, {"2", "3"}}; }
 
 std::vector<int> StoreBeyond::levels_for(const std::string& seed) const {
-  const bool held = seed.empty() || std::find(seeds.begin(), seeds.end(), seed) != seeds.end();
+  const bool held = std::find(seeds.begin(), seeds.end(), seed) != seeds.end();
   return held && !levels.empty() ? std::vector<int>{levels.front()} : std::vector<int>{};
 }
 

@@ -31,8 +31,9 @@ std::vector<std::string> heat_band_seeds(const std::string& table, const std::st
 struct StoreBeyond {
   std::vector<int> levels;
   std::vector<std::string> seeds;
-  // The levels past the documents that `seed`'s file holds: {levels.front()} for seed 1 ("")
-  // and the seeds named, none for the others (their census stops at the documents' levels).
+  // The levels past the documents that the file of `seed` (2, 3, ...) holds: {levels.front()}
+  // for the seeds named, none for the others (their census stops at the documents' levels).
+  // Seed 1's file holds all of `levels`.
   std::vector<int> levels_for(const std::string& seed) const;
 };
 StoreBeyond heat_beyond(const std::string& table, const std::string& reading);

@@ -8,13 +8,11 @@
 #include <filesystem>
 #include <map>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <tuple>
 
 #include "gpm/error.hpp"
 #include "gpm/io/text_format.hpp"
-#include "gpm/io/args.hpp"
 #include "gpm/operators/norms.hpp"
 #include "gpm/operators/testfunctions.hpp"
 #include "gpm/studies/judge/rates.hpp"
@@ -25,7 +23,6 @@
 namespace gpm {
 
 namespace {
-
 
 const char* pass_fail(bool ok) { return ok ? "pass" : "fail"; }
 const char* yes_no(bool b) { return b ? "yes" : "no"; }

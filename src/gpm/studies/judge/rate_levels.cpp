@@ -131,14 +131,13 @@ struct SeriesLabel {
 };
 
 // The rows of one series (its rates at every consecutive pair of stored levels, with the band
-// over the realizations holding both levels) and its finding.  `doc_levels`: the documents'
-// pair ("8,9").
+// over the realizations holding both levels) and its finding.  `doc`: the documents' pair of
+// levels (documents_levels).
 void add_series(RateLevels& out, const SeriesLabel& label, const Realizations& reals,
-                const std::pair<std::string, std::string>& key, const std::string& doc_levels) {
+                const std::pair<std::string, std::string>& key, const std::pair<int, int>& doc) {
   const auto it = reals.seed1.find(key);
   if (it == reals.seed1.end()) return;
   const Series& s = it->second;
-  const int doc_hi = std::stoi(doc_levels.substr(doc_levels.find(',') + 1));
   // The theory's rate, or none where the document gives a word ("unstable": Table 4.6's
   // explicit series, whose growth is the set-up fingerprint, not a rate).
   char* end = nullptr;
@@ -163,17 +162,17 @@ void add_series(RateLevels& out, const SeriesLabel& label, const Realizations& r
       blo = std::min(blo, ro), bhi = std::max(bhi, ro), ++seeds;
     }
     if (i + 2 == levels.size() && seeds > 1) band = {blo, bhi};
-    const bool document = fmt(lo) + "," + fmt(hi) == doc_levels;
+    const bool document = lo == doc.first && hi == doc.second;
     TsvRow row = out.rates.named_row();
     row["table"] = label.table, row["reading"] = label.reading, row["weight"] = label.weight, row["theta"] = label.theta;
     row["level_lo"] = fmt(lo), row["level_hi"] = fmt(hi), row["pair"] = "2^-" + fmt(lo) + "/2^-" + fmt(hi);
     row["rate"] = cell(r), row["band_lo"] = seeds > 1 ? cell(blo) : "NA";
     row["band_hi"] = seeds > 1 ? cell(bhi) : "NA", row["seeds"] = fmt(seeds);
     row["published"] = document ? cell(label.published) : "NA", row["theoretical"] = theory_cell;
-    row["where"] = document ? "document" : hi > doc_hi ? "beyond" : "coarser";
+    row["where"] = document ? "document" : hi > doc.second ? "beyond" : "coarser";
     out.rates.add_row(row);
   }
-  const bool beyond = !levels.empty() && levels.back() > doc_hi;
+  const bool beyond = !levels.empty() && levels.back() > doc.second;
   const TrendFinding f = std::isfinite(theory)
                              ? judge_trend(rates, theory, beyond, kRateTolerance, band)
                              : TrendFinding{Trend::not_decided, "no theoretical rate ('" + label.theory_text + "')"};
@@ -193,7 +192,7 @@ void heat_rate_levels(RateLevels& out, const StoreSnapshot& store, const std::st
   for (const HeatTable& hp : heat_tables()) {
     const RegisteredStudy& study = reg.study(heat_study_name(hp));
     const TsvTable pub = published_or_refuse(published_file(published, study.published->table));
-    const std::string doc_levels = documents_levels_text(pub);
+    const auto doc_levels = documents_levels(pub);
     for (const std::string reading : {"h10", "h15_cell_exact"}) {
       const Realizations reals = realizations(store, study, study.store_file_of(reading), "weight", "theta");
       for (std::size_t p = 0; p < pub.rows.size(); ++p) {
@@ -211,7 +210,7 @@ void heat_rate_levels(RateLevels& out, const StoreSnapshot& store, const std::st
 void poisson_rate_levels(RateLevels& out, const StoreSnapshot& store, const std::string& published) {
   const RegisteredStudy& study = study_registry().study("thesis_table4_4");
   const TsvTable pub = published_or_refuse(published_file(published, study.published->table));
-  const std::string doc_levels = documents_levels_text(pub);
+  const auto doc_levels = documents_levels(pub);
   const Realizations reals = realizations(store, study, study.store_file_of("h15_cell"), "h_rule", "weight");
   for (std::size_t p = 0; p < pub.rows.size(); ++p) {
     const std::string rule = pub.text(p, "h_rule"), w = pub.text(p, "weight");
