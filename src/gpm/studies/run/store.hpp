@@ -74,6 +74,11 @@ std::string escaped(const std::string& s);
 // Columns that are measurements of the run, not of the numerics (compared never): names
 // ending in "_s", "seconds", "s_per_step", anything with "rss", and the provenance columns.
 bool is_volatile_column(const std::string& name);
+// Columns that say how a Laplacian product ran, not what it gave: `storage` (assembled,
+// matrix_free, full) and `nnz` (exact when assembled, an estimate matrix-free).  --verify and
+// --recheck compare them only between rows of the same storage, so a unit recomputed
+// matrix-free (on a device, say) is judged on its numbers.
+bool is_storage_column(const std::string& name);
 
 // One data file of a study read and written unit by unit: a unit's rows are reused when the
 // current code made them (or a re-check carried them), else computed and added; the modes
