@@ -150,17 +150,17 @@ __global__ void truncation_kernel(const __grid_constant__ GridView g,
 
 // A study's fused pass: one thread per target, every weight and field (fused_target_sums);
 // the weights' tables in device memory (9 weights' tables exceed the 4 KB of parameters),
-// the fields one after another in sorted order (field f at fields + f·n).
+// the fields as sorted_fields lays them out (field f at fields + f·stride).
 __global__ void fused_pass_kernel(const __grid_constant__ GridView g,
                                   const WeightEntry* __restrict__ we, int nw,
-                                  const double* __restrict__ fields, int nf, int64_t n,
+                                  const double* __restrict__ fields, int nf, int64_t stride,
                                   const int32_t* __restrict__ tslot,
                                   const int32_t* __restrict__ tpos, int32_t nt,
                                   double* __restrict__ out) {
   const int32_t it = static_cast<int32_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (it >= nt) return;
   const double* v[kMaxFieldsDevice];
-  for (int f = 0; f < nf; ++f) v[f] = fields + static_cast<int64_t>(f) * n;
+  field_pointers(fields, stride, nf, v);
   double o[kMaxWeights * kMaxFieldsDevice * 4];
   fused_target_sums(g, we, nw, v, nf, tslot[it], o);
   const std::size_t pos = static_cast<std::size_t>(tpos[it]), m = static_cast<std::size_t>(nt);
@@ -505,19 +505,14 @@ CudaPassResult CudaFusedPass::apply(const std::vector<int32_t>& targets,
   if (r.nt > static_cast<std::size_t>(INT32_MAX))
     throw InputError("CUDA fused pass: more than 2^31 - 1 targets");
   K.prepare(slot, pos);
-  std::vector<double> sorted;
-  sorted.reserve(n * fields.size());
-  for (auto& f : fields) {
-    const std::vector<double> s = K.cl.gather(f, 0.0);
-    sorted.insert(sorted.end(), s.begin(), s.end());
-  }
-  if (I.fields.size() < sorted.size()) I.fields.allocate(sorted.size(), "the fields");
-  I.fields.upload(sorted.data(), sorted.size());
+  const SortedFields sorted = sorted_fields(K.cl, fields);
+  if (I.fields.size() < sorted.data.size()) I.fields.allocate(sorted.data.size(), "the fields");
+  I.fields.upload(sorted.data.data(), sorted.data.size());
   const std::size_t ncol = static_cast<std::size_t>(r.nw * r.nf * 4);
   if (I.out.size() < ncol * r.nt) I.out.allocate(ncol * r.nt, "the pass's results");
   K.ev->start();
   fused_pass_kernel<<<blocks_for(r.nt), kThreads>>>(
-      K.dev, I.we.get(), r.nw, I.fields.get(), r.nf, static_cast<int64_t>(n), K.tslot.get(),
+      K.dev, I.we.get(), r.nw, I.fields.get(), r.nf, sorted.stride, K.tslot.get(),
       K.tpos.get(), static_cast<int32_t>(r.nt), I.out.get());
   GPM_CUDA_CHECK(cudaGetLastError());
   K.ev->stop();

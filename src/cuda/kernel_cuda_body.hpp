@@ -242,6 +242,29 @@ inline void target_sums_any(unsigned ops, const GridView& g, const PieceTable& w
 
 constexpr int kMaxWeights = 9, kMaxFieldsDevice = 4;
 
+// The fields of a pass as the device holds them: one after another in sorted order, field f
+// at data + f·stride.  The stride is the gathered length — the particles and CellList's
+// kPad padding slots after them — not the particle count: a stride of n put every field
+// but the first kPad slots off (found on the first GPU run, 2026-12-05: Tables 4.1–4.3 at
+// relative differences up to 22, imoto's one field exact).
+struct SortedFields {
+  std::vector<double> data;
+  int64_t stride = 0;
+};
+inline SortedFields sorted_fields(const CellList& cl, const std::vector<std::vector<double>>& fields) {
+  SortedFields s;
+  for (auto& f : fields) {
+    const std::vector<double> g = cl.gather(f, 0.0);
+    s.stride = static_cast<int64_t>(g.size());
+    s.data.insert(s.data.end(), g.begin(), g.end());
+  }
+  return s;
+}
+// v[f] = field f of a SortedFields' data (device or host memory).
+GPM_HD inline void field_pointers(const double* data, int64_t stride, int nf, const double** v) {
+  for (int f = 0; f < nf; ++f) v[f] = data + static_cast<int64_t>(f) * stride;
+}
+
 // One weight of the pass: its tables, G mode and operators (bits kOpInterp, kOpGrad, kOpLap).
 struct WeightEntry {
   PieceTable w, gq;

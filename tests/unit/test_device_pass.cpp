@@ -37,10 +37,11 @@ class EmulatedDevice final : public DevicePass {
     DeviceColumns c;
     c.nw = static_cast<int>(we_.size()), c.nf = static_cast<int>(fields.size());
     c.nt = targets.size();
-    std::vector<std::vector<double>> sorted;
-    std::vector<const double*> v;
-    for (auto& f : fields) sorted.push_back(cl_.gather(f));
-    for (auto& s : sorted) v.push_back(s.data());
+    // The device's own layout of the fields (one buffer, a stride), so a wrong stride shows
+    // here on the CPU too.
+    const cuda::SortedFields sorted = cuda::sorted_fields(cl_, fields);
+    std::vector<const double*> v(fields.size());
+    cuda::field_pointers(sorted.data.data(), sorted.stride, c.nf, v.data());
     const std::size_t ncol = static_cast<std::size_t>(c.nw * c.nf * 4);
     c.data.assign(ncol * c.nt, 0.0);
     std::vector<double> o(ncol);
