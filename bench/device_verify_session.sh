@@ -15,6 +15,7 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 OUT=${OUT:-data/device-session}
 mkdir -p "$OUT"
+exec > >(tee "$OUT/session.log") 2>&1  # the steps with their levels travel with the logs
 # GPM_SOURCE_DIR was compiled in as the packing checkout's path.
 src=$(cat devbin/source_dir)
 [ -e "$src" ] || { mkdir -p "$(dirname "$src")" && ln -s "$PWD" "$src"; }
