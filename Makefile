@@ -35,7 +35,7 @@ endif
 
 # Debian packages the project needs (compilers, libraries, plotting, report).
 PACKAGES := build-essential cmake git pkg-config libeigen3-dev libcgal-dev libgmp-dev \
-            libmpfr-dev libboost-dev libgsl-dev libglpk-dev glpk-utils catch2 gnuplot-nox pandoc \
+            libmpfr-dev libboost-dev libgsl-dev libglpk-dev libfftw3-dev glpk-utils catch2 gnuplot-nox pandoc \
             chromium python3
 
 .PHONY: all report pdf test test-paper bench plan deps build data figures tables clean help

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,7 @@
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
 #include "gpm/solvers/poisson_probes.hpp"
+#include "gpm/solvers/tau_preconditioner.hpp"
 #include "gpm/studies/define/catalog.hpp"
 #include "gpm/studies/define/cost_model.hpp"
 #include "gpm/studies/define/profile.hpp"
@@ -49,9 +51,14 @@ int body(int argc, char** argv) {
       .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
       .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB); above: matrix-free")
       .opt("volumes", "lattice", "lattice: V_i = |Omega_H|/N (thesis (A.10)); cell: V_i = dx^2\n"
-                                 "  (the other reading of the volumes; the store's _cellvol file)");
+                                 "  (the other reading of the volumes; the store's _cellvol file)")
+      .opt("solver", "cg", "cg: plain conjugate gradients (the reference; every stored row);\n"
+                           "  tau: preconditioned by the lattice's fast sine transform (tau_preconditioner.hpp)");
   run.parse(argc, argv);
   const PdeVolumes volumes = parse_pde_volumes(run.args().str("volumes"));
+  const std::string solver = run.args().str("solver");
+  if (solver != "cg" && solver != "tau")
+    throw InputError("--solver '" + solver + "' is not cg or tau");
   const double tol = run.args().tolerance("tol");
   const auto storage = parse_laplacian_storage(run.args().str("storage"));
   const double max_bytes = run.args().positive("max-gb") * 1e9;
@@ -59,13 +66,16 @@ int body(int argc, char** argv) {
   require_pde_levels_fit_memory(levels, pde_h_rules(), storage, max_bytes);
 
   // --- The data file: one row per (reading of h, weight, level). ---------------------------
-  UnitCache& cache = run.open(
-      {{"program", "thesis_table4_4"}, {"profile", profile_name(run.profile())},
-       {"seed", fmt(static_cast<long long>(run.seed()))}, {"tol", fmt(tol)},
-       {"function", "sin2pi"}, {"volumes", pde_volumes_description(volumes)},
-       {"error", "max_Omega|u-U| / max_Omega|u|"},
-       {"h10", pde_h_formula(HRule::h10)}, {"h15", pde_h_formula(HRule::h15)}},
-      3);
+  // A preconditioned run names its solver in the header, so its rows (other iteration
+  // counts, the same errors to the tolerance) never mix with plain CG's in one file.
+  std::vector<std::pair<std::string, std::string>> params = {
+      {"program", "thesis_table4_4"}, {"profile", profile_name(run.profile())},
+      {"seed", fmt(static_cast<long long>(run.seed()))}, {"tol", fmt(tol)},
+      {"function", "sin2pi"}, {"volumes", pde_volumes_description(volumes)},
+      {"error", "max_Omega|u-U| / max_Omega|u|"},
+      {"h10", pde_h_formula(HRule::h10)}, {"h15", pde_h_formula(HRule::h15)}};
+  if (solver == "tau") params.emplace_back("solver", "CG preconditioned by the lattice's tau (DST-I) matrix");
+  UnitCache& cache = run.open(params, 3);
   // --- The units: the registry's (one per level, reading of h and weight, in that order).
   // A level's particles, volumes and data are shared by its units, made for the first one
   // still to compute.
@@ -89,8 +99,11 @@ int body(int argc, char** argv) {
     // Assemble −Δ_h (or keep it matrix-free), solve by CG, measure the error in Ω.
     const auto t0 = std::chrono::steady_clock::now();
     const DiscreteLaplacian L(p, V, weight(wname), h, storage, max_bytes);
-    const PoissonResult r = naming_unit(rule + ", " + wname + ", level " + fmt(k),
-                                        [&] { return solve_poisson(p, L, d.f, d.g, tol); });
+    std::unique_ptr<TauPreconditioner> pc;
+    if (solver == "tau") pc = std::make_unique<TauPreconditioner>(p, L, weight(wname), dx);
+    const PoissonResult r = naming_unit(rule + ", " + wname + ", level " + fmt(k), [&] {
+      return solve_poisson(p, L, d.f, d.g, tol, 20000, true, pc.get());
+    });
     double err = 0;
     for (std::size_t i = 0; i < p.size(); ++i)
       if (p.in_omega[i]) err = std::max(err, std::fabs(d.g[i] - r.U[i]));

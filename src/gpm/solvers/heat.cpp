@@ -133,7 +133,7 @@ void HeatSeries::begin_step(long k) {
     what_ = "heat step " + std::to_string(k + 1);
     if (s_.extrapolate) extrapolate_start(k);
     system_product(U_, MU_, y_);
-    cg_ = std::make_unique<CgState>(b_, y_, s_.tol, s_.max_iter, what_);
+    cg_ = std::make_unique<CgState>(b_, y_, s_.tol, s_.max_iter, what_, s_.pc);
   } else {
     U_ = rhs_;
   }

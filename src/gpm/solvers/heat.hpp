@@ -56,6 +56,9 @@ struct HeatSetting {
   // formed (the Krylov propagator forms U^k only for this).  The tests compare the two
   // propagators' trajectories through it.
   std::function<void(long, const Eigen::VectorXd&)> observe;
+  // The implicit steps' CG preconditioned by pc, a P ≈ D − θκΔt D M_ΩΩ (tau_preconditioner.hpp
+  // with shift 1/V̄ and scale θκΔt); nullptr: plain CG, the reference of every stored row.
+  const Preconditioner* pc = nullptr;
 };
 
 struct HeatResult {

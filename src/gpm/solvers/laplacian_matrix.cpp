@@ -691,12 +691,18 @@ Eigen::VectorXd DiscreteLaplacian::extend(const Eigen::VectorXd& x,
 }
 
 CgState::CgState(const Eigen::VectorXd& b, const Eigen::VectorXd& Sx0, double tol,
-                 int max_iter, std::string what)
-    : bnorm_(b.norm()), tol_(tol), max_iter_(max_iter), what_(std::move(what)) {
+                 int max_iter, std::string what, const Preconditioner* pc)
+    : pc_(pc), bnorm_(b.norm()), tol_(tol), max_iter_(max_iter), what_(std::move(what)) {
   if (!std::isfinite(bnorm_)) throw NumericalError(what_ + ": non-finite right-hand side");
   r_ = b - Sx0;
-  p_ = r_;
   rr_ = r_.squaredNorm();
+  if (pc_) {
+    pc_->apply(r_, z_);
+    p_ = z_;
+    rz_ = r_.dot(z_);
+  } else {
+    p_ = r_;
+  }
   stop_ = tol * tol * bnorm_ * bnorm_;
 }
 
@@ -727,14 +733,24 @@ void CgState::update(Eigen::VectorXd& x, const Eigen::VectorXd& q) {
                          cg_number(pq) + " at iteration " + std::to_string(iterations_) +
                          ", relative residual " + cg_number(rel) + ")");
   }
-  const double alpha = rr_ / pq;
+  const double alpha = (pc_ ? rz_ : rr_) / pq;
   x += alpha * p_;
   r_ -= alpha * q;
   const double rr_new = r_.squaredNorm();
   if (!std::isfinite(rr_new))
     throw NumericalError(what_ + ": non-finite residual at iteration " +
                          std::to_string(iterations_));
-  p_ = r_ + (rr_new / rr_) * p_;
+  if (pc_) {
+    pc_->apply(r_, z_);
+    const double rz_new = r_.dot(z_);
+    if (!(rz_new >= 0) || !std::isfinite(rz_new))
+      throw NumericalError(what_ + ": the preconditioner is not positive definite (r^T P^-1 r = " +
+                           cg_number(rz_new) + " at iteration " + std::to_string(iterations_) + ")");
+    p_ = z_ + (rz_new / rz_) * p_;
+    rz_ = rz_new;
+  } else {
+    p_ = r_ + (rr_new / rr_) * p_;
+  }
   rr_ = rr_new;
   ++iterations_;
 }

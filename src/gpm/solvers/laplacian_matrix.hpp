@@ -203,18 +203,31 @@ class DiscreteLaplacian {
 // explicit part of the right-hand side, the initial residual and the previous solve's true
 // residual): cg_iterate starts from Sx0 = S x₀, cg_check_true_residual takes Sx = S x at
 // exit.  Same arithmetic as conjugate_gradient, so the same iterates bit for bit.
+// A preconditioner for the conjugate gradients: z = P⁻¹ r for a symmetric positive definite
+// P ≈ S (tau_preconditioner.hpp).  Without one (nullptr) the iteration is plain CG, the
+// reference every stored row was made with, operation for operation as before.
+class Preconditioner {
+ public:
+  virtual ~Preconditioner() = default;
+  virtual void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const = 0;
+};
+
 struct CgResult {
   int iterations = 0;
   double rel_residual = 0;            // ‖b − Sx‖₂/‖b‖₂ at exit, recomputed
   double recursive_rel_residual = 0;  // the recursively updated one at exit
 };
 std::string cg_number(double v);  // %g, for the messages (1e-10, not 0.000000)
+// With a preconditioner pc, the same stopping rule on the unpreconditioned residual ‖r‖₂, so
+// both iterations answer the same question.
 template <class Apply>
 CgResult conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                            double tol, int max_iter, const std::string& what);
+                            double tol, int max_iter, const std::string& what,
+                            const Preconditioner* pc = nullptr);
 template <class Apply>
 CgResult cg_iterate(Apply&& apply, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                    const Eigen::VectorXd& Sx0, double tol, int max_iter, const std::string& what);
+                    const Eigen::VectorXd& Sx0, double tol, int max_iter, const std::string& what,
+                    const Preconditioner* pc = nullptr);
 void cg_check_true_residual(CgResult& res, const Eigen::VectorXd& b, const Eigen::VectorXd& Sx,
                             double tol, const std::string& what);
 
@@ -225,7 +238,7 @@ void cg_check_true_residual(CgResult& res, const Eigen::VectorXd& b, const Eigen
 class CgState {
  public:
   CgState(const Eigen::VectorXd& b, const Eigen::VectorXd& Sx0, double tol, int max_iter,
-          std::string what);
+          std::string what, const Preconditioner* pc = nullptr);
   // True once ‖r‖₂ ≤ tol·‖b‖₂; throws NumericalError when not and max_iter is reached.
   bool done() const;
   const Eigen::VectorXd& direction() const { return p_; }
@@ -234,8 +247,9 @@ class CgState {
   CgResult result() const;  // rel_residual still to be set (cg_check_true_residual)
 
  private:
-  Eigen::VectorXd r_, p_;
-  double bnorm_ = 0, rr_ = 0, stop_ = 0, tol_ = 0;
+  Eigen::VectorXd r_, p_, z_;  // z_ = P⁻¹ r (preconditioned only)
+  const Preconditioner* pc_ = nullptr;
+  double bnorm_ = 0, rr_ = 0, rz_ = 0, stop_ = 0, tol_ = 0;
   int iterations_ = 0, max_iter_ = 0;
   std::string what_;
 };
@@ -243,8 +257,9 @@ class CgState {
 // ---------------------------------------------------------------------------------
 template <class Apply>
 CgResult cg_iterate(Apply&& apply, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                    const Eigen::VectorXd& Sx0, double tol, int max_iter, const std::string& what) {
-  CgState cg(b, Sx0, tol, max_iter, what);
+                    const Eigen::VectorXd& Sx0, double tol, int max_iter, const std::string& what,
+                    const Preconditioner* pc) {
+  CgState cg(b, Sx0, tol, max_iter, what, pc);
   Eigen::VectorXd q(b.size());
   while (!cg.done()) {
     apply(cg.direction(), q);
@@ -255,7 +270,8 @@ CgResult cg_iterate(Apply&& apply, const Eigen::VectorXd& b, Eigen::VectorXd& x,
 
 template <class Apply>
 CgResult conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                            double tol, int max_iter, const std::string& what) {
+                            double tol, int max_iter, const std::string& what,
+                            const Preconditioner* pc) {
   const double bnorm = b.norm();
   if (!std::isfinite(bnorm)) throw NumericalError(what + ": non-finite right-hand side");
   if (bnorm == 0) {
@@ -265,7 +281,7 @@ CgResult conjugate_gradient(Apply&& apply, const Eigen::VectorXd& b, Eigen::Vect
   if (x.size() != b.size()) x = Eigen::VectorXd::Zero(b.size());
   Eigen::VectorXd q(b.size());
   apply(x, q);
-  CgResult res = cg_iterate(apply, b, x, q, tol, max_iter, what);
+  CgResult res = cg_iterate(apply, b, x, q, tol, max_iter, what, pc);
   apply(x, q);  // the true residual, once
   cg_check_true_residual(res, b, q, tol, what);
   return res;

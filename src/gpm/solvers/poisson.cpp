@@ -26,7 +26,8 @@ void require_h_connectivity(const Particles& p, double h) {
 
 PoissonResult solve_poisson(const Particles& p, const DiscreteLaplacian& L,
                             const std::vector<double>& f, const std::vector<double>& g,
-                            double tol, int max_iter, bool check_connectivity) {
+                            double tol, int max_iter, bool check_connectivity,
+                            const Preconditioner* pc) {
   if (f.size() != p.size() || g.size() != p.size() || L.n_particles() != p.size())
     throw InputError("solve_poisson: f, g and the Laplacian must cover the " +
                      std::to_string(p.size()) + " particles");
@@ -54,7 +55,7 @@ PoissonResult solve_poisson(const Particles& p, const DiscreteLaplacian& L,
   PoissonResult res;
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
   const auto t0 = std::chrono::steady_clock::now();
-  res.cg = conjugate_gradient(S, b, x, tol, max_iter, "Poisson solve");
+  res.cg = conjugate_gradient(S, b, x, tol, max_iter, "Poisson solve", pc);
   res.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   res.U = g;
   for (Eigen::Index k = 0; k < n; ++k) {

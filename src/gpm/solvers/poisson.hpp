@@ -38,11 +38,12 @@ struct PoissonResult {
 // f: the source at every particle (only the values in Ω are used); g: g̃ at every particle
 // (only the values outside Ω are used).  tol: relative residual of CG on the symmetric
 // form.  Checks h-connectivity first (set check_connectivity = false only in tests that
-// study the unchecked failure).
+// study the unchecked failure).  pc: a preconditioner of S (tau_preconditioner.hpp with
+// shift 0, scale 1); nullptr: plain CG, the reference.
 PoissonResult solve_poisson(const Particles& p, const DiscreteLaplacian& L,
                             const std::vector<double>& f, const std::vector<double>& g,
                             double tol = 1e-10, int max_iter = 20000,
-                            bool check_connectivity = true);
+                            bool check_connectivity = true, const Preconditioner* pc = nullptr);
 
 // Where the error of a solved problem sits: the relative ℓ∞(Ω) error max|u − U| / max|u|
 // over the particles in Ω, the particle attaining it and its distance from ∂Ω, and the same
