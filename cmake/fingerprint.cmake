@@ -2,16 +2,21 @@
 # and, for every program, the fingerprint of the code that decides its numbers.
 #
 # The fingerprint of a program is the SHA-256 (first 12 hex digits) of the SHA-256 of every
-# core source that can change a stored number, of the compiler and its flags (FLAGS) and of
-# the program's own source.  Which core sources those are is a rule by folder, not a list:
+# core source that can change a stored number, of the compiler and its flags (FLAGS), of
+# the program's own source and of the shared program bodies it includes (src/apps/tables/
+# NAME.hpp with NAME.cpp: only the programs that include one carry it).  Which core sources
+# those are is a rule by folder, not a list:
 #   in   the numerics (geometry, weights, kernel, operators, solvers, theory), the data
 #        format (io/tsv: how a number is written) and the studies' definitions
-#        (studies/define: catalog, set-ups, each unit's level, h, volumes and time step);
+#        (studies/define: catalog, set-ups, the registry with each unit's level, h, volumes
+#        and time step);
 #   out  the rest of io (options, progress, provenance, text), error messages, the
 #        rooms that run units and keep the store (studies/run), price profiles
-#        (studies/plan) and judge stored rates (studies/judge), and the store's census
-#        (studies/define/census: which readings, seeds and levels the store must hold):
-#        they compute no number a row stores.
+#        (studies/plan) and judge stored rates (studies/judge); and three files of
+#        studies/define that compute no number a row stores: the store's census (which
+#        readings, seeds and levels the store must hold), the cost model (pairs and work
+#        predicted for progress lines and the plan) and the unit pricer (pricing).
+#        The registry's own price and bookkeeping entries are still in (issue 57, item 2).
 # A core source that no rule names stops the build: a new folder is placed on purpose.
 # A data row carries the fingerprint of the program that computed it (src/gpm/studies/run/store.hpp):
 # a row is reused as current only under the same fingerprint, otherwise after a recorded
@@ -25,7 +30,7 @@ list(SORT core)
 set(core_text "")
 foreach(f IN LISTS core)
   file(RELATIVE_PATH r ${SRC}/src/gpm ${f})
-  if(r MATCHES "^studies/define/census\\.(c|h)pp$")
+  if(r MATCHES "^studies/define/(census|cost_model|pricing)\\.(c|h)pp$")
     continue()
   elseif(r MATCHES "^(geometry|weights|kernel|operators|solvers|theory)/" OR r MATCHES "^io/tsv\\.(c|h)pp$"
      OR r MATCHES "^studies/define/")
@@ -38,14 +43,6 @@ foreach(f IN LISTS core)
                         "number (add its folder to the in or out rule)")
   endif()
 endforeach()
-# Program bodies that several programs share (src/apps/tables/) are program code: in.
-file(GLOB shared_bodies ${SRC}/src/apps/tables/*.cpp ${SRC}/src/apps/tables/*.hpp)
-list(SORT shared_bodies)
-foreach(f IN LISTS shared_bodies)
-  file(SHA256 ${f} h)
-  file(RELATIVE_PATH r ${SRC} ${f})
-  string(APPEND core_text "${r} ${h}\n")
-endforeach()
 string(APPEND core_text "build ${FLAGS}\n")
 
 file(GLOB programs ${SRC}/src/apps/*.cpp ${SRC}/src/cli/*.cpp ${SRC}/bench/*.cpp)
@@ -54,7 +51,22 @@ set(entries "")
 foreach(f IN LISTS programs)
   get_filename_component(name ${f} NAME_WE)
   file(SHA256 ${f} h)
-  string(SHA256 fp "${core_text}${name} ${h}\n")
+  # The shared program bodies this program includes (#include "apps/tables/NAME.hpp"): the
+  # header and its NAME.cpp join this program's fingerprint, no other's.
+  set(own_text "")
+  file(STRINGS ${f} body_includes REGEX "^#include \"apps/tables/[A-Za-z0-9_]+\\.hpp\"")
+  list(SORT body_includes)
+  foreach(line IN LISTS body_includes)
+    string(REGEX REPLACE "^#include \"apps/tables/([A-Za-z0-9_]+)\\.hpp\".*" "\\1" body "${line}")
+    foreach(part ${SRC}/src/apps/tables/${body}.hpp ${SRC}/src/apps/tables/${body}.cpp)
+      if(EXISTS ${part})
+        file(SHA256 ${part} bh)
+        file(RELATIVE_PATH r ${SRC} ${part})
+        string(APPEND own_text "${r} ${bh}\n")
+      endif()
+    endforeach()
+  endforeach()
+  string(SHA256 fp "${core_text}${own_text}${name} ${h}\n")
   string(SUBSTRING ${fp} 0 12 fp)
   string(APPEND entries "    {\"${name}\", \"${fp}\"},\n")
 endforeach()

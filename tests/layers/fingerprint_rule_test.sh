@@ -1,9 +1,10 @@
 #!/bin/bash
 # The code fingerprint by rule (cmake/fingerprint.cmake), on a copy of the sources: a change of
 # h in the registry (studies/define) moves the fingerprint of the programs that compute with
-# it; an edit of the judging room (studies/judge) or of the store's census
-# (studies/define/census) moves none; a core source in a folder no
-# rule names stops the script, naming it.
+# it; an edit of the judging room (studies/judge), of the store's census
+# (studies/define/census) or of prices (studies/define/pricing, cost_model) moves none; an
+# edit of a shared program body (src/apps/tables/) moves the programs that include it and no
+# other; a core source in a folder no rule names stops the script, naming it.
 # usage: fingerprint_rule_test.sh SOURCE_DIR
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
@@ -14,6 +15,9 @@ cp -r "$src/src" "$src/bench" "$t/tree/"
 fp() {  # fp OUT: run the script on the copy; print thesis_heat's and core_voronoi's fingerprints
   cmake -DSRC="$t/tree" -DOUT="$1" -DFLAGS=test -P "$src/cmake/fingerprint.cmake" >/dev/null 2>"$t/err" || return 1
   grep -o '{"\(thesis_heat\|core_voronoi\)", "[0-9a-f]*"}' "$1" | tr '\n' ' '
+}
+fp_of() {  # fp_of PROGRAM OUT: that program's fingerprint in a generated file
+  grep -o "{\"$1\", \"[0-9a-f]*\"}" "$2"
 }
 fail=0
 before=$(fp "$t/a.cpp") || { echo "FAIL: the script failed on the sources:"; cat "$t/err"; exit 1; }
@@ -35,9 +39,27 @@ same=$(fp "$t/c.cpp")
 echo "// a level added to the census" >> "$t/tree/src/gpm/studies/define/census.cpp"
 same=$(fp "$t/e.cpp")
 [ "$same" = "$before" ] || { echo "FAIL: an edit of studies/define/census moved a fingerprint ($before -> $same)"; fail=1; }
+cp "$src/src/gpm/studies/define/census.cpp" "$t/tree/src/gpm/studies/define/census.cpp"
+# A price edit (the unit pricer, the cost model): no stored number depends on it.
+echo "// a price changed" >> "$t/tree/src/gpm/studies/define/pricing.cpp"
+echo "// a work estimate changed" >> "$t/tree/src/gpm/studies/define/cost_model.cpp"
+same=$(fp "$t/f.cpp")
+[ "$same" = "$before" ] || { echo "FAIL: an edit of the pricer or the cost model moved a fingerprint ($before -> $same)"; fail=1; }
+cp "$src/src/gpm/studies/define/pricing.cpp" "$src/src/gpm/studies/define/cost_model.cpp" "$t/tree/src/gpm/studies/define/"
+# A shared program body (src/apps/tables/) moves the programs that include it and no other.
+body=$(grep -l '^#include "apps/tables/' "$t/tree/src/apps/"*.cpp | head -1)
+[ -n "$body" ] || { echo "FAIL: no program includes a shared body (update this test)"; exit 1; }
+user=$(basename "$body" .cpp)
+inc=$(grep -o -m1 'apps/tables/[A-Za-z0-9_]*\.hpp' "$body")
+cmake -DSRC="$t/tree" -DOUT="$t/g0.cpp" -DFLAGS=test -P "$src/cmake/fingerprint.cmake" >/dev/null 2>&1
+echo "// an edit of the shared body" >> "$t/tree/src/${inc%.hpp}.cpp"
+same=$(fp "$t/g.cpp")
+[ "$same" = "$before" ] || { echo "FAIL: an edit of ${inc%.hpp}.cpp moved thesis_heat's or core_voronoi's fingerprint"; fail=1; }
+[ "$(fp_of "$user" "$t/g0.cpp")" != "$(fp_of "$user" "$t/g.cpp")" ] ||
+  { echo "FAIL: an edit of ${inc%.hpp}.cpp left $user's fingerprint, which includes it, as it was"; fail=1; }
 # A folder no rule names.
 mkdir -p "$t/tree/src/gpm/newroom" && echo "int x;" > "$t/tree/src/gpm/newroom/x.cpp"
 if fp "$t/d.cpp" >/dev/null; then echo "FAIL: a core source in an unnamed folder was accepted"; fail=1
 else grep -q "src/gpm/newroom/x.cpp" "$t/err" || { echo "FAIL: the refusal does not name the file:"; cat "$t/err"; fail=1; }; fi
-[ $fail -eq 0 ] && echo "fingerprint rule: h in define moves it, judge and the census do not, an unnamed folder is refused"
+[ $fail -eq 0 ] && echo "fingerprint rule: h in define moves it, judge, the census and prices do not, a shared body only its own programs', an unnamed folder is refused"
 exit $fail
