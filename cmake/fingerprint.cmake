@@ -12,11 +12,12 @@
 #        and time step);
 #   out  the rest of io (options, progress, provenance, text), error messages, the
 #        rooms that run units and keep the store (studies/run), price profiles
-#        (studies/plan) and judge stored rates (studies/judge); and three files of
+#        (studies/plan) and judge stored rates (studies/judge); and four files of
 #        studies/define that compute no number a row stores: the store's census (which
 #        readings, seeds and levels the store must hold), the cost model (pairs and work
-#        predicted for progress lines and the plan) and the unit pricer (pricing).
-#        The registry's own price and bookkeeping entries are still in (issue 57, item 2).
+#        predicted for progress lines and the plan), the unit pricer (pricing) and the
+#        registry's bookkeeping half (registry_books: make files, store files, published
+#        rates, figures, prices; registry.cpp keeps the programs, levels, columns and units).
 # A core source that no rule names stops the build: a new folder is placed on purpose.
 # A data row carries the fingerprint of the program that computed it (src/gpm/studies/run/store.hpp):
 # a row is reused as current only under the same fingerprint, otherwise after a recorded
@@ -30,7 +31,7 @@ list(SORT core)
 set(core_text "")
 foreach(f IN LISTS core)
   file(RELATIVE_PATH r ${SRC}/src/gpm ${f})
-  if(r MATCHES "^studies/define/(census|cost_model|pricing)\\.(c|h)pp$")
+  if(r MATCHES "^studies/define/(census|cost_model|pricing|registry_books)\\.(c|h)pp$")
     continue()
   elseif(r MATCHES "^(geometry|weights|kernel|operators|solvers|theory)/" OR r MATCHES "^io/tsv\\.(c|h)pp$"
      OR r MATCHES "^studies/define/")

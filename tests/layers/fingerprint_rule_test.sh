@@ -2,7 +2,8 @@
 # The code fingerprint by rule (cmake/fingerprint.cmake), on a copy of the sources: a change of
 # h in the registry (studies/define) moves the fingerprint of the programs that compute with
 # it; an edit of the judging room (studies/judge), of the store's census
-# (studies/define/census) or of prices (studies/define/pricing, cost_model) moves none; an
+# (studies/define/census), of prices (studies/define/pricing, cost_model) or of the registry's
+# bookkeeping (studies/define/registry_books: a seed's store file) moves none; an
 # edit of a shared program body (src/apps/tables/) moves the programs that include it and no
 # other; a core source in a folder no rule names stops the script, naming it.
 # usage: fingerprint_rule_test.sh SOURCE_DIR
@@ -46,6 +47,14 @@ echo "// a work estimate changed" >> "$t/tree/src/gpm/studies/define/cost_model.
 same=$(fp "$t/f.cpp")
 [ "$same" = "$before" ] || { echo "FAIL: an edit of the pricer or the cost model moved a fingerprint ($before -> $same)"; fail=1; }
 cp "$src/src/gpm/studies/define/pricing.cpp" "$src/src/gpm/studies/define/cost_model.cpp" "$t/tree/src/gpm/studies/define/"
+# A bookkeeping edit of the registry (a seed's store file, a figure, a price): none moves.
+books="$t/tree/src/gpm/studies/define/registry_books.cpp"
+grep -q '"thesis_table4_4_cellvol_seed"' "$books" || { echo "FAIL: the registry's books no longer list Table 4.4's seeds (update this test)"; exit 1; }
+sed -i 's/for (const char\* seed : {"2", "3", "4", "5"})/for (const char* seed : {"2", "3", "4", "5", "6"})/' "$books"
+grep -q '"5", "6"})' "$books" || { echo "FAIL: the test's seed edit did not apply (update this test)"; exit 1; }
+same=$(fp "$t/h.cpp")
+[ "$same" = "$before" ] || { echo "FAIL: a seed added to the registry's store files moved a fingerprint ($before -> $same)"; fail=1; }
+cp "$src/src/gpm/studies/define/registry_books.cpp" "$books"
 # A shared program body (src/apps/tables/) moves the programs that include it and no other.
 body=$(grep -l '^#include "apps/tables/' "$t/tree/src/apps/"*.cpp | head -1)
 [ -n "$body" ] || { echo "FAIL: no program includes a shared body (update this test)"; exit 1; }
@@ -61,5 +70,5 @@ same=$(fp "$t/g.cpp")
 mkdir -p "$t/tree/src/gpm/newroom" && echo "int x;" > "$t/tree/src/gpm/newroom/x.cpp"
 if fp "$t/d.cpp" >/dev/null; then echo "FAIL: a core source in an unnamed folder was accepted"; fail=1
 else grep -q "src/gpm/newroom/x.cpp" "$t/err" || { echo "FAIL: the refusal does not name the file:"; cat "$t/err"; fail=1; }; fi
-[ $fail -eq 0 ] && echo "fingerprint rule: h in define moves it, judge, the census and prices do not, a shared body only its own programs', an unnamed folder is refused"
+[ $fail -eq 0 ] && echo "fingerprint rule: h in define moves it, judge, the census, prices and the registry's books do not, a shared body only its own programs', an unnamed folder is refused"
 exit $fail
