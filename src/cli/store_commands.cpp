@@ -1,5 +1,5 @@
-// gpm fingerprint, store-seal, store-rates, checked-reasons, verdicts, decisions: the
-// committed result store, its provenance and the verdicts read from it.
+// gpm fingerprint, store-seal, store-add-columns, store-rates, rate-levels, checked-reasons,
+// verdicts, decisions: the committed result store, its provenance and the verdicts read from it.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>

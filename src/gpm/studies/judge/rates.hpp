@@ -29,7 +29,8 @@ namespace gpm {
 inline constexpr double kRateTolerance = 0.15;
 
 // The documents' two rate levels, coarse first, from a published file's `rate_levels` line
-// ("8,9"): the one source of the pair every judge reads.  A file without the line, or with
+// ("8,9"), as the judges read it (two other copies of the pair remain: HeatTable::rate_levels,
+// which the heat mode model reads, and the thesis table specs; issue 57).  A file without the line, or with
 // anything but two increasing levels, is refused (InputError naming the file).
 std::pair<int, int> documents_levels(const TsvTable& published);
 std::string documents_levels_text(const TsvTable& published);  // "8,9"

@@ -9,7 +9,7 @@
 // (as the profile's own rate tables are), and each slice's rates at the documents' levels are
 // joined with the published ones (rates.hpp, tolerance kRateTolerance).  `setup` says whether
 // the slice is one of the documents' own set-ups (both readings of h are: which one the thesis
-// ran is open), another jitter realization (seeds 2-6, for the seed band), or a variant beyond
+// ran is open), another jitter realization (seeds 2-5, for the seed band), or a variant beyond
 // them (uniform volumes where the thesis uses Voronoi volumes; imoto's plain grid and
 // V_i = dx^2), which has no published value to agree with.
 //

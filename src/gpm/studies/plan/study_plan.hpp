@@ -4,7 +4,8 @@
 // the same unit, so that prediction and measurement can be compared.
 //
 // Modelled studies: the entries of the study registry (registry.hpp), each pricing its own
-// units with the formulas of UnitPricer below (the data file's base name is the study's):
+// units with the formulas of UnitPricer (studies/define/pricing.hpp; each entry's price in
+// registry_books.cpp; the data file's base name is the study's):
 //   imoto_fig5_table1           one fused pass (nine weights, one field) per (level, m)
 //   thesis_table4_1, 4_2, 4_3   one fused pass per (h reading, volumes, level), plus the
 //                               Voronoi volumes once per level

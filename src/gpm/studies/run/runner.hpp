@@ -25,15 +25,15 @@
 // columns aside.  An MPI run writes at its end only (a job should be sized to its time
 // limit: one table per job, see bench/slurm_paper.sh).
 //
-//   StudyRunner run("thesis_table4_4", "Discrete Poisson problem …", poisson_table().levels.help());
+//   StudyRunner run(study_registry().study("thesis_table4_4"), "Discrete Poisson problem …");
 //   run.args().opt("tol", "1e-10", "CG relative residual");
 //   run.parse(argc, argv);
-//   UnitCache& cache = run.open(params, columns, 3);
-//   for (int k : run.levels(quick, paper)) {
-//     if (cache.has(key) || !run.claim(cost)) continue;  // stored, or another rank's unit
-//     …; cache.add(row); run.unit_done(work, line);
+//   UnitCache& cache = run.open(params, 3);         // the entry's columns
+//   for (const StudyUnit& unit : run.units()) {      // the entry's units: level, h, key
+//     if (cache.has(unit.key) || !run.claim(cost)) continue;  // stored, or another rank's
+//     …; run.add(row); run.unit_done(work, line);
 //   }
-//   if (!run.finish()) return 0;   // gathers to rank 0; verify/recheck: nothing more written
+//   run.finish();   // gathers to rank 0; verify/recheck: nothing more written
 #pragma once
 #include <chrono>
 #include <deque>

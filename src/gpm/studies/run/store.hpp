@@ -2,12 +2,14 @@
 // computed it.
 //
 // A study writes one or more data files (its registry entry's store files: a reading, a seed);
-// in each, rows whose first `key_columns` values agree form one finished unit of work (a level, or a level × order, …).  Every row ends with three
-// provenance columns:
+// in each, rows whose first `key_columns` values agree form one finished unit of work (a
+// level, or a level × order, …).  Every row ends with four provenance columns
+// (row_provenance_columns(), registry.hpp):
 //   code     the code fingerprint of the program that computed it (provenance.hpp),
 //   made_on  CPU, threads and date,
 //   checked  "computed" (by that code), or the record of the re-check that carried it
-//            over from older code.
+//            over from older code,
+//   seal     a hash of the row's other cells (row_seal below): a tripwire for accidents.
 // A unit is reused only if all its rows are present, well formed and carry the current
 // program's fingerprint.  Rows of other code are never shown as current without a check:
 //   --verify   recompute the requested units in memory and compare them with the file
