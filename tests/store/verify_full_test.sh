@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# verify_store_full.sh on a copy of one store file (Table 4.4, the cheap levels): the first run
+# logs a sealed "agree" line per level, a second run resumes (verifies nothing again), and a
+# stored number changed by hand (seal recomputed, so only the recomputation can tell) makes
+# its level "differs" with exit 4.
+# usage: verify_full_test.sh BUILD_DIR SOURCE_DIR
+export LC_ALL=C
+set -u
+build=$(cd "${1:?usage: verify_full_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
+src=$(cd "${2:?usage: verify_full_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
+t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
+mkdir -p "$t/store"
+# Levels 5 and 6 only, so that the test is quick; the file keeps its header and seals.
+awk -F'\t' '/^#/ { print; next } !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; print; next }
+  $c["level"] <= 6' "$src/results/paper/thesis_table4_4.tsv" > "$t/store/thesis_table4_4.tsv"
+run() { bash "$src/tests/store/verify_store_full.sh" "$build" "$t/store" --log "$t/verified.log" thesis_table4_4 "$@"; }
+fail=0
+run > "$t/out1" 2>&1 || { echo "FAIL: the first run failed:"; cat "$t/out1"; exit 1; }
+n=$(grep -c '	agree	' "$t/verified.log")
+[ "$n" -eq 2 ] || { echo "FAIL: expected 2 agree lines (levels 5, 6), got $n:"; cat "$t/verified.log"; fail=1; }
+awk -F'\t' 'NR > 1 && length($13) != 16 { bad = 1 } END { exit bad }' "$t/verified.log" ||
+  { echo "FAIL: a log line without its 16-digit seal"; fail=1; }
+run > "$t/out2" 2>&1
+grep -q '^verify_store_full: 0 (file, level) to verify' "$t/out2" ||
+  { echo "FAIL: the second run did not resume (it found work again):"; cat "$t/out2"; fail=1; }
+# One error at level 6 changed by hand, the seal column dropped and the file sealed anew
+# (gpm store-seal): the seals pass, only the recomputation can tell.
+awk -F'\t' -v OFS='\t' '/^#/ { print; next }
+  !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; NF--; print; next }
+  $c["level"] == 6 && !done { $c["rel_error"] = $c["rel_error"] * 1.01; done = 1 } { NF--; print }' \
+  "$t/store/thesis_table4_4.tsv" > "$t/x" && mv "$t/x" "$t/store/thesis_table4_4.tsv"
+"$build/gpm" store-seal "$t/store/thesis_table4_4.tsv" > "$t/seal.out" 2>&1 ||
+  { echo "FAIL: gpm store-seal refused the test's file:"; cat "$t/seal.out"; exit 1; }
+rm -f "$t/verified.log"
+run > "$t/out3" 2>&1
+rc=$?
+[ $rc -eq 4 ] || { echo "FAIL: a changed stored number gave exit $rc, not 4:"; cat "$t/out3"; fail=1; }
+grep -q '	6	thesis_table4_4	.*	differs	' "$t/verified.log" ||
+  { echo "FAIL: level 6 is not logged as differing:"; cat "$t/verified.log"; fail=1; }
+[ $fail -eq 0 ] && echo "verify_store_full: logs sealed lines, resumes, and a resealed edit differs"
+exit $fail

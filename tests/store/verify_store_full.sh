@@ -1,0 +1,115 @@
+#!/usr/bin/env bash
+# The whole result store recomputed, level by level, resumably (issue 58, item 3; the last item
+# of issue 42).  make test's check (verify_store.sh) recomputes only the cheap coarse units;
+# this walks every (store file, level) the store holds, cheapest first by the time its rows
+# recorded, and recomputes it with `--verify` by the path its rows name (the heat rows' own
+# propagator; storage as the program chooses it: the numbers, not the path's bookkeeping, are
+# compared: store.hpp).  Each (file, level) verified appends one sealed line to the log:
+#
+#   date  file  level  program  code  units  rows  max_rel_diff  verdict  seconds  stored_s  machine  seal
+#
+# seal: the first 16 hex digits of the SHA-256 of the line's other cells, a tripwire for
+# hand edits.  A (file, level) whose line carries the program's current code is skipped, so a
+# rerun continues where the log stops and a code change (a new fingerprint) starts it anew;
+# an interrupted level leaves no line.  A difference is a line with verdict "differs" and
+# exit 4 at the end (the log keeps it: a difference is a finding, not an accident).
+#
+# usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS]
+#                             [--dry-run] [FILE...]
+#   --log       default STORE/verified.log
+#   --budget    stop before a (file, level) whose stored time would take the run past this
+#               many seconds (default: no limit); --max-unit: skip levels whose stored time
+#               exceeds this (default: none)
+#   --dry-run   the price only: each (file, level) to do with its stored seconds, and the sum
+#   FILE...     only these store files (stems)
+export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
+set -u
+usage="usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS] [--dry-run] [FILE...]"
+[ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
+build=$1 store=$2
+shift 2
+[ -x "$build/gpm" ] || { echo "verify_store_full.sh: $build/gpm not found; $usage" >&2; exit 2; }
+[ -d "$store" ] || { echo "verify_store_full.sh: $store is not a directory; $usage" >&2; exit 2; }
+log=$store/verified.log budget="" max_unit="" dry=0 only=()
+while [ $# -gt 0 ]; do
+  case $1 in
+    --log) log=${2:?--log needs a file}; shift 2 ;;
+    --budget) budget=${2:?--budget needs seconds}; shift 2 ;;
+    --max-unit) max_unit=${2:?--max-unit needs seconds}; shift 2 ;;
+    --dry-run) dry=1; shift ;;
+    -*) echo "verify_store_full.sh: unknown option '$1'; $usage" >&2; exit 2 ;;
+    *) only+=("$1"); shift ;;
+  esac
+done
+for n in "$budget" "$max_unit"; do
+  [ -z "$n" ] || [[ $n =~ ^[0-9]+$ ]] || { echo "verify_store_full.sh: '$n' is not a whole number of seconds" >&2; exit 2; }
+done
+header="date	file	level	program	code	units	rows	max_rel_diff	verdict	seconds	stored_s	machine	seal"
+[ -f "$log" ] || [ $dry = 1 ] || printf '%s\n' "$header" > "$log"
+machine="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(nproc) cores"
+
+# Every (file, level) with its stored seconds: the distinct values of the file's time column
+# per level (a unit repeats its time on each of its rows), summed.
+todo=$(mktemp); trap 'rm -f "$todo"' EXIT
+while IFS=$'\t' read -r study file program args census coarse slice; do
+  [ ${#only[@]} -eq 0 ] || [[ " ${only[*]} " == *" $file "* ]] || continue
+  f=$store/$file.tsv
+  [ -f "$f" ] || { echo "verify_store_full.sh: $f is missing" >&2; exit 4; }
+  prog=${program%% *}
+  code=$("$build/gpm" fingerprint "$prog" | awk -F'\t' -v p="$prog" '$1 == p { print $2 }')
+  awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v code="$code" '
+    /^#/ { next }
+    !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1
+         t = ("seconds" in c) ? c["seconds"] : c["time_s"]; next }
+    { k = $c["level"]; key = k SUBSEP $t
+      if (!(key in seen)) { seen[key] = 1; s[k] += $t } }
+    END { for (k in s) printf "%s\t%s\t%s\t%s\t%s\t%.1f\n", file, k, program, args, code, s[k] }' "$f"
+done < <("$build/gpm" study --store-rows) | sort -t$'\t' -k6,6g > "$todo"
+
+# Skip what the log already vouches for under the current code.
+pending=$(mktemp); trap 'rm -f "$todo" "$pending"' EXIT
+awk -F'\t' 'NR == FNR { if (FNR > 1 && $9 == "agree") done[$2 SUBSEP $3 SUBSEP $5] = 1; next }
+  !(($1 SUBSEP $2 SUBSEP $5) in done)' "$log" "$todo" 2>/dev/null > "$pending" || cp "$todo" "$pending"
+total=$(awk -F'\t' '{ s += $6 } END { printf "%.0f", s }' "$pending")
+n=$(wc -l < "$pending")
+echo "verify_store_full: $n (file, level) to verify, $total s stored time ($(awk -v s="$total" 'BEGIN { printf "%.1f", s / 3600 }') h as recorded); $(($(wc -l < "$todo") - n)) already in $log"
+if [ $dry = 1 ]; then
+  printf 'file\tlevel\tprogram\tstored_s\n'
+  awk -F'\t' -v OFS='\t' '{ print $1, $2, $3, $6 }' "$pending"
+  exit 0
+fi
+
+spent=0 differs=0 done_n=0
+while IFS=$'\t' read -r file level program args code stored; do
+  if [ -n "$max_unit" ] && awk -v s="$stored" -v m="$max_unit" 'BEGIN { exit !(s > m) }'; then continue; fi
+  if [ -n "$budget" ] && awk -v s="$stored" -v p="$spent" -v b="$budget" 'BEGIN { exit !(p + s > b) }'; then
+    echo "verify_store_full: budget of $budget s reached ($spent s spent); rerun to continue"; break
+  fi
+  [ "$args" = "-" ] && args=""
+  t0=$(date +%s)
+  # shellcheck disable=SC2086
+  out=$("$build"/$program $args --profile paper --levels "$level" --out "$store/$file.tsv" --verify 2>&1)
+  rc=$?
+  secs=$(( $(date +%s) - t0 )); spent=$((spent + secs))
+  line=$(grep -m1 '^\[store\] verify' <<<"$out")
+  units=$(sed -n 's/.*: \([0-9]*\) units recomputed.*/\1/p' <<<"$line")
+  rows=$(sed -n 's/.* \([0-9]*\) rows compared.*/\1/p' <<<"$line")
+  diff=$(sed -n 's/.*max relative difference \([^ ]*\) .*/\1/p' <<<"$line")
+  # A level the file holds in part (a census that stores some θ or variants only): the units
+  # it lacks are recomputed too and reported "not in the file"; the rows it holds decide.
+  others=$(grep '^\[store\]   differs: ' <<<"$out" | grep -vc ': not in the file$')
+  missing=$(sed -n 's/.*recomputed (\([0-9]*\) not in the file).*/\1/p' <<<"$line")
+  [ -n "$units" ] && [ -n "$missing" ] && units=$((units - missing))
+  if [ $rc -eq 0 ] && [[ $line == *": agree" ]]; then verdict=agree
+  elif [ $rc -eq 4 ] && [ "$others" -eq 0 ] && [ "${rows:-0}" -gt 0 ] &&
+       awk -v d="${diff:-1}" 'BEGIN { exit !(d + 0 <= 1e-9) }'; then verdict=agree
+  elif [ $rc -eq 4 ]; then verdict=differs; differs=$((differs + 1))
+  else echo "verify_store_full: $file level $level: exit $rc"; tail -3 <<<"$out"; exit 1; fi
+  cells="$(date -u +%Y-%m-%dT%H:%M:%SZ)	$file	$level	${program%% *}	$code	${units:-0}	${rows:-0}	${diff:-NA}	$verdict	$secs	$stored	$machine"
+  seal=$(printf '%s' "$cells" | sha256sum | cut -c1-16)
+  printf '%s\t%s\n' "$cells" "$seal" >> "$log"
+  done_n=$((done_n + 1))
+  echo "verify_store_full: $file level $level: $verdict (max rel diff ${diff:-NA}, $secs s; stored $stored s)"
+done < "$pending"
+echo "verify_store_full: $done_n verified this run, $differs differ, $spent s"
+[ $differs -eq 0 ] || exit 4
