@@ -18,17 +18,11 @@ verify-report: $(VERIFY_STAMP)
 # inputs itself).
 paper/report.html paper/supplement.html: $(VERIFY_STAMP)
 
-# Every unit of the store recomputed under the current code and compared with the stored rows
-# (--verify at every stored level, the registry's arguments): hours at paper scale (the plan
-# prices it: make plan PROFILE=paper), for a machine lent for the purpose; its log goes to
-# results/verify_full.log.  make test recomputes the coarse units and a sample of the finer ones.
+# Every unit of the store recomputed under the current code and compared with the stored rows,
+# level by level, cheapest first, resumably: one sealed line per (file, level) in
+# results/paper/verified.log, so a rerun continues where it stopped (tests/store/
+# verify_store_full.sh; VERIFY_FLAGS=--dry-run prices it, --budget SECONDS bounds a run).
+# make test recomputes the coarse units and a sample of the finer ones.
 .PHONY: verify-store-full
 verify-store-full: build
-	@$(BUILD)/gpm study --store-rows | \
-	while IFS="$$(printf '\t')" read -r _s file program args census _c _sl; do \
-	  [ "$$args" = - ] && args=""; [ "$$census" = - ] && census=""; \
-	  echo "== $$(date -u +%FT%TZ) $$file"; \
-	  out=$$(nice -n 19 $(BUILD)/$$program $$args $$census --profile paper --out $(STORE)/$$file.tsv --verify 2>&1); rc=$$?; \
-	  echo "$$out" | grep '\[store\]\|rror'; [ $$rc -eq 0 ] || exit 1; \
-	done > results/verify_full.log.tmp 2>&1; rc=$$?; \
-	cat results/verify_full.log.tmp; mv results/verify_full.log.tmp results/verify_full.log; exit $$rc
+	nice -n 19 bash tests/store/verify_store_full.sh $(BUILD) $(STORE) $(VERIFY_FLAGS)

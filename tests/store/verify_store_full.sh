@@ -57,6 +57,12 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
   [ -f "$f" ] || { echo "verify_store_full.sh: $f is missing" >&2; exit 4; }
   prog=${program%% *}
   code=$("$build/gpm" fingerprint "$prog" | awk -F'\t' -v p="$prog" '$1 == p { print $2 }')
+  # The census's options beyond its levels (a file that holds some variants only) go along.
+  [ "$census" = "-" ] && census=""
+  extra=$(awk '{ for (i = 1; i <= NF; i++) if ($i == "--levels") i++; else printf "%s ", $i }' <<<"$census")
+  [ "$args" = "-" ] && args=""
+  args="${args}${extra:+ }${extra% }"
+  [ -n "$args" ] || args="-"
   awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v code="$code" '
     /^#/ { next }
     !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1
