@@ -256,7 +256,7 @@ int cmd_rate_levels(int argc, char** argv) {
   a.parse(argc, argv, 2);
   const std::string out_path = a.required("out");
   require_directories({{"store", a.str("store")}, {"published", a.str("published")}});
-  auto [rates, findings] = rate_levels_tables(StoreSnapshot(a.str("store")), a.str("published"));
+  auto [rates, findings] = rate_levels_tables(StoreSnapshot(a.str("store"), StoreChecks::store), a.str("published"));
   rates.save(out_path);
   if (!a.str("findings").empty()) findings.save(a.str("findings"));
   return 0;
@@ -312,7 +312,7 @@ int cmd_store_rates(int argc, char** argv) {
   const std::string out = a.required("out"), pub = a.str("published");
   require_directories({{"store", a.str("store")}, {"published", pub}});
   // One read of the store: every judgement below reads its files from this snapshot.
-  const StoreSnapshot store(a.str("store"));
+  const StoreSnapshot store(a.str("store"), StoreChecks::store);  // the store's door (snapshot.hpp)
   // The checked reasons: from a file when one is named, else computed from the same store in
   // this pass (one read of the store judges every rate; the reasons' files are outputs).
   if (a.has("no-reasons") && !a.str("reasons-from").empty())
@@ -417,7 +417,7 @@ int cmd_checked_reasons(int argc, char** argv) {
   a.parse(argc, argv, 2);
   const std::string out = a.required("out"), store = a.str("store"), pub = a.str("published");
   require_directories({{"store", store}, {"published", pub}});
-  TsvTable checked = checked_reasons(StoreSnapshot(store), pub, kRateTolerance);
+  TsvTable checked = checked_reasons(StoreSnapshot(store, StoreChecks::store), pub, kRateTolerance);
   // The header: what the report prints under the table.
   const std::pair<std::string, std::string> note = {
       "note", "rules and thresholds in src/gpm/studies/judge/checked_reasons.hpp; published values from " + pub};
@@ -473,7 +473,7 @@ int cmd_decisions(int argc, char** argv) {
   require_directories({{"store", store}, {"published", pub}});
   std::optional<TsvTable> score;
   if (!a.str("score").empty()) score = TsvTable::load(a.str("score"));
-  decisions_table(StoreSnapshot(store), pub, a.str("diagnostics"), score).save(out);
+  decisions_table(StoreSnapshot(store, StoreChecks::store), pub, a.str("diagnostics"), score).save(out);
   return 0;
 }
 

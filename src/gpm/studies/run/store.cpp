@@ -50,29 +50,6 @@ CacheMode cache_mode(const Args& a) {
                             : CacheMode::run;
 }
 
-namespace {
-// FNV-1a, 64 bits, over the first `n` cells each followed by a tab: not a secret, a tripwire.
-std::string fnv_seal(const std::vector<std::string>& row, std::size_t n) {
-  uint64_t h = 1469598103934665603ull;
-  auto feed = [&](const std::string& cell) {
-    for (unsigned char c : cell) h = (h ^ c) * 1099511628211ull;
-    h = (h ^ static_cast<unsigned char>('\t')) * 1099511628211ull;
-  };
-  for (std::size_t i = 0; i < n && i < row.size(); ++i) feed(row[i]);
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
-}  // namespace
-
-std::string row_seal(const std::vector<std::string>& row) {
-  return fnv_seal(row, row.empty() ? 0 : row.size() - 1);  // every cell but the seal
-}
-
-std::string row_seal_without_checked(const std::vector<std::string>& row) {
-  return fnv_seal(row, row.size() >= 2 ? row.size() - 2 : 0);
-}
-
 std::size_t recheck_count(const std::string& record) {
   std::size_t n = 0;
   const auto plus = record.rfind("(+");
@@ -243,9 +220,28 @@ void UnitCache::load(const std::vector<std::pair<std::string, std::string>>& par
                                escaped(old.meta[i].second) + "', then '" + escaped(old.meta[j].second) +
                                "')",
                            old.rows.size(), mode_ == CacheMode::replace);
+  // A sealed file in a result store's folder (…/results/paper/) is its reading's and
+  // realization's: --replace recomputes its own units, it never turns one reading's file into
+  // another's (Table 4.6's file by a run of Table 4.5, seed 2's by seed 3's, the identified
+  // reading's by the printed one's), and it is never a quick-profile cache, whatever its
+  // header says.
+  const bool sealed = !old.columns.empty() && old.columns.back() == "seal";
+  const bool in_store = fs::absolute(path_).parent_path().filename() == "paper" &&
+                        fs::absolute(path_).parent_path().parent_path().filename() == "results";
+  if (sealed && in_store && mode_ == CacheMode::replace)
+    for (auto& [k, v] : params) {
+      static const std::set<std::string> identity = {"table", "profile", "seed", "h_rule", "volumes",
+                                                     "steps", "dt_nominal", "jitter", "function"};
+      const auto have = old.get(k);
+      if (identity.count(k) && have && *have != v)
+        throw InputError("--out " + path_ + " holds another reading or realization (its '" + k + "' is '" +
+                         escaped(*have) + "', this run's '" + escaped(v) + "'): --replace replaces a store "
+                         "file's own units only (give another path)");
+    }
   // A file of the quick profile, found by a quick run, is a cache of minutes: replaced, not
   // defended.  A paper run never discards rows without --replace.
-  const bool quick_cache = old.get("profile") == "quick" && (quick_run_ || table_.get("profile") == "quick");
+  const bool quick_cache = !(sealed && in_store) && old.get("profile") == "quick" &&
+                           (quick_run_ || table_.get("profile") == "quick");
   const bool replace = (mode_ == CacheMode::replace || quick_cache) &&
                        mode_ != CacheMode::verify && mode_ != CacheMode::census;
   reason_ = mode_ == CacheMode::replace ? "--replace" : "a quick-profile cache";

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "gpm/io/seal.hpp"
 #include "gpm/io/tsv.hpp"
 
 namespace gpm {
@@ -55,16 +56,7 @@ constexpr double kStoreResidualRelTol = 0.1;
 // Today's date (UTC, YYYY-MM-DD), as re-check records and logs write it.
 std::string today();
 
-// The seal of a row: 16 hex digits of a 64-bit FNV-1a hash of every cell but the seal (the
-// study's cells, code, made_on, checked), each followed by a tab.  `row` holds all the
-// columns of row_provenance_columns() (the seal cell's content is ignored).  A seal is a
-// tripwire for accidents (an edit by hand, a cut row, a merge, a wrong line ending): anyone
-// can recompute it after a deliberate edit, so it is no evidence against one; that evidence
-// is git's history and recomputing the rows (--verify).
-std::string row_seal(const std::vector<std::string>& row);
-// The seal as written before 2026-12-03, which left `checked` out: read only by
-// `gpm store-seal`, which verifies rows under it once and seals them anew.
-std::string row_seal_without_checked(const std::vector<std::string>& row);
+// The seal of a row: row_seal (gpm/io/seal.hpp).
 // The re-checks a row's `checked` cell (its re-check record; not a checked reason, which
 // judges a rate: judge/checked_reasons.hpp) stands for: each "recheck …" record it holds (an
 // older chain "a; b; c") plus the count it carries as "(+N earlier)"; 0 for "computed".

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# The store's door for the judging pass (StoreChecks::store, judge/snapshot.hpp), on copies of
+# the store: gpm store-rates and gpm rate-levels stop with exit 4 naming the file for a
+# hand-edited number (its seal broken), another reading's file under a registered name, and
+# a missing registered file; the untouched store passes.  (Not guarded, so not tested: a row
+# pasted from another file of the same columns with its seal, and an edit resealed by hand:
+# those only the recomputation finds, tests/store/verify_full_test.sh.)
+# usage: judge_door_test.sh BUILD_DIR SOURCE_DIR
+export LC_ALL=C
+set -u
+build=$(cd "${1:?usage: judge_door_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
+src=$(cd "${2:?usage: judge_door_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
+t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
+fail=0
+judge() {  # judge STORE: exit codes of store-rates and rate-levels, and their messages
+  "$build/gpm" store-rates --store "$1" --published "$src/tables/published" --out "$t/r.tsv" > "$t/msg" 2>&1
+  local a=$?
+  "$build/gpm" rate-levels --store "$1" --published "$src/tables/published" --out "$t/l.tsv" >> "$t/msg" 2>&1
+  echo "$a $?"
+}
+expect() {  # expect WHAT CODES FILE: both commands exited so, and the message names FILE
+  if [ "$2" != "4 4" ] || ! grep -q "$3" "$t/msg"; then
+    echo "FAIL: $1: exit codes $2 (want 4 4), messages:"; cat "$t/msg"; fail=1
+  fi
+}
+fresh() { rm -rf "$t/s"; cp -r "$src/results/paper" "$t/s"; }
+fresh
+[ "$(judge "$t/s")" = "0 0" ] || { echo "FAIL: the untouched store was refused:"; cat "$t/msg"; fail=1; }
+# 1. One stored error edited by hand (Table 4.4, V_i = dx^2, h15 quintic at 2^-9).
+f=$t/s/thesis_table4_4_cellvol.tsv
+awk -F'\t' -v OFS='\t' '/^#/ { print; next } !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; print; next }
+  !d && $c["level"] == 9 && $c["h_rule"] == "h15" { $c["rel_error"] = $c["rel_error"] / 2; d = 1 } { print }' \
+  "$f" > "$t/x" && mv "$t/x" "$f"
+expect "a hand-edited number" "$(judge "$t/s")" "thesis_table4_4_cellvol.tsv: data row"
+# 2. Another reading's file copied over the identified reading's.
+fresh
+cp "$t/s/thesis_table4_6_dtexact.tsv" "$t/s/thesis_table4_6_h15_dtexact_cellvol.tsv"
+expect "another reading's file under the identified name" "$(judge "$t/s")" "thesis_table4_6_h15_dtexact_cellvol.tsv: written with"
+# 3. The identified reading's file deleted.
+fresh
+rm "$t/s/thesis_table4_6_h15_dtexact_cellvol.tsv"
+expect "a missing registered file" "$(judge "$t/s")" "thesis_table4_6_h15_dtexact_cellvol.tsv: missing"
+[ $fail -eq 0 ] && echo "judge door: a hand edit, a renamed file and a missing file each stop the judges with exit 4"
+exit $fail
