@@ -22,6 +22,7 @@
 #include <chrono>
 #include <limits>
 #include <map>
+#include <memory>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -38,6 +39,7 @@
 #include "gpm/solvers/heat_krylov.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 #include "gpm/solvers/poisson.hpp"
+#include "gpm/solvers/tau_preconditioner.hpp"
 #include "gpm/studies/define/catalog.hpp"
 #include "gpm/studies/define/heat_tables.hpp"
 #include "gpm/studies/define/cost_model.hpp"
@@ -93,11 +95,13 @@ std::string reading_path(const std::string& pattern, const PdeReading& r) {
 }
 
 // The data file's header for one reading.
+// A preconditioned run names its solver, so its rows (other iteration counts, the same errors
+// to the tolerance) never mix with plain CG's in one file.
 std::vector<std::pair<std::string, std::string>> heat_params(const HeatTable& ts, const StudyRunner& run,
                                                              const HeatSetting& hs, bool guarded,
-                                                             const PdeReading& r) {
+                                                             const PdeReading& r, bool tau) {
   const bool fit = r.dt_rule == DtRule::fit;
-  return {{"program", "thesis_heat"}, {"table", ts.table}, {"profile", profile_name(run.profile())},
+  std::vector<std::pair<std::string, std::string>> p = {{"program", "thesis_heat"}, {"table", ts.table}, {"profile", profile_name(run.profile())},
           {"seed", fmt(static_cast<long long>(run.seed()))}, {"kappa", fmt(kHeatKappa)}, {"T", fmt(kHeatT)},
           {"dt_nominal", ts.dt_rule}, {"steps", fit ? "K = ceil(T/dt_nominal), dt = T/K"
                               : "dt = dt_nominal, K = ceil(T/dt_nominal) (last step at K dt >= T)"},
@@ -105,6 +109,8 @@ std::vector<std::pair<std::string, std::string>> heat_params(const HeatTable& ts
           {"h_rule", h_rule_name(r.h_rule)},
           {"h", pde_h_formula(r.h_rule)}, {"volumes", pde_volumes_description(r.volumes)},
           {"error", "(4.2): max_k ||u-U||_l2(Omega_H) / max_k ||u||_l2(Omega_H)"}};
+  if (tau) p.emplace_back("solver", "implicit steps: CG preconditioned by the lattice's tau (DST-I) matrix");
+  return p;
 }
 
 // The program, in the order of the thesis' §4.3 and the deal.II step-6 style: the options,
@@ -147,7 +153,7 @@ class HeatTables {
   std::vector<PdeVolumes> volume_choices_;
   std::vector<PdeReading> readings_;
   HeatSetting hs_;
-  bool guarded_ = false, rechecking_ = false;
+  bool guarded_ = false, rechecking_ = false, tau_ = false;
   LaplacianStorage storage_ = LaplacianStorage::automatic;
   HeatPropagator how_ = HeatPropagator::automatic;
   double max_bytes_ = 0;
@@ -178,6 +184,8 @@ class HeatTables {
         .opt("thetas", "", "run only these theta of the table (comma list; default: all of them)")
         .opt("weights", "", "run only these weights (comma list; default: all three)")
         .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
+        .opt("solver", "cg", "implicit steps: cg (plain conjugate gradients, the reference of every stored\n"
+                             "  row) or tau (preconditioned by the lattice's fast sine transform)")
         .opt("propagator", "auto", "stepped: the theta-method step by step (the reference); krylov: the\n"
                                    "  recurrence propagated exactly in a Krylov subspace (heat_krylov.hpp);\n"
                                    "  auto: per series, the one with fewer predicted Laplacian products.\n"
@@ -207,6 +215,12 @@ class HeatTables {
     storage_ = parse_laplacian_storage(a.str("storage"));
     how_ = parse_heat_propagator(a.str("propagator"));
     rechecking_ = run_.mode() == CacheMode::verify || run_.mode() == CacheMode::recheck;
+    const std::string solver = a.str("solver");
+    if (solver != "cg" && solver != "tau") throw InputError("--solver '" + solver + "' is not cg or tau");
+    tau_ = solver == "tau";
+    if (rechecking_ && tau_)
+      throw InputError("--solver tau with --verify/--recheck: the stored rows were made with plain CG "
+                       "(their iteration counts would differ); compare with bench_pcg --problem heat");
     if (rechecking_ && a.has("propagator"))
       throw InputError("--propagator with --verify/--recheck: each stored row is recomputed by the "
                        "propagator that made it (its column 'propagator')");
@@ -254,7 +268,7 @@ class HeatTables {
   // The data files: one per reading, one row per (weight, θ, level).
   void open_files() {
     std::vector<StudyRunner::DataFile> files;
-    for (auto& r : readings_) files.push_back({reading_path(out_, r), heat_params(*ts_, run_, hs_, guarded_, r)});
+    for (auto& r : readings_) files.push_back({reading_path(out_, r), heat_params(*ts_, run_, hs_, guarded_, r, tau_)});
     caches_ = run_.open_files(files, heat_columns(), 3);
   }
 
@@ -342,6 +356,20 @@ class HeatTables {
                      unit.c_str(), t.m, t.change, ks.tol, t.of_data, t.rounding ? " (stalled: rounding, taken)" : "",
                      clock.seconds());
       };
+      // --solver tau: each implicit series its own P = D(I/V + θκΔt T1)D (its θ, Δt and volumes).
+      std::vector<std::unique_ptr<TauPreconditioner>> pcs;
+      if (tau_)
+        for (std::size_t i = 0; i < settings.size(); ++i) {
+          HeatSetting& s = settings[i];
+          if (!(s.theta > 0)) continue;
+          const std::vector<double>& V = V_[readings_[todo[here[i]].reading].volumes];
+          double vbar = 0;
+          for (int32_t j : L.omega()) vbar += V[j];
+          vbar /= static_cast<double>(L.n_unknowns());
+          const double dt = s.fit_T ? s.T / static_cast<double>(heat_steps(s.T, s.dt_nominal)) : s.dt_nominal;
+          pcs.push_back(std::make_unique<TauPreconditioner>(p_, L, w, dx, 1.0 / vbar, s.theta * s.kappa * dt, &V));
+          s.pc = pcs.back().get();
+        }
       const std::vector<HeatResult> rs = naming_unit(unit, [&] { return run_heat(p_, L, settings, hows, dx, ks); });
       for (std::size_t i = 0; i < here.size(); ++i) write_row(todo[here[i]], rs[i], L, wname, k, dx, h);
     }
