@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <set>
 #include <sstream>
@@ -101,11 +102,41 @@ void Args::parse(int argc, char** argv, int first) {
   check_outputs();
 }
 
+namespace {
+// Where no output option may point, whatever the file: a path that names a directory
+// (a trailing /) or exceeds the system's limits, the documents' published values
+// (tables/published/, transcribed by hand), and — for any output but a study's store file —
+// the result store's folder (results/paper/: sealed study files, written through their
+// store, and its logs and README, which no output replaces).
+void check_output_place(const std::string& option, const std::string& path, bool store_file) {
+  if (path.back() == '/')
+    throw InputError(option + " '" + path.substr(0, 200) + "' ends in '/': it names a directory, give a file");
+  if (path.size() > 4096)
+    throw InputError(option + ": the path is " + std::to_string(path.size()) + " characters long (at most 4096)");
+  for (std::size_t a = 0, b; a < path.size(); a = b + 1) {
+    b = path.find('/', a);
+    if (b == std::string::npos) b = path.size();
+    if (b - a > 255)
+      throw InputError(option + ": a name in the path is " + std::to_string(b - a) +
+                       " characters long (at most 255): '" + path.substr(a, 40) + "...'");
+  }
+  const std::filesystem::path dir = std::filesystem::absolute(path).parent_path();
+  if (dir.filename() == "published" && dir.parent_path().filename() == "tables")
+    throw InputError(option + " " + path + ": tables/published holds the documents' values, transcribed "
+                     "by hand; no program writes there (give another path)");
+  if (!store_file && dir.filename() == "paper" && dir.parent_path().filename() == "results")
+    throw InputError(option + " " + path + ": results/paper is the result store (sealed study files, "
+                     "rechecks.log, verified.log, README.md); only a study's --out writes there "
+                     "(give another path, e.g. data/paper/)");
+}
+}  // namespace
+
 void Args::check_outputs() const {
   std::vector<std::pair<std::string, std::string>> outs;
   for (auto& n : order_) {
     const Opt& o = opts_.at(n);
     if (!o.is_output || o.value.empty()) continue;
+    check_output_place("--" + n, o.value, o.is_store);
     // A program may write its own sealed files again (a study's second and third outputs are
     // sealed store files too); another program's are refused.
     if (o.is_store) check_output_path("--" + n, o.value, program_, /*writes=*/false);
