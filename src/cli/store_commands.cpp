@@ -2,6 +2,7 @@
 // verdicts, decisions: the committed result store, its provenance and the verdicts read from it.
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -180,16 +181,24 @@ int cmd_store_add_columns(int argc, char** argv) {
   for (auto& item : a.list("add")) {
     const auto eq = item.find('=');
     if (eq == std::string::npos || eq == 0) throw InputError("--add: '" + item + "' is not NAME=VALUE");
+    // A tab or a newline in a cell would cut every row of the file in the wrong place.
+    for (unsigned char c : item)
+      if (c < 0x20 || c == 0x7f)
+        throw InputError("--add: '" + escaped(item) + "' holds a control character; nothing written");
     add.push_back({item.substr(0, eq), item.substr(eq + 1)});
   }
+  // Every file locked and checked before any is written: one bad file leaves all as they were.
+  std::vector<std::unique_ptr<StoreFileLock>> locks;
+  std::vector<std::pair<std::string, TsvTable>> done;
   for (auto& path : a.list("files")) {
+    locks.push_back(std::make_unique<StoreFileLock>(path));
     TsvTable t = TsvTable::load(path);
     const int after = t.column(a.str("after"));
-    if (after < 0) throw InputError(path + ": no column '" + a.str("after") + "'");
+    if (after < 0) throw InputError(path + ": no column '" + a.str("after") + "'; nothing written");
     if (t.column("seal") != static_cast<int>(t.columns.size()) - 1)
-      throw InputError(path + ": not a sealed store file (its last column is not 'seal')");
+      throw InputError(path + ": not a sealed store file (its last column is not 'seal'); nothing written");
     for (auto& [name, value] : add)
-      if (t.column(name) >= 0) throw InputError(path + ": has a column '" + name + "' already");
+      if (t.column(name) >= 0) throw InputError(path + ": has a column '" + name + "' already; nothing written");
     for (std::size_t r = 0; r < t.rows.size(); ++r)
       if (t.rows[r].size() != t.columns.size() || t.rows[r].back() != row_seal(t.rows[r]))
         throw InputError(path + " line " + std::to_string(t.row_lines[r]) +
@@ -201,6 +210,9 @@ int cmd_store_add_columns(int argc, char** argv) {
       row.insert(row.begin() + after + 1, values.begin(), values.end());
       row.back() = row_seal(row);
     }
+    done.emplace_back(path, std::move(t));
+  }
+  for (auto& [path, t] : done) {
     t.save(path);
     std::ofstream log(std::filesystem::path(path).parent_path() / "rechecks.log", std::ios::app);
     log << std::filesystem::path(path).filename().string() << "\t" << t.rows.size() << " rows\t"

@@ -146,6 +146,16 @@ int take_lock(const std::string& lock) {
 
 }  // namespace
 
+StoreFileLock::StoreFileLock(const std::string& file) : fd_(take_lock(file + ".lock")) {
+  if (fd_ < 0)
+    throw InputError(file + " is being written by another process (its lock " + file +
+                     ".lock is held); nothing written");
+}
+
+StoreFileLock::~StoreFileLock() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
 UnitCache::UnitCache(std::string path, std::vector<std::pair<std::string, std::string>> params,
                        std::vector<std::string> columns, int key_columns, CacheMode mode,
                        bool writer, bool quick_run)

@@ -53,6 +53,20 @@ constexpr double kStoreRelTol = 1e-9;
 constexpr double kStoreResidualAbsTol = 1e-13;
 constexpr double kStoreResidualRelTol = 0.1;
 
+// The writer's lock of a store file (`<file>.lock`, as a study's run takes it), for a tool that
+// rewrites the file outside a study (gpm store-add-columns): InputError naming the file if
+// another process holds it; released when the object goes.
+class StoreFileLock {
+ public:
+  explicit StoreFileLock(const std::string& file);
+  ~StoreFileLock();
+  StoreFileLock(const StoreFileLock&) = delete;
+  StoreFileLock& operator=(const StoreFileLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
 // Today's date (UTC, YYYY-MM-DD), as re-check records and logs write it.
 std::string today();
 
