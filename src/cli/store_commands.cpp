@@ -1,6 +1,9 @@
 // gpm fingerprint, store-seal, store-add-columns, store-rates, rate-levels, checked-reasons,
 // verdicts, decisions: the committed result store, its provenance and the verdicts read from it.
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <fstream>
@@ -130,6 +133,42 @@ std::size_t seal_checked_too(TsvTable& t, const std::string& path) {
   for (auto& row : t.rows) row.back() = row_seal(row);
   return old;
 }
+// Whether git's committed version of `path` (HEAD, where the file is tracked) is a sealed
+// store file: then a copy without the seal column had it removed, and sealing it anew would
+// bless whatever was edited meanwhile.  False where git or the file's history is absent.
+bool git_has_it_sealed(const std::string& path) {
+  const std::filesystem::path p = std::filesystem::absolute(path);
+  const std::string cmd = "git -C '" + p.parent_path().string() + "' show 'HEAD:./" + p.filename().string() +
+                          "' 2>/dev/null";
+  if (p.string().find('\'') != std::string::npos) return false;  // not quotable here: no check
+  FILE* f = ::popen(cmd.c_str(), "r");
+  if (!f) return false;
+  char buf[65536];
+  bool sealed = false;
+  while (std::fgets(buf, sizeof buf, f)) {
+    std::string line(buf);
+    while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    sealed = line.size() >= 5 && line.compare(line.size() - 5, 5, "\tseal") == 0;
+    break;
+  }
+  while (std::fgets(buf, sizeof buf, f)) {}
+  ::pclose(f);
+  return sealed;
+}
+
+// One line per sealing in rechecks.log: the file, its rows, when and by whom.
+void log_sealing(const std::string& path, std::size_t rows, const std::string& what) {
+  const char* user = std::getenv("USER");
+  char host[256] = "?";
+  ::gethostname(host, sizeof host - 1);
+  const auto log_path = std::filesystem::path(path).parent_path() / "rechecks.log";
+  std::ofstream log(log_path, std::ios::app);
+  log << std::filesystem::path(path).filename().string() << "\t" << rows << " rows\t" << what << " "
+      << today() << " by " << (user ? user : "?") << "@" << host << " (gpm store-seal)\n";
+  log.close();
+  if (!log) throw InputError("cannot append to " + log_path.string() + "; " + path + " not sealed");
+}
 }  // namespace
 
 int cmd_store_seal(int argc, char** argv) {
@@ -149,12 +188,19 @@ int cmd_store_seal(int argc, char** argv) {
     if (!sealed && (t.columns.size() < 3 || !std::equal(before.begin(), before.end(), t.columns.end() - 3)))
       throw InputError(path + ": not a store file (its last columns are neither code, made_on, "
                        "checked nor ... seal)");
+    if (!sealed && git_has_it_sealed(path))
+      throw InputError(path + ": git's committed version is sealed, this copy has no seal column: a "
+                       "removed seal is not sealed again (restore the file from git); nothing written");
+    std::string what = "sealed";
     if (!sealed) {
       seal_unsealed(t, path);
     } else if (seal_checked_too(t, path) == 0) {
       std::cout << path << ": every row sealed already (" << t.rows.size() << " rows)\n";
       continue;
+    } else {
+      what = "sealed anew (the seal now covers checked)";
     }
+    log_sealing(path, t.rows.size(), what);
     t.save(path);
     std::cout << "sealed " << path << " (" << t.rows.size() << " rows)\n";
   }

@@ -271,7 +271,7 @@ TEST_CASE("store: --verify compares and writes nothing; --recheck re-stamps only
     CHECK((r[0] == "6") == (r[code] == code_fingerprint()));  // only the recomputed unit
 }
 
-TEST_CASE("store: a file written before seals is refused until sealed once", "[unit][store]") {
+TEST_CASE("store: a file without its seal column is refused, and told to come back from git", "[unit][store]") {
   TempDir t("gpm_store_");
   const std::string f = t.file("s.tsv");
   run_study(f, CacheMode::run);
@@ -284,7 +284,9 @@ TEST_CASE("store: a file written before seals is refused until sealed once", "[u
     run_study(f, CacheMode::run);
     FAIL("not refused");
   } catch (const InputError& e) {
-    CHECK_THAT(e.what(), Catch::Contains("gpm store-seal"));
+    // No longer "seal it once with gpm store-seal": that blessed whatever was edited meanwhile.
+    CHECK_THAT(e.what(), Catch::Contains("restore the file from git"));
+    CHECK_THAT(e.what(), !Catch::Contains("gpm store-seal"));
   }
   REQUIRE_THROWS_AS(run_study(f, CacheMode::recheck, 0, {5}), InputError);
   run_study(f, CacheMode::replace);

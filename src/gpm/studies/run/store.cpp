@@ -266,8 +266,8 @@ void UnitCache::load(const std::vector<std::pair<std::string, std::string>>& par
   if (old.columns != table_.columns) {
     std::vector<std::string> unsealed(table_.columns.begin(), table_.columns.end() - 1);
     if (old.columns == unsealed)
-      return refuse_file("its rows carry no seal (written before seals; seal them once with "
-                         "`gpm store-seal FILE`)", old.rows.size(), replace);
+      return refuse_file("its rows carry no seal: every store file has been sealed since 2026-12-02, "
+                         "so the seal column was removed (restore the file from git)", old.rows.size(), replace);
     std::size_t c = 0;
     while (c < old.columns.size() && c < table_.columns.size() && old.columns[c] == table_.columns[c]) ++c;
     return refuse_file("its columns differ from this program's (column " + std::to_string(c + 1) +
