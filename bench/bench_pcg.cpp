@@ -124,19 +124,21 @@ int body(int argc, char** argv) {
               // Poisson: P = D T1 D.  Heat: P = D(I/V + theta kappa dt T1)D, V the unknowns' mean.
               std::unique_ptr<gpm::TauPreconditioner> pc;
               gpm::HeatSetting hs;
-              double vbar = 0;
-              for (int32_t k : L.omega()) vbar += V[k];
-              vbar /= static_cast<double>(L.n_unknowns());
               if (heat) {
                 hs.kappa = gpm::kHeatKappa, hs.T = gpm::kHeatT, hs.theta = theta, hs.tol = tol;
                 hs.dt_nominal = table.c * std::pow(h, table.p);
                 hs.blowup_factor = std::numeric_limits<double>::infinity();
               }
-              const double dt = hs.T / static_cast<double>(gpm::heat_steps(hs.T, hs.dt_nominal));
-              if (s == "tau")
-                pc = heat ? std::make_unique<gpm::TauPreconditioner>(p, L, gpm::weight(wn), dx, 1.0 / vbar,
-                                                                     theta * hs.kappa * dt)
-                          : std::make_unique<gpm::TauPreconditioner>(p, L, gpm::weight(wn), dx);
+              if (s == "tau" && heat) {
+                double vbar = 0;
+                for (int32_t k : L.omega()) vbar += V[k];
+                vbar /= static_cast<double>(L.n_unknowns());
+                const double dt = hs.T / static_cast<double>(gpm::heat_steps(hs.T, hs.dt_nominal));
+                pc = std::make_unique<gpm::TauPreconditioner>(p, L, gpm::weight(wn), dx, 1.0 / vbar,
+                                                              theta * hs.kappa * dt);
+              } else if (s == "tau") {
+                pc = std::make_unique<gpm::TauPreconditioner>(p, L, gpm::weight(wn), dx);
+              }
               const double setup = since(t0);
               double its = 0, res = 0, secs = 0, err = 0, diff = 0;
               if (heat) {

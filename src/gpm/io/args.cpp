@@ -102,6 +102,11 @@ void Args::parse(int argc, char** argv, int first) {
   check_outputs();
 }
 
+bool in_result_store_folder(const std::string& path) {
+  const std::filesystem::path dir = std::filesystem::absolute(path).parent_path();
+  return dir.filename() == "paper" && dir.parent_path().filename() == "results";
+}
+
 namespace {
 // Where no output option may point, whatever the file: a path that names a directory
 // (a trailing /) or exceeds the system's limits, the documents' published values
@@ -124,7 +129,7 @@ void check_output_place(const std::string& option, const std::string& path, bool
   if (dir.filename() == "published" && dir.parent_path().filename() == "tables")
     throw InputError(option + " " + path + ": tables/published holds the documents' values, transcribed "
                      "by hand; no program writes there (give another path)");
-  if (!store_file && dir.filename() == "paper" && dir.parent_path().filename() == "results")
+  if (!store_file && in_result_store_folder(path))
     throw InputError(option + " " + path + ": results/paper is the result store (sealed study files, "
                      "rechecks.log, verified.log, README.md); only a study's --out writes there "
                      "(give another path, e.g. data/paper/)");

@@ -70,6 +70,10 @@ class Args {
 // for outputs a program derives from its options (a --prefix, the siblings of --out), which
 // parse() cannot know.  owner: the program running, whose own sealed store files it may
 // write again (a study's --out among them); "" for a program that writes no store file.
+// Whether `path` lies directly in a result store's folder (…/results/paper/), by name: where
+// only a study's store file is written and no sealed file is a quick-profile cache.
+bool in_result_store_folder(const std::string& path);
+
 void check_output_paths(const std::vector<std::pair<std::string, std::string>>& outputs,
                         const std::string& owner = "");
 

@@ -236,8 +236,7 @@ void UnitCache::load(const std::vector<std::pair<std::string, std::string>>& par
   // reading's by the printed one's), and it is never a quick-profile cache, whatever its
   // header says.
   const bool sealed = !old.columns.empty() && old.columns.back() == "seal";
-  const bool in_store = fs::absolute(path_).parent_path().filename() == "paper" &&
-                        fs::absolute(path_).parent_path().parent_path().filename() == "results";
+  const bool in_store = in_result_store_folder(path_);
   if (sealed && in_store && mode_ == CacheMode::replace)
     for (auto& [k, v] : params) {
       static const std::set<std::string> identity = {"table", "profile", "seed", "h_rule", "volumes",
