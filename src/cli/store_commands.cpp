@@ -19,6 +19,8 @@
 #include "gpm/studies/judge/checked_reasons.hpp"
 #include "gpm/studies/judge/decisions.hpp"
 #include "gpm/studies/judge/page_verdicts.hpp"
+#include "gpm/studies/judge/error_constants.hpp"
+#include "gpm/studies/judge/mode_constants.hpp"
 #include "gpm/studies/judge/rate_levels.hpp"
 #include "gpm/studies/judge/rates.hpp"
 #include "gpm/studies/define/registry.hpp"
@@ -365,7 +367,10 @@ int cmd_store_rates(int argc, char** argv) {
       .opt("diagnostics", "results/diagnostics", "targeted diagnostic runs that are not studies, for --decisions "
                                                  "(imoto_m5_where.tsv)")
       .output("rate-levels", "", "the heat rates at every pair of stored levels (gpm rate-levels)")
-      .output("findings", "", "per heat series, whether its rates approach the theory's (gpm rate-levels --findings)");
+      .output("findings", "", "per heat series, whether its rates approach the theory's (gpm rate-levels --findings)")
+      .output("constants", "", "the error constant e/h^p of every heat and Poisson series per level and realization, "
+                               "beside its a-priori model (src/gpm/studies/judge/error_constants.hpp)")
+      .output("constant-findings", "", "per series, the error constants' finding (approaches, stays away, not decided)");
   a.parse(argc, argv, 2);
   const std::string out = a.required("out"), pub = a.str("published");
   require_directories({{"store", a.str("store")}, {"published", pub}});
@@ -454,6 +459,24 @@ int cmd_store_rates(int argc, char** argv) {
     auto [rates, findings] = rate_levels_tables(store, pub);
     if (!a.str("rate-levels").empty()) outputs.emplace_back(a.str("rate-levels"), std::move(rates));
     if (!a.str("findings").empty()) outputs.emplace_back(a.str("findings"), std::move(findings));
+  }
+  if (!a.str("constants").empty() || !a.str("constant-findings").empty()) {
+    ErrorConstants ec = error_constants(store, pub);
+    const Lines lines = {{"constant", "rel_error / h^p, p the theory's rate"},
+                         {"model", "the one-mode prediction / h^p (Table 4.4: R eps/((1-eps)), R = max|u - phi| = " +
+                                       fmt(poisson_boundary_factor()) + "; heat: thesis_heat_mode_model)"},
+                         {"limit", "the model's constant as h -> 0"},
+                         {"rule", "q = |e/predicted - 1|; approaches: q <= " + fmt(kConstantReach) +
+                                      " and not growing; stays away: q > " + fmt(kConstantReach) +
+                                      " and q >= 0.9 q_before; else not decided (rule dated 2026-12-05, "
+                                      "results/predictions/error_constants_2e-11.md)"}};
+    if (!a.str("constants").empty())
+      outputs.emplace_back(a.str("constants"), headed(std::move(ec.constants),
+                                                      verdicts_header("gpm store-rates (error constants)", store.dir(), false, lines)));
+    if (!a.str("constant-findings").empty())
+      outputs.emplace_back(a.str("constant-findings"),
+                           headed(std::move(ec.findings),
+                                  verdicts_header("gpm store-rates (error-constant findings)", store.dir(), false, lines)));
   }
   for (auto& [path, table] : outputs) table.save(path);
   return 0;

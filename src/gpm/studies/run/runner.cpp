@@ -58,7 +58,9 @@ StudyRunner::StudyRunner(std::string program, std::string summary, std::string p
     args_.opt("seed", "1", "jitter seed (non-negative integer)")
         .opt("parts", "1", "split each fused truncation pass (Tables 4.1-4.3, Imoto Sec. 5) into this\n"
                            "  many parts, each saved in <out>.parts/ when done, so an interrupted\n"
-                           "  unit resumes from its last part (one process; other studies: no effect)");
+                           "  unit resumes from its last part (one process; other studies: no effect)")
+        .opt("only", "", "comma-separated key values (h15, or h10,quartic_polynomial): compute only\n"
+                         "  the units whose key holds every one; the file's other rows are kept");
 }
 
 StudyRunner::~StudyRunner() {
@@ -116,8 +118,21 @@ std::vector<int> StudyRunner::levels() const {
 std::vector<StudyUnit> StudyRunner::units() const {
   if (!study_ || !study_->units) throw std::logic_error("StudyRunner::units(): the study lists no units");
   std::vector<StudyUnit> out;
-  for (StudyUnit& u : study_->units({profile_ == Profile::paper, levels(), levels_given()}))
-    if (u.trimmed.empty()) out.push_back(std::move(u));
+  // --only narrows the run, never the file: a long unit can go first (a 2^-11 h15 solve
+  // before the hour-long h10 one) without a second data file.
+  const std::vector<std::string> only = kind_ == Kind::units ? args_.list("only") : std::vector<std::string>{};
+  const auto selected = [&](const StudyUnit& u) {
+    return std::all_of(only.begin(), only.end(), [&](const std::string& v) {
+      return std::find(u.key.begin(), u.key.end(), v) != u.key.end();
+    });
+  };
+  bool any = false;
+  for (StudyUnit& u : study_->units({profile_ == Profile::paper, levels(), levels_given()})) {
+    if (!u.trimmed.empty()) continue;
+    any = true;
+    if (selected(u)) out.push_back(std::move(u));
+  }
+  if (any && out.empty()) throw InputError("--only '" + args_.str("only") + "' selects no unit of " + program_);
   return out;
 }
 
