@@ -58,7 +58,7 @@ done > "$tmp/t44.tsv"
         M[$k]=$(awk -v R="$R" -v e="$e" -v h="$h" 'BEGIN{printf "%.10g", R*e/((1-e)*h*h)}')
       done
       # the seeds' spread of c at 2^-10
-      spread=$(awk -F'\t' -v r=$rule -v w=$w '$2==r && $3==w && $4==10 {c=$6/($5*$5); if(n==0||c<lo)lo=c; if(n==0||c>hi)hi=c; n++} END{printf "%.10g", n>1?(hi-lo)/2:0}' "$tmp/t44.tsv")
+      spread=$(awk -F'\t' -v r=$rule -v w=$w '$2==r && $3==w && $4==10 {c=$6/($5*$5); if(n==0||c<lo)lo=c; if(n==0||c>hi)hi=c; n++} END{printf "%.10g", (n>1)?(hi-lo)/2:0}' "$tmp/t44.tsv")
       for seed in 1 2 3; do
         [[ $rule == h10 && $seed != 1 ]] && continue   # the issue asks h10 for seed 1 only
         awk -F'\t' -v r=$rule -v w=$w -v s=$seed -v M9="${M[9]}" -v M10="${M[10]}" -v M11="${M[11]}" \
