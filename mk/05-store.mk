@@ -16,7 +16,8 @@ DATAFILES += $(DATA)/store_rates.tsv $(DATA)/store_summary.tsv $(DATA)/store_sco
 # rates at every pair of stored levels with whether they approach the theory's (the thesis'
 # conjecture: rate_levels.hpp).
 DATAFILES += $(DATA)/checked_reasons_by_mechanism.tsv $(DATA)/decisions.tsv \
-             $(DATA)/rate_levels.tsv $(DATA)/rate_levels_findings.tsv
+             $(DATA)/rate_levels.tsv $(DATA)/rate_levels_findings.tsv \
+             $(DATA)/error_constants.tsv $(DATA)/error_constant_findings.tsv
 $(DATA)/store_rates.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published/*.tsv) \
     $(wildcard results/diagnostics/*.tsv)
 	@mkdir -p $(DATA)
@@ -26,13 +27,21 @@ $(DATA)/store_rates.tsv: $(STORE_FILES) $(BUILD)/gpm $(wildcard tables/published
 	  --ident $(DATA)/setup_identification.tsv --causes $(DATA)/open_causes.tsv \
 	  --figure-files $(DATA)/store_figure_files.tsv \
 	  --diagnostics results/diagnostics --decisions $(DATA)/decisions.tsv \
-	  --rate-levels $(DATA)/rate_levels.tsv --findings $(DATA)/rate_levels_findings.tsv
+	  --rate-levels $(DATA)/rate_levels.tsv --findings $(DATA)/rate_levels_findings.tsv \
+	  --constants $(DATA)/error_constants.tsv --constant-findings $(DATA)/error_constant_findings.tsv
+$(DATA)/error_constants.tsv $(DATA)/error_constant_findings.tsv \
 $(DATA)/store_summary.tsv $(DATA)/store_score.tsv $(DATA)/setup_identification.tsv $(DATA)/open_causes.tsv \
   $(DATA)/store_figure_files.tsv $(DATA)/decisions.tsv $(DATA)/rate_levels.tsv $(DATA)/rate_levels_findings.tsv \
   $(DATA)/checked_reasons.tsv $(DATA)/checked_reasons_by_mechanism.tsv: $(DATA)/store_rates.tsv ;
 
 FIGFILES += $(FIGOUT)/thesis_rate_levels.svg
 $(FIGOUT)/thesis_rate_levels.svg: figures/thesis_rate_levels.gp figures/style.gp $(DATA)/rate_levels.tsv
+	@mkdir -p $(FIGOUT)
+	gnuplot -e "datadir='$(DATA)'; out='$@.tmp'" $< && mv $@.tmp $@
+
+# The error constants against level (judge/error_constants.hpp), beside the one-mode model.
+FIGFILES += $(FIGOUT)/thesis_error_constants.svg
+$(FIGOUT)/thesis_error_constants.svg: figures/thesis_error_constants.gp figures/style.gp $(DATA)/error_constants.tsv
 	@mkdir -p $(FIGOUT)
 	gnuplot -e "datadir='$(DATA)'; out='$@.tmp'" $< && mv $@.tmp $@
 

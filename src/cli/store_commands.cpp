@@ -16,6 +16,7 @@
 #include "cli/commands.hpp"
 #include "gpm/error.hpp"
 #include "gpm/io/provenance.hpp"
+#include "gpm/io/text_format.hpp"
 #include "gpm/studies/judge/checked_reasons.hpp"
 #include "gpm/studies/judge/decisions.hpp"
 #include "gpm/studies/judge/page_verdicts.hpp"
@@ -466,6 +467,7 @@ int cmd_store_rates(int argc, char** argv) {
                          {"model", "the one-mode prediction / h^p (Table 4.4: R eps/((1-eps)), R = max|u - phi| = " +
                                        fmt(poisson_boundary_factor()) + "; heat: thesis_heat_mode_model)"},
                          {"limit", "the model's constant as h -> 0"},
+                         {"R", format_text("%.6f", poisson_boundary_factor())},
                          {"rule", "q = |e/predicted - 1|; approaches: q <= " + fmt(kConstantReach) +
                                       " and not growing; stays away: q > " + fmt(kConstantReach) +
                                       " and q >= 0.9 q_before; else not decided (rule dated 2026-12-05, "
