@@ -2,7 +2,7 @@
 # The heat tables' set-up readings at the documents' rate levels, into the result store, in
 # the background (nice 19, resumable: a finished unit is never recomputed).  One line of the
 # queue per run; the store files are named by the reading (thesis_heat's {reading} suffix,
-# the names of the registry's store files: gpm study --reading-file).  The program is a frozen copy of the
+# the names of the registry's store files: gpm study --store-files, column slice).  The program is a frozen copy of the
 # build's thesis_heat (BIN), so that rebuilding the working tree meanwhile does not change the
 # code that writes.
 #

@@ -350,8 +350,6 @@ int cmd_store_rates(int argc, char** argv) {
          "scoreboards (src/gpm/studies/judge/verdicts.hpp defines every verdict); no study is run.");
   a.opt("store", "results/paper", "the result store")
       .opt("published", "tables/published", "the published values (imoto_table1.tsv, thesis_table4_N_long.tsv)")
-      .opt("reasons-from", "", "checked reasons for differing rates from a file (gpm checked-reasons --out); default: "
-                          "computed here from the store (checked_reasons.hpp)")
       .flag("no-reasons", "judge without any checked reason (every differing rate unexplained)")
       .output("out", "", "the rates with their verdicts and boards (required)")
       .output("reasons", "", "the checked reasons computed here, one row per checked rate (gpm checked-reasons --out)")
@@ -377,15 +375,12 @@ int cmd_store_rates(int argc, char** argv) {
   require_directories({{"store", a.str("store")}, {"published", pub}});
   // One read of the store: every judgement below reads its files from this snapshot.
   const StoreSnapshot store(a.str("store"), StoreChecks::store);  // the store's door (snapshot.hpp)
-  // The checked reasons: from a file when one is named, else computed from the same store in
-  // this pass (one read of the store judges every rate; the reasons' files are outputs).
-  if (a.has("no-reasons") && !a.str("reasons-from").empty())
-    throw InputError("--no-reasons and --reasons-from " + a.str("reasons-from") + ": choose one");
-  const bool computed = a.str("reasons-from").empty() && !a.has("no-reasons");
+  // The checked reasons, computed from the same store in this pass (one read of the store
+  // judges every rate; the reasons' files are outputs).
+  const bool computed = !a.has("no-reasons");
   if (!computed && (!a.str("reasons").empty() || !a.str("reasons-by-mechanism").empty()))
-    throw InputError("--reasons and --reasons-by-mechanism write the reasons computed here: not with --reasons-from or --no-reasons");
-  const TsvTable reasons = computed ? checked_reasons(store, pub, kRateTolerance)
-                           : a.has("no-reasons") ? TsvTable{} : TsvTable::load(a.str("reasons-from"));
+    throw InputError("--reasons and --reasons-by-mechanism write the reasons computed here: not with --no-reasons");
+  const TsvTable reasons = computed ? checked_reasons(store, pub, kRateTolerance) : TsvTable{};
   const CheckedReasons checked = a.has("no-reasons") ? CheckedReasons{} : passed_reasons(reasons);
 
   // The reading of Chapter 4 that Table 4.6's theta = 0 rates identify (paper/04-setup-rule.md).
@@ -403,9 +398,8 @@ int cmd_store_rates(int argc, char** argv) {
   outputs.emplace_back(
       out, with_header(rates_table(judged), "gpm store-rates",
                        {{"store", store.dir()},
-                        {"checked_reasons", a.has("no-reasons") ? "none (no reason accepted)"
-                                            : computed ? "computed from the store in this pass (checked_reasons.hpp)"
-                                                       : a.str("reasons-from")},
+                        {"checked_reasons", computed ? "computed from the store in this pass (checked_reasons.hpp)"
+                                                     : "none (no reason accepted)"},
                         {"note", "rates at the documents' levels from the committed paper-profile rows; status from "
                                  "rate_table (tolerance " + fmt(kRateTolerance) + "); verdict as listed in "
                                  "src/gpm/studies/judge/verdicts.hpp"}}));
@@ -485,8 +479,8 @@ int cmd_store_rates(int argc, char** argv) {
 }
 
 // gpm checked-reasons: the reasons for differing paper-scale rates, each with the diagnostic
-// that checks it against the committed store (checked_reasons.hpp); gpm store-rates --reasons-from
-// reads the first file.  Both tables are made before either is written (temporary file and
+// that checks it against the committed store (checked_reasons.hpp); gpm store-rates computes the
+// same in its judging pass.  Both tables are made before either is written (temporary file and
 // rename each): a store file that cannot be read leaves no output half done.
 int cmd_checked_reasons(int argc, char** argv) {
   Args a("gpm checked-reasons",

@@ -26,18 +26,14 @@ namespace gpm::cli {
 int cmd_study(int argc, char** argv) {
   const std::string first = argc >= 3 ? argv[2] : "";
   if (first == "--help" || first == "-h") {
-    std::cout << "usage: gpm study --list | --readings | --store-files | --store-rows | --reading-file STUDY READING |\n"
-                 "                 --make FILE | NAME [options]\n"
+    std::cout << "usage: gpm study --list | --store-files | --store-rows | --make FILE | NAME [options]\n"
                  "  --list      every registered study: document item, program, levels per profile\n"
                  "  --make FILE the studies' make rules and lists (make build writes build/studies.mk)\n"
                  "  --store-files  every study's files in the result store: program and arguments, the\n"
                  "              units each must hold (census) and the ones the store check recomputes\n"
                  "  --store-rows   the same rows for a shell loop: no header, an empty cell written '-'\n"
                  "              (while IFS=$'\\t' read -r study file program args census coarse slice)\n"
-                 "  --readings  the heat tables' set-up readings: name, h rule, volumes, time step,\n"
-                 "              store file suffix (thesis_heat's {reading})\n"
-                 "  --reading-file STUDY READING  the store file (stem) holding that set-up reading's\n"
-                 "              rows (the per-reading figures find their data with it)\n"
+
                  "  NAME        runs the study's program with its fixed arguments, then the\n"
                  "              options given (e.g. --profile quick --out FILE); see\n"
                  "              gpm study NAME --help for them\n";
@@ -64,25 +60,6 @@ int cmd_study(int argc, char** argv) {
     }
     print(t);
     return first.empty() ? 2 : 0;
-  }
-  if (first == "--readings") {
-    TsvTable t;
-    t.set("program", "gpm study --readings");
-    add_provenance(t);
-    t.columns = {"reading", "h_rule", "volumes", "dt_rule", "file_suffix"};
-    for (const PdeReading& r : pde_readings()) {
-      TsvRow row = t.named_row();
-      row["reading"] = r.name(), row["h_rule"] = h_rule_name(r.h_rule), row["volumes"] = pde_volumes_name(r.volumes);
-      row["dt_rule"] = dt_rule_name(r.dt_rule), row["file_suffix"] = r.file_suffix();
-      t.add_row(row);
-    }
-    print(t);
-    return 0;
-  }
-  if (first == "--reading-file") {
-    if (argc != 5) throw InputError("gpm study --reading-file: give a study and a reading (e.g. thesis_table4_6 h15_cell_exact)");
-    std::cout << study_registry().study(argv[3]).store_file_of(argv[4]).name << "\n";
-    return 0;
   }
   if (first == "--store-files") {
     TsvTable t = store_file_table(study_registry());
