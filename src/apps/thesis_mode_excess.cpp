@@ -9,11 +9,15 @@
 //   heat:    (1 − Q)/ε − 1                       (the decay rate μQ instead of μ(1 − ε)),
 //   Poisson: (1/Q − 1)/(1/(1 − ε) − 1) − 1        (U ≈ u/Q instead of u/(1 − ε)),
 // and gpm store-rates' measured excess (error_constants.tsv) can be set beside it level by
-// level.  One Laplacian product per (level, weight); nothing is solved.
+// level.  The projection averages the particles' local errors away; their size is measured
+// too: the particle part of the local truncation error, (Δ_h s)_j − (1 − ε)(Δs)_j, relative to
+// max|Δs|, its maximum and root mean square over Ω, and ε beside it.  One Laplacian product
+// per (level, weight); nothing is solved.
 //
 //   thesis_mode_excess --mode heat --levels 5,6,7,8,9,10 --out results/diagnostics/mode_excess_heat.tsv
 #include <chrono>
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -78,7 +82,10 @@ int body(int argc, char** argv) {
   o.set("particle_part", "Q - (1 - eps(|k|h))");
   o.set("predicted_excess", a.str("mode") == "heat" ? "(1 - Q)/eps - 1" : "(1/Q - 1)/(1/(1 - eps) - 1) - 1");
   add_provenance(o);
-  o.columns = {"weight", "level", "dx", "h", "N", "eps", "Q", "particle_part", "predicted_excess", "seconds"};
+  o.set("local_max", "max_j |(Lap_h s)_j - (1 - eps)(Lap s)_j| / max_j |Lap s|, j in Omega");
+  o.set("local_rms", "the same residual's root mean square over Omega (volume-weighted) / max_j |Lap s|");
+  o.columns = {"weight", "level", "dx", "h", "N", "eps", "Q", "particle_part", "predicted_excess",
+               "local_max", "local_rms", "seconds"};
   const Domain dom;
   for (int k : levels) {
     const double dx = std::ldexp(1.0, -k), h = pde_h(rule, dx);
@@ -92,23 +99,29 @@ int body(int argc, char** argv) {
       const DiscreteLaplacian L(p, V, w, h);
       Eigen::VectorXd y;
       L.apply_full(s, y);
-      double num = 0, den = 0;
+      const double eps = laplacian_smoothing_error(w, mode.k * h);
+      double num = 0, den = 0, lmax = 0, lsq = 0, vol = 0, lapmax = 0;
       for (std::size_t u = 0; u < L.omega().size(); ++u) {
         const int32_t j = L.omega()[u];
+        const double lap = -mode.k * mode.k * s[j], r = y[u] - (1 - eps) * lap;
         num += V[j] * s[j] * y[u];
-        den += V[j] * s[j] * (-mode.k * mode.k * s[j]);
+        den += V[j] * s[j] * lap;
+        lmax = std::max(lmax, std::fabs(r)), lsq += V[j] * r * r, vol += V[j];
+        lapmax = std::max(lapmax, std::fabs(lap));
       }
-      const double Q = num / den, eps = laplacian_smoothing_error(w, mode.k * h);
+      const double Q = num / den;
       if (!std::isfinite(Q)) throw NumericalError("level " + fmt(k) + ", " + wname + ": Q is not finite");
       const double predicted = a.str("mode") == "heat" ? (1 - Q) / eps - 1 : (1 / Q - 1) / (1 / (1 - eps) - 1) - 1;
       const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       TsvRow row = o.named_row();
       row["weight"] = wname, row["level"] = fmt(k), row["dx"] = fmt(dx), row["h"] = fmt(h);
       row["N"] = fmt(p.size()), row["eps"] = fmt(eps), row["Q"] = fmt(Q), row["particle_part"] = fmt(Q - (1 - eps));
-      row["predicted_excess"] = fmt(predicted), row["seconds"] = fmt(secs);
+      row["predicted_excess"] = fmt(predicted), row["local_max"] = fmt(lmax / lapmax);
+      row["local_rms"] = fmt(std::sqrt(lsq / vol) / lapmax), row["seconds"] = fmt(secs);
       o.add_row(row);
-      std::printf("2^-%d %-28s h=%.4f eps=%.3e Q=%.8f particle part %+.3e predicted excess %+.4f (%.1f s)\n", k,
-                  wname.c_str(), h, eps, Q, Q - (1 - eps), predicted, secs);
+      std::printf("2^-%d %-28s h=%.4f eps=%.3e Q=%.8f particle part %+.3e predicted excess %+.4f "
+                  "local max %.3e rms %.3e (%.1f s)\n", k, wname.c_str(), h, eps, Q, Q - (1 - eps), predicted,
+                  lmax / lapmax, std::sqrt(lsq / vol) / lapmax, secs);
       std::fflush(stdout);
     }
   }
