@@ -110,7 +110,7 @@ void seal_unsealed(TsvTable& t, const std::string& path) {
       chain = checked_cell(chain.substr(last + 2), recheck_count(chain) - 1);
     }
     row.push_back("");
-    row.back() = row_seal(row);
+    row.back() = row_seal(row, path);
   }
   const auto log_path = std::filesystem::path(path).parent_path() / "rechecks.log";
   std::ofstream log(log_path, std::ios::app);
@@ -120,21 +120,29 @@ void seal_unsealed(TsvTable& t, const std::string& path) {
   if (!log) throw InputError("cannot append to " + log_path.string() + "; " + path + " not sealed");
 }
 
-// Returns the number of rows sealed anew (0: every row carries the current seal already).
-std::size_t seal_checked_too(TsvTable& t, const std::string& path) {
-  std::size_t old = 0;
+// Returns the number of rows sealed anew (0: every row carries the current seal already).  A
+// row is verified under the one earlier rule the file's rows all share (without `checked`,
+// or without the file's name) before it is sealed anew; a file whose rows mix rules, or a row
+// under none, is refused whole.
+std::size_t seal_anew(TsvTable& t, const std::string& path) {
+  std::size_t current = 0, unbound = 0, unchecked = 0;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     auto& row = t.rows[r];
-    if (row.size() != t.columns.size() || (row.back() != row_seal(row) && row.back() != row_seal_without_checked(row)))
+    const bool whole = row.size() == t.columns.size();
+    if (whole && row.back() == row_seal(row, path)) ++current;
+    else if (whole && row.back() == row_seal_unbound(row)) ++unbound;
+    else if (whole && row.back() == row_seal_without_checked(row)) ++unchecked;
+    else
       throw InputError(path + " line " + std::to_string(t.row_lines[r]) +
-                       ": its seal matches its cells under neither rule; nothing written");
-    old += row.back() != row_seal(row);
+                       ": its seal matches its cells under no rule (this file's name, the seal before it, "
+                       "the seal before `checked`); nothing written");
   }
-  if (old != 0 && old != t.rows.size())
-    throw InputError(path + ": " + std::to_string(old) + " of " + std::to_string(t.rows.size()) +
-                     " rows carry the seal without `checked`, the rest the current one; nothing written");
-  for (auto& row : t.rows) row.back() = row_seal(row);
-  return old;
+  if (current != t.rows.size() && (current != 0 || (unbound != 0 && unchecked != 0)))
+    throw InputError(path + ": its rows carry seals of different rules (" + std::to_string(current) + " current, " +
+                     std::to_string(unbound) + " without the file's name, " + std::to_string(unchecked) +
+                     " without `checked`); nothing written");
+  for (auto& row : t.rows) row.back() = row_seal(row, path);
+  return t.rows.size() - current;
 }
 // Whether git's committed version of `path` (HEAD, where the file is tracked) is a sealed
 // store file: then a copy without the seal column had it removed, and sealing it anew would
@@ -178,8 +186,9 @@ int cmd_store_seal(int argc, char** argv) {
   if (argc >= 3 && (std::string(argv[2]) == "--help" || std::string(argv[2]) == "-h")) {
     std::cout << "usage: gpm store-seal FILE...\n"
                  "Seals result-store files: one written before seals gets the seal column (its\n"
-                 "re-check chains shortened to their last record); one sealed before the seal\n"
-                 "covered `checked` is verified row by row under that seal and sealed anew.\n";
+                 "re-check chains shortened to their last record); one sealed under an earlier\n"
+                 "rule (before the seal bound a row to its file's name, 2026-12-05, or covered\n"
+                 "`checked`, 2026-12-03) is verified row by row under that rule and sealed anew.\n";
     return 0;
   }
   if (argc < 3) throw InputError("gpm store-seal: name at least one file (see --help)");
@@ -197,11 +206,11 @@ int cmd_store_seal(int argc, char** argv) {
     std::string what = "sealed";
     if (!sealed) {
       seal_unsealed(t, path);
-    } else if (seal_checked_too(t, path) == 0) {
+    } else if (seal_anew(t, path) == 0) {
       std::cout << path << ": every row sealed already (" << t.rows.size() << " rows)\n";
       continue;
     } else {
-      what = "sealed anew (the seal now covers checked)";
+      what = "sealed anew (the seal now binds the file's name)";
     }
     log_sealing(path, t.rows.size(), what);
     t.save(path);
@@ -249,15 +258,15 @@ int cmd_store_add_columns(int argc, char** argv) {
     for (auto& [name, value] : add)
       if (t.column(name) >= 0) throw InputError(path + ": has a column '" + name + "' already; nothing written");
     for (std::size_t r = 0; r < t.rows.size(); ++r)
-      if (t.rows[r].size() != t.columns.size() || t.rows[r].back() != row_seal(t.rows[r]))
+      if (t.rows[r].size() != t.columns.size() || t.rows[r].back() != row_seal(t.rows[r], path))
         throw InputError(path + " line " + std::to_string(t.row_lines[r]) +
-                         ": its seal does not match its cells; nothing written");
+                         ": its seal does not match its cells and this file's name; nothing written");
     std::vector<std::string> names, values;
     for (auto& [name, value] : add) names.push_back(name), values.push_back(value);
     t.columns.insert(t.columns.begin() + after + 1, names.begin(), names.end());
     for (auto& row : t.rows) {
       row.insert(row.begin() + after + 1, values.begin(), values.end());
-      row.back() = row_seal(row);
+      row.back() = row_seal(row, path);
     }
     done.emplace_back(path, std::move(t));
   }

@@ -8,27 +8,28 @@ set -u
 build=$(cd "${1:?usage: add_columns_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
 src=$(cd "${2:?usage: add_columns_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
-cp "$src/results/paper/thesis_table4_4_seed2.tsv" "$t/a.tsv"
-cp "$src/results/paper/thesis_table4_4_seed3.tsv" "$t/b.tsv"
-cp "$t/a.tsv" "$t/a0"; cp "$t/b.tsv" "$t/b0"
+# The copies keep their names (a seal binds its file's name: gpm/io/seal.hpp).
+a=thesis_table4_4_seed2.tsv b=thesis_table4_4_seed3.tsv
+cp "$src/results/paper/$a" "$src/results/paper/$b" "$t/"
+cp "$t/$a" "$t/a0"; cp "$t/$b" "$t/b0"
 fail=0
 add() { "$build/gpm" store-add-columns --after storage "$@" > "$t/msg" 2>&1; }
-add --add "$(printf 'x=1\t2')" --files "$t/a.tsv"
-[ $? -eq 2 ] && cmp -s "$t/a.tsv" "$t/a0" || { echo "FAIL: a tab in --add was not refused cleanly:"; cat "$t/msg"; fail=1; }
+add --add "$(printf 'x=1\t2')" --files "$t/$a"
+[ $? -eq 2 ] && cmp -s "$t/$a" "$t/a0" || { echo "FAIL: a tab in --add was not refused cleanly:"; cat "$t/msg"; fail=1; }
 # b bad: one cell edited, its seal broken.
-sed -i '0,/\tassembled\t/s//\tassembled \t/' "$t/b.tsv"
-add --add x=1 --files "$t/a.tsv,$t/b.tsv"
-[ $? -eq 2 ] && cmp -s "$t/a.tsv" "$t/a0" || { echo "FAIL: with b bad, a was changed or the call passed:"; cat "$t/msg"; fail=1; }
-cp "$t/b0" "$t/b.tsv"
+sed -i '0,/\tassembled\t/s//\tassembled \t/' "$t/$b"
+add --add x=1 --files "$t/$a,$t/$b"
+[ $? -eq 2 ] && cmp -s "$t/$a" "$t/a0" || { echo "FAIL: with b bad, a was changed or the call passed:"; cat "$t/msg"; fail=1; }
+cp "$t/b0" "$t/$b"
 # A lock held by another process.
-flock "$t/a.tsv.lock" sleep 5 & sleep 0.5
-add --add x=1 --files "$t/a.tsv"
+flock "$t/$a.lock" sleep 5 & sleep 0.5
+add --add x=1 --files "$t/$a"
 rc=$?
 wait
-[ $rc -eq 2 ] && grep -q "lock" "$t/msg" && cmp -s "$t/a.tsv" "$t/a0" ||
+[ $rc -eq 2 ] && grep -q "lock" "$t/msg" && cmp -s "$t/$a" "$t/a0" ||
   { echo "FAIL: a held lock did not stop the call (exit $rc):"; cat "$t/msg"; fail=1; }
-add --add x=1 --files "$t/a.tsv,$t/b.tsv" || { echo "FAIL: the good call failed:"; cat "$t/msg"; fail=1; }
-grep -q $'storage\tx\t' "$t/a.tsv" && grep -q "columns added" "$t/rechecks.log" ||
+add --add x=1 --files "$t/$a,$t/$b" || { echo "FAIL: the good call failed:"; cat "$t/msg"; fail=1; }
+grep -q $'storage\tx\t' "$t/$a" && grep -q "columns added" "$t/rechecks.log" ||
   { echo "FAIL: the column or the log line is missing"; fail=1; }
 [ $fail -eq 0 ] && echo "store-add-columns: control characters, a bad second file and a held lock leave every file as it was"
 exit $fail

@@ -17,7 +17,8 @@ failed=0
 SAMPLE_UNITS=$unit bash "$src/tests/store/verify_sample.sh" "$build" "$t/s" >"$t/log" 2>&1 ||
   { echo "FAIL: the untouched copy fails the sampled check"; tail -3 "$t/log"; failed=1; }
 # Halve the rel_error of the quartic theta = 1/2 row at 2^-7 and seal it again (FNV-1a, 64
-# bits, over every cell but the seal, each followed by a tab: store.hpp's row_seal).
+# bits, over the file's name and every cell but the seal, each followed by a tab:
+# gpm/io/seal.hpp's row_seal).
 python3 - "$t/s/$f" <<'PY'
 import sys
 path = sys.argv[1]
@@ -25,9 +26,10 @@ lines = open(path).read().split("\n")
 head = next(i for i, l in enumerate(lines) if l and not l.startswith("#"))
 cols = lines[head].split("\t")
 c = {n: i for i, n in enumerate(cols)}
+name = path.rsplit("/", 1)[-1].rsplit(".", 1)[0]
 def seal(cells):
     h = 1469598103934665603
-    for cell in cells[:-1]:
+    for cell in [name] + cells[:-1]:
         for b in cell.encode() + b"\t":
             h = ((h ^ b) * 1099511628211) % (1 << 64)
     return "%016x" % h

@@ -48,7 +48,7 @@ std::vector<std::vector<std::string>> rows_of(const std::string& path) {
 
 // Rows edited here as if older code had written them: sealed again, as that code would have.
 void save_resealed(TsvTable& t, const std::string& path) {
-  for (auto& r : t.rows) r.back() = row_seal(r);
+  for (auto& r : t.rows) r.back() = row_seal(r, path);
   t.save(path);
 }
 
@@ -255,7 +255,7 @@ TEST_CASE("store: --verify compares and writes nothing; --recheck re-stamps only
   run_study(f, CacheMode::recheck, 0, {5});
   for (auto& r : rows_of(f)) {
     CHECK(r[code] == code_fingerprint());
-    CHECK(r.back() == row_seal(r));  // sealed anew
+    CHECK(r.back() == row_seal(r, f));  // sealed anew
     if (r[0] == "6") CHECK(r[checked].find("recheck") == 0);
     if (r[0] == "5") CHECK(r[checked] == "computed");
   }
@@ -344,7 +344,26 @@ TEST_CASE("store: the seal covers `checked` too", "[unit][store]") {
   REQUIRE_THROWS_AS(run_study(f, CacheMode::run), InputError);
   // The seal before it covered `checked` (what `gpm store-seal` migrates): not the seal now.
   auto row = TsvTable::load(f).rows[0];
-  CHECK(row_seal_without_checked(row) != row_seal(row));
+  CHECK(row_seal_without_checked(row) != row_seal(row, f));
+}
+
+TEST_CASE("store: the seal binds a row to its file's name", "[unit][store]") {
+  TempDir t("gpm_store_");
+  const std::string f = t.file("s.tsv"), g = t.file("s_seed2.tsv");
+  run_study(f, CacheMode::run);
+  auto row = TsvTable::load(f).rows[0];
+  CHECK(row.back() == row_seal(row, f));
+  CHECK(row_seal(row, f) == row_seal(row, "elsewhere/s.tsv"));  // the name, not the folder
+  CHECK(row_seal(row, f) != row_seal(row, g));
+  CHECK(row_seal(row, f) != row_seal_unbound(row));
+  // The file copied under another name: its rows are refused there, naming why.
+  fs::copy_file(f, g);
+  REQUIRE_THROWS_WITH(run_study(g, CacheMode::census), Catch::Contains("pasted from another file"));
+  // Rows sealed under the unbound rule (before 2026-12-05): refused, pointing to gpm store-seal.
+  auto tt = TsvTable::load(f);
+  for (auto& r : tt.rows) r.back() = row_seal_unbound(r);
+  tt.save(f);
+  REQUIRE_THROWS_WITH(run_study(f, CacheMode::census), Catch::Contains("gpm store-seal"));
 }
 
 TEST_CASE("store: a header naming a key twice is refused, not obeyed", "[unit][store]") {
@@ -444,7 +463,7 @@ TEST_CASE("store: a removed lock file loses no rows: the lock is taken again and
     add_unit(first, 5);
     auto tt = TsvTable::load(f);
     auto extra = tt.rows;
-    for (auto& r : extra) r[0] = "9", r.back() = row_seal(r);
+    for (auto& r : extra) r[0] = "9", r.back() = row_seal(r, f);
     tt.rows.insert(tt.rows.end(), extra.begin(), extra.end());
     tt.save(f);
     add_unit(first, 7);

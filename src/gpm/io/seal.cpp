@@ -2,30 +2,43 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 
 namespace gpm {
 
 namespace {
-// FNV-1a, 64 bits, over the first `n` cells each followed by a tab: not a secret, a tripwire.
-std::string fnv_seal(const std::vector<std::string>& row, std::size_t n) {
-  uint64_t h = 1469598103934665603ull;
+constexpr uint64_t kOffset = 1469598103934665603ull, kPrime = 1099511628211ull;
+
+// FNV-1a, 64 bits, continued from `h` over the first `n` cells each followed by a tab: not a
+// secret, a tripwire.
+uint64_t feed_cells(uint64_t h, const std::vector<std::string>& row, std::size_t n) {
   auto feed = [&](const std::string& cell) {
-    for (unsigned char c : cell) h = (h ^ c) * 1099511628211ull;
-    h = (h ^ static_cast<unsigned char>('\t')) * 1099511628211ull;
+    for (unsigned char c : cell) h = (h ^ c) * kPrime;
+    h = (h ^ static_cast<unsigned char>('\t')) * kPrime;
   };
   for (std::size_t i = 0; i < n && i < row.size(); ++i) feed(row[i]);
+  return h;
+}
+std::string hex(uint64_t h) {
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
   return buf;
 }
+std::size_t but_seal(const std::vector<std::string>& row) { return row.empty() ? 0 : row.size() - 1; }
 }  // namespace
 
-std::string row_seal(const std::vector<std::string>& row) {
-  return fnv_seal(row, row.empty() ? 0 : row.size() - 1);  // every cell but the seal
+std::string sealed_name(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+std::string row_seal(const std::vector<std::string>& row, const std::string& path) {
+  return hex(feed_cells(feed_cells(kOffset, {sealed_name(path)}, 1), row, but_seal(row)));
+}
+
+std::string row_seal_unbound(const std::vector<std::string>& row) {
+  return hex(feed_cells(kOffset, row, but_seal(row)));
 }
 
 std::string row_seal_without_checked(const std::vector<std::string>& row) {
-  return fnv_seal(row, row.size() >= 2 ? row.size() - 2 : 0);
+  return hex(feed_cells(kOffset, row, row.size() >= 2 ? row.size() - 2 : 0));
 }
 
 }  // namespace gpm

@@ -1,21 +1,30 @@
 // The seal of a result-store row, one definition for the store that writes it (studies/run/
 // store.hpp) and the judges that read it (studies/judge/snapshot.hpp).
 //
-// 16 hex digits of a 64-bit FNV-1a hash of every cell but the seal (the study's cells, code,
-// made_on, checked), each followed by a tab.  `row` holds all the columns of the store's
-// provenance (the seal cell, last, is ignored).  A seal is a tripwire for accidents (an edit by
-// hand, a cut row, a merge, a wrong line ending): anyone can recompute it after a deliberate
-// edit, so it is no evidence against one; that evidence is git's history and recomputing the
-// rows (--verify, tests/store/verify_store_full.sh).
+// 16 hex digits of a 64-bit FNV-1a hash of the file's name (its stem: no folder, no ".tsv")
+// and then every cell but the seal (the study's cells, code, made_on, checked), each followed
+// by a tab.  The name binds a row to its file: rows pasted from another file (another jitter
+// realization, another reading) or a file copied over another's name no longer match (issue
+// 61).  `row` holds all the columns of the store's provenance (the seal cell, last, is
+// ignored).  A seal is a tripwire for accidents (an edit by hand, a cut or pasted row, a merge,
+// a wrong line ending): anyone can recompute it after a deliberate edit, so it is no evidence
+// against one; that evidence is git's history and recomputing the rows (--verify,
+// tests/store/verify_store_full.sh).
 #pragma once
 #include <string>
 #include <vector>
 
 namespace gpm {
 
-std::string row_seal(const std::vector<std::string>& row);
-// The seal as written before 2026-12-03, which left `checked` out: read only by
-// `gpm store-seal`, which verifies rows under it once and seals them anew.
+// The seal of `row` in the file at `path` (its stem is what is bound).
+std::string row_seal(const std::vector<std::string>& row, const std::string& path);
+// The name a seal binds: the stem of `path` ("results/paper/x.tsv" -> "x").
+std::string sealed_name(const std::string& path);
+
+// The seals written before: without the file's name (2026-12-03 to 2026-12-05), and before
+// 2026-12-03 also without `checked`.  Read only by `gpm store-seal`, which verifies rows under
+// them once and seals them anew, and by the messages that say so.
+std::string row_seal_unbound(const std::vector<std::string>& row);
 std::string row_seal_without_checked(const std::vector<std::string>& row);
 
 }  // namespace gpm

@@ -59,9 +59,10 @@ void check_store_file(const std::string& path, const TsvTable& t, const Register
   if (t.columns.empty() || t.columns.back() != "seal")
     throw StoreMismatch(path + ": its rows carry no seal column");
   for (std::size_t r = 0; r < t.rows.size(); ++r)
-    if (t.rows[r].size() != t.columns.size() || t.rows[r].back() != row_seal(t.rows[r]))
+    if (t.rows[r].size() != t.columns.size() || t.rows[r].back() != row_seal(t.rows[r], path))
       throw StoreMismatch(path + ": data row " + std::to_string(r + 1) +
-                          ": its seal does not match its cells (edited after it was written?)");
+                          ": its seal does not match its cells and this file's name (edited after it was "
+                          "written, pasted from another file, or the file renamed?)");
 }
 
 }  // namespace

@@ -247,7 +247,7 @@ std::string part_seal(const TsvTable& t) {
   for (auto& c : t.columns) cells.push_back(c);
   for (auto& r : t.rows) cells.insert(cells.end(), r.begin(), r.end());
   cells.push_back("");  // the seal's place (row_seal leaves the last cell out)
-  return row_seal(cells);
+  return row_seal_unbound(cells);
 }
 double unhex(const std::string& s, const std::string& file) {
   char* end = nullptr;

@@ -284,11 +284,12 @@ void UnitCache::load(const std::vector<std::pair<std::string, std::string>>& par
     std::string why;
     if (row.size() != old.columns.size())
       why = std::to_string(row.size()) + " cells for " + std::to_string(old.columns.size()) + " columns";
-    else if (row[cseal] != row_seal(row))
-      why = row[cseal] == row_seal_without_checked(row)
-                ? "sealed before the seal covered `checked` (2026-12-03): seal the file anew once with "
-                  "`gpm store-seal FILE`"
-                : "its seal does not match its cells (edited after it was written?)";
+    else if (row[cseal] != row_seal(row, path_))
+      why = row[cseal] == row_seal_unbound(row) || row[cseal] == row_seal_without_checked(row)
+                ? "sealed before the seal bound rows to their file (2026-12-05): seal the file anew once "
+                  "with `gpm store-seal FILE`"
+                : "its seal does not match its cells and this file's name (edited after it was written, "
+                  "or pasted from another file?)";
     else {
       std::vector<std::string> content;
       for (std::size_t c = 0; c < row.size(); ++c)
@@ -350,7 +351,7 @@ void UnitCache::restamp(std::vector<std::string>& r, const std::string& tail) co
   const int ccode = table_.column("code"), cchecked = table_.column("checked");
   r[cchecked] = checked_cell("recheck " + today() + " of code " + r[ccode] + tail, recheck_count(r[cchecked]));
   r[ccode] = code_;
-  r.back() = row_seal(r);
+  r.back() = row_seal(r, path_);
 }
 
 std::vector<std::string> UnitCache::key_of(const std::vector<std::string>& row) const {
@@ -385,7 +386,7 @@ void UnitCache::add(std::vector<std::string> row) {
     throw std::logic_error("UnitCache::add: a row of " + std::to_string(row.size()) +
                            " cells for " + std::to_string(own) + " columns (" + path_ + ")");
   row.insert(row.end(), {code_, made_on_, "computed", ""});
-  row.back() = row_seal(row);
+  row.back() = row_seal(row, path_);
   if (!running()) {
     fresh_.push_back(std::move(row));
     return;
@@ -452,7 +453,7 @@ void UnitCache::merge_disk() {
     if (disk.get(k) != v) rescue("it changed on disk meanwhile, its parameter '" + k + "' now differs");
   if (disk.columns != table_.columns) rescue("it changed on disk meanwhile, its columns now differ");
   for (std::size_t i = 0; i < disk.rows.size(); ++i)
-    if (disk.rows[i].size() != disk.columns.size() || disk.rows[i].back() != row_seal(disk.rows[i]))
+    if (disk.rows[i].size() != disk.columns.size() || disk.rows[i].back() != row_seal(disk.rows[i], path_))
       rescue("it changed on disk meanwhile, line " + std::to_string(disk.row_lines[i]) +
              " is not a whole sealed row");
   std::vector<std::vector<std::string>> merged;
