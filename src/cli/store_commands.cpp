@@ -465,12 +465,14 @@ int cmd_store_rates(int argc, char** argv) {
     if (!a.str("findings").empty()) outputs.emplace_back(a.str("findings"), std::move(findings));
   }
   if (!a.str("constants").empty() || !a.str("constant-findings").empty()) {
-    ErrorConstants ec = error_constants(store, pub);
+    ErrorConstants ec = error_constants(store, pub, a.str("diagnostics"));
     const Lines lines = {{"constant", "rel_error / h^p, p the theory's rate"},
                          {"model", "the one-mode prediction / h^p (Table 4.4: R eps/((1-eps)), R = max|u - phi| = " +
                                        fmt(poisson_boundary_factor()) + "; heat: thesis_heat_mode_model)"},
                          {"limit", "the model's constant as h -> 0"},
                          {"R", format_text("%.6f", poisson_boundary_factor())},
+                         {"projected_excess", "thesis_mode_excess's (1-Q)/eps - 1 (heat) or its Poisson form, seed 1, from " +
+                                                  a.str("diagnostics") + " (NA where not measured)"},
                          {"rule", "q = |e/predicted - 1|; approaches: q <= " + fmt(kConstantReach) +
                                       " and not growing; stays away: q > " + fmt(kConstantReach) +
                                       " and q >= 0.9 q_before; else not decided (rule dated 2026-12-05, "

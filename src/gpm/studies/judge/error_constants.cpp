@@ -86,11 +86,26 @@ SeriesPoints heat_points(const StoreSnapshot& store, const RegisteredStudy& stud
   return s;
 }
 
+// thesis_mode_excess's projected excess by (weight, level), from one diagnostic file; empty
+// where the file is absent.
+using Projected = std::map<std::pair<std::string, int>, double>;
+Projected projected_excess(const std::string& diagnostics, const std::string& name) {
+  Projected out;
+  const std::string path = diagnostics + "/" + name;
+  if (diagnostics.empty() || !std::filesystem::exists(path)) return out;
+  const TsvTable t = TsvTable::load(path);
+  const int cw = t.require_column("weight"), cl = t.require_column("level"), cp = t.require_column("predicted_excess");
+  for (std::size_t i = 0; i < t.rows.size(); ++i)
+    out[{t.text(i, cw), static_cast<int>(t.integer(i, cl))}] = t.number(i, cp);
+  return out;
+}
+
 // What a series is called and what the documents say of it.
 struct Label {
   std::string table, reading, weight, theta, theory_text;
   std::pair<int, int> doc;
   double limit = kNaN;
+  const Projected* projected = nullptr;  // seed 1's projected excess, where measured
 };
 
 // The theory's rate, or NaN where the document gives a word ("unstable").
@@ -115,6 +130,9 @@ void add_series(ErrorConstants& out, const Label& label, const Realized& reals) 
       row["rel_error"] = fmt(pt.error), row["solver"] = pt.solver, row["constant"] = fmt(constant(pt));
       row["model"] = fmt(model(pt)), row["limit"] = cell(label.limit);
       row["excess"] = fmt(pt.error / pt.predicted - 1);
+      const auto pj = label.projected && seed == 1 ? label.projected->find({label.weight, k})
+                                                    : Projected::const_iterator{};
+      row["projected_excess"] = label.projected && seed == 1 && pj != label.projected->end() ? fmt(pj->second) : "NA";
       row["where"] = k == label.doc.first || k == label.doc.second ? "document"
                      : k > label.doc.second                         ? "beyond"
                                                                     : "coarser";
@@ -179,10 +197,11 @@ TrendFinding judge_constant(double q_before, double q_finest) {
   return {Trend::not_decided, said + ": off the model but still shrinking"};
 }
 
-ErrorConstants error_constants(const StoreSnapshot& store, const std::string& published) {
+ErrorConstants error_constants(const StoreSnapshot& store, const std::string& published,
+                               const std::string& diagnostics) {
   ErrorConstants out;
   out.constants.columns = {"table", "reading", "weight", "theta", "seed", "level", "h", "rel_error", "solver",
-                           "constant", "model", "limit", "excess", "where"};
+                           "constant", "model", "limit", "excess", "projected_excess", "where"};
   out.findings.columns = {"table", "reading", "weight", "theta", "theoretical", "documents_levels", "finest_level",
                           "realizations", "constant_lo", "constant_hi", "model", "limit", "excess_max",
                           "excess_before_max", "decay_max", "finding", "why"};
@@ -191,13 +210,19 @@ ErrorConstants error_constants(const StoreSnapshot& store, const std::string& pu
     const RegisteredStudy& study = reg.study("thesis_table4_4");
     const TsvTable pub = published_or_refuse(published_file(published, study.published->table));
     const SeriesPoints pts = poisson_points(store, study);
+    const std::map<std::string, Projected> projected = {
+        {"h10", projected_excess(diagnostics, "mode_excess_poisson_h10_cell.tsv")},
+        {"h15", projected_excess(diagnostics, "mode_excess_poisson_h15_cell.tsv")}};
     for (std::size_t i = 0; i < pub.rows.size(); ++i) {
       const Key key{pub.text(i, "h_rule"), pub.text(i, "weight")};
+      const auto pj = projected.find(key.first);
       const Label label{"4.4", key.first + "_cell", key.second, "NA", pub.text(i, "theoretical"),
-                        documents_levels(pub), poisson_constant_limit(weight(key.second))};
+                        documents_levels(pub), poisson_constant_limit(weight(key.second)),
+                        pj == projected.end() || pj->second.empty() ? nullptr : &pj->second};
       if (pts.count(key)) add_series(out, label, pts.at(key));
     }
   }
+  const Projected heat_projected = projected_excess(diagnostics, "mode_excess_heat_h15_cell.tsv");
   for (const HeatTable& hp : heat_tables()) {
     const RegisteredStudy& study = reg.study(heat_study_name(hp));
     const TsvTable pub = published_or_refuse(published_file(published, study.published->table));
@@ -207,7 +232,8 @@ ErrorConstants error_constants(const StoreSnapshot& store, const std::string& pu
         const Key key{pub.text(i, "weight"), pub.text(i, "theta")};
         const double rate = theory_rate(pub.text(i, "theoretical"));
         const double limit = std::isfinite(rate) ? heat_constant_limit(weight(key.first), hp, pub.number(i, pub.require_column("theta")), rate) : kNaN;
-        const Label label{hp.table, reading, key.first, key.second, pub.text(i, "theoretical"), documents_levels(pub), limit};
+        const Label label{hp.table, reading, key.first, key.second, pub.text(i, "theoretical"), documents_levels(pub), limit,
+                          reading == "h15_cell_exact" && !heat_projected.empty() ? &heat_projected : nullptr};
         if (pts.count(key)) add_series(out, label, pts.at(key));
       }
     }

@@ -36,10 +36,13 @@ constexpr double kConstantFloor = 0.01;
 TrendFinding judge_constant(double q_before, double q_finest);
 
 // The constants (one row per table, reading, weight, θ, realization and level) and the
-// findings (one per table, reading, weight and θ).  Columns: see error_constants.cpp.
+// findings (one per table, reading, weight and θ).  Columns: see error_constants.cpp.  Where
+// `diagnostics` holds thesis_mode_excess's files (mode_excess_{heat,poisson}_<h rule>_cell.tsv,
+// seed 1), each seed-1 row of that reading gets the excess they project (else NA).
 struct ErrorConstants {
   TsvTable constants, findings;
 };
-ErrorConstants error_constants(const StoreSnapshot& store, const std::string& published);
+ErrorConstants error_constants(const StoreSnapshot& store, const std::string& published,
+                               const std::string& diagnostics = "");
 
 }  // namespace gpm
