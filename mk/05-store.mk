@@ -39,6 +39,14 @@ $(FIGOUT)/thesis_rate_levels.svg: figures/thesis_rate_levels.gp figures/style.gp
 	@mkdir -p $(FIGOUT)
 	gnuplot -e "datadir='$(DATA)'; out='$@.tmp'" $< && mv $@.tmp $@
 
+# The predictions written before the runs (results/predictions/error_constants_2e-11.md) beside
+# what the store holds now: hit, miss or not run.
+DATAFILES += $(DATA)/prediction_outcomes.tsv
+$(DATA)/prediction_outcomes.tsv: results/predictions/outcome_error_constants.sh $(STORE_FILES) \
+    $(wildcard results/predictions/error_constants/*.tsv)
+	@mkdir -p $(DATA)
+	bash $< $(STORE) $@
+
 # The error constants against level (judge/error_constants.hpp), beside the one-mode model.
 FIGFILES += $(FIGOUT)/thesis_error_constants.svg
 $(FIGOUT)/thesis_error_constants.svg: figures/thesis_error_constants.gp figures/style.gp $(DATA)/error_constants.tsv
