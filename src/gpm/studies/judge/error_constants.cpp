@@ -108,15 +108,8 @@ struct Label {
   const Projected* projected = nullptr;  // seed 1's projected excess, where measured
 };
 
-// The theory's rate, or NaN where the document gives a word ("unstable").
-double theory_rate(const std::string& text) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  return !text.empty() && !*end ? v : kNaN;
-}
-
 void add_series(ErrorConstants& out, const Label& label, const Realized& reals) {
-  const double p = theory_rate(label.theory_text);
+  const double p = theoretical_rate(label.theory_text);
   if (!std::isfinite(p) || !reals.count(1)) return;
   // Every point's constant, model constant and relative excess.
   auto constant = [&](const Point& pt) { return pt.error / std::pow(pt.h, p); };
@@ -179,11 +172,6 @@ void add_series(ErrorConstants& out, const Label& label, const Realized& reals) 
   out.findings.add_row(row);
 }
 
-TsvTable published_or_refuse(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw InputError("error constants: no published file " + path);
-  return TsvTable::load(path, false);
-}
-
 }  // namespace
 
 TrendFinding judge_constant(double q_before, double q_finest) {
@@ -208,7 +196,7 @@ ErrorConstants error_constants(const StoreSnapshot& store, const std::string& pu
   const StudyRegistry& reg = study_registry();
   {  // Table 4.4, V_i = Δx² (the identified volumes), both h rules
     const RegisteredStudy& study = reg.study("thesis_table4_4");
-    const TsvTable pub = published_or_refuse(published_file(published, study.published->table));
+    const TsvTable pub = load_published(published_file(published, study.published->table), "error constants");
     const SeriesPoints pts = poisson_points(store, study);
     const std::map<std::string, Projected> projected = {
         {"h10", projected_excess(diagnostics, "mode_excess_poisson_h10_cell.tsv")},
@@ -225,12 +213,12 @@ ErrorConstants error_constants(const StoreSnapshot& store, const std::string& pu
   const Projected heat_projected = projected_excess(diagnostics, "mode_excess_heat_h15_cell.tsv");
   for (const HeatTable& hp : heat_tables()) {
     const RegisteredStudy& study = reg.study(heat_study_name(hp));
-    const TsvTable pub = published_or_refuse(published_file(published, study.published->table));
+    const TsvTable pub = load_published(published_file(published, study.published->table), "error constants");
     for (const std::string reading : {"h10", "h15_cell_exact"}) {
       const SeriesPoints pts = heat_points(store, study, reading);
       for (std::size_t i = 0; i < pub.rows.size(); ++i) {
         const Key key{pub.text(i, "weight"), pub.text(i, "theta")};
-        const double rate = theory_rate(pub.text(i, "theoretical"));
+        const double rate = theoretical_rate(pub.text(i, "theoretical"));
         const double limit = std::isfinite(rate) ? heat_constant_limit(weight(key.first), hp, pub.number(i, pub.require_column("theta")), rate) : kNaN;
         const Label label{hp.table, reading, key.first, key.second, pub.text(i, "theoretical"), documents_levels(pub), limit,
                           reading == "h15_cell_exact" && !heat_projected.empty() ? &heat_projected : nullptr};

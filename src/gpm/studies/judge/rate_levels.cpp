@@ -100,11 +100,6 @@ double rate_between(const Series& s, int lo, int hi) {
   return std::log(a->second.second / b->second.second) / std::log(a->second.first / b->second.first);
 }
 
-TsvTable published_or_refuse(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw InputError("rate levels: no published file " + path);
-  return TsvTable::load(path, false);
-}
-
 const TsvTable& stored_or_refuse(const StoreSnapshot& store, const std::string& name) {
   if (!store.has(name)) throw InputError("rate levels: the store has no " + store.path(name));
   return store.table(name, false);
@@ -140,9 +135,7 @@ void add_series(RateLevels& out, const SeriesLabel& label, const Realizations& r
   const Series& s = it->second;
   // The theory's rate, or none where the document gives a word ("unstable": Table 4.6's
   // explicit series, whose growth is the set-up fingerprint, not a rate).
-  char* end = nullptr;
-  const double parsed = std::strtod(label.theory_text.c_str(), &end);
-  const double theory = !label.theory_text.empty() && !*end ? parsed : std::numeric_limits<double>::quiet_NaN();
+  const double theory = theoretical_rate(label.theory_text);
   const std::string theory_cell = std::isfinite(theory) ? cell(theory) : label.theory_text;
   std::vector<int> levels;
   for (auto& [k, v] : s) levels.push_back(k);
@@ -191,7 +184,7 @@ void heat_rate_levels(RateLevels& out, const StoreSnapshot& store, const std::st
   const StudyRegistry& reg = study_registry();
   for (const HeatTable& hp : heat_tables()) {
     const RegisteredStudy& study = reg.study(heat_study_name(hp));
-    const TsvTable pub = published_or_refuse(published_file(published, study.published->table));
+    const TsvTable pub = load_published(published_file(published, study.published->table), "rate levels");
     const auto doc_levels = documents_levels(pub);
     for (const std::string reading : {"h10", "h15_cell_exact"}) {
       const Realizations reals = realizations(store, study, study.store_file_of(reading), "weight", "theta");
@@ -209,7 +202,7 @@ void heat_rate_levels(RateLevels& out, const StoreSnapshot& store, const std::st
 // set-up rule identifies: one file holds both rules (readings h10_cell and h15_cell).
 void poisson_rate_levels(RateLevels& out, const StoreSnapshot& store, const std::string& published) {
   const RegisteredStudy& study = study_registry().study("thesis_table4_4");
-  const TsvTable pub = published_or_refuse(published_file(published, study.published->table));
+  const TsvTable pub = load_published(published_file(published, study.published->table), "rate levels");
   const auto doc_levels = documents_levels(pub);
   const Realizations reals = realizations(store, study, study.store_file_of("h15_cell"), "h_rule", "weight");
   for (std::size_t p = 0; p < pub.rows.size(); ++p) {

@@ -1,7 +1,10 @@
 #include "gpm/studies/judge/rates.hpp"
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <iterator>
+#include <limits>
 #include <sstream>
 
 #include "gpm/error.hpp"
@@ -9,6 +12,17 @@
 #include "gpm/operators/norms.hpp"
 
 namespace gpm {
+
+TsvTable load_published(const std::string& path, const std::string& who) {
+  if (!std::filesystem::exists(path)) throw InputError(who + ": no published file " + path);
+  return TsvTable::load(path, false);
+}
+
+double theoretical_rate(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  return !text.empty() && !*end ? v : std::numeric_limits<double>::quiet_NaN();
+}
 
 namespace {
 

@@ -35,6 +35,14 @@ inline constexpr double kRateTolerance = 0.15;
 std::pair<int, int> documents_levels(const TsvTable& published);
 std::string documents_levels_text(const TsvTable& published);  // "8,9"
 
+// A study's published file read for a judge (`who` leads the message): InputError
+// "<who>: no published file PATH" where it is absent.
+TsvTable load_published(const std::string& path, const std::string& who);
+
+// A published `theoretical` cell as a rate; NaN where the document gives a word ("unstable":
+// Table 4.6's explicit series) or nothing.
+double theoretical_rate(const std::string& text);
+
 struct RateJoin {
   std::vector<std::string> keys;  // key columns shared by the data and the published file
   std::string level = "level";    // the data's level column (Δx = 2^-level)
