@@ -20,17 +20,24 @@ $(error unknown PROFILE '$(PROFILE)'; valid: quick, paper)
 endif
 endif
 
-# The paper profile's data live in the committed result store results/paper/ (see its
-# README): data/paper is a link to it, so a paper run resumes from every committed unit and
-# its finished units land where git sees them.
+# The paper profile's study files live in the committed result store results/paper/ (see its
+# README): a study's rule writes its --out there (store_out), so a paper run resumes from every
+# committed unit and its finished units land where git sees them, then links data/paper/<file>
+# to it (store_link) for the figures and tables that read data/paper.  Everything derived (rate
+# tables, side outputs, diagnostics) is written into data/paper itself, a plain folder: the
+# store holds sealed study files only (the programs refuse any other output there).  An older
+# checkout's data/paper was one link to the whole store; it is replaced by the folder.
 ifeq ($(PROFILE),paper)
 STORE_LINK := $(shell mkdir -p data results/paper; \
-  if [ -L data/paper ]; then echo ok; \
-  elif [ -e data/paper ]; then echo conflict; \
-  else ln -s ../results/paper data/paper && echo ok; fi)
+  if [ -L data/paper ]; then rm data/paper; fi; mkdir -p data/paper && echo ok)
 ifneq ($(STORE_LINK),ok)
-$(error data/paper is a directory, not the link to the result store results/paper: move its files into results/paper (or away) and remove it)
+$(error cannot make the folder data/paper)
 endif
+store_out = results/paper/$(notdir $(1))
+store_link = @ln -sfn ../../results/paper/$(notdir $(1)) $(1)
+else
+store_out = $(1)
+store_link =
 endif
 
 # Debian packages the project needs (compilers, libraries, plotting, report).
@@ -50,7 +57,7 @@ help:
 # older code are carried over instead of being recomputed for hours; when the numbers changed,
 # the run that follows recomputes them.  Usage in a recipe, before the study's own command:
 #   $(call store_recheck,PROGRAM [ARGS],LEVELS)
-store_recheck = $(if $(filter paper,$(PROFILE)),@if [ -f $@ ]; then $(1) --profile paper --out $@ \
+store_recheck = $(if $(filter paper,$(PROFILE)),@if [ -f $(call store_out,$@) ]; then $(1) --profile paper --out $(call store_out,$@) \
   --recheck --levels $(2) || echo "recheck: numbers changed; the run recomputes the older rows"; fi)
 
 # --- set-up -----------------------------------------------------------------------------
@@ -171,7 +178,7 @@ clean:
 
 # --- data files are never deleted -------------------------------------------------------
 # make deletes a target whose recipe is interrupted (Ctrl-C) or killed.  A data file here is
-# the result store's own (data/paper links into results/paper: hours of sealed rows) or a
+# the result store's own (data/paper/<study file> links into results/paper: hours of sealed rows) or a
 # file every program writes atomically (temp file, then rename), so an interrupted recipe
 # leaves it whole, old or new, and the study resumes from it.  Listed by name: GNU make
 # protects a target named in .PRECIOUS, not one a pattern there matches

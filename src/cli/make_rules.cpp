@@ -93,7 +93,10 @@ std::string make_rules(const StudyRegistry& registry) {
       m << "$(DATA)/" << f.name << ".tsv: $(BUILD)/" << s.program << "\n";
       if (!s.recheck_levels.empty())
         m << "\t$(call store_recheck,$<" << fixed << "," << call_levels(s.recheck_levels) << ")\n";
-      m << "\t$<" << fixed << " --profile $(PROFILE) --out $@" << sides << "\n";
+      // store_out/store_link (the Makefile): in the paper profile the study writes into the
+      // result store and data/paper links to it; derived files stay in data/<profile>.
+      m << "\t$<" << fixed << " --profile $(PROFILE) --out $(call store_out,$@)" << sides << "\n";
+      m << "\t$(call store_link,$@)\n";
       m << "\t@touch -c $@" << side_files << "  # a fully cached rerun leaves the files as they were\n";
       if (!side_files.empty()) m << side_files.substr(1) << ": $(DATA)/" << f.name << ".tsv ;\n";
       for (auto& r : f.rates) {
