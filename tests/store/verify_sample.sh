@@ -6,21 +6,25 @@
 # a store file (of a heat file: one level and weight, its θ together) — and fails on any
 # difference (--verify: numbers to 1e-9 relative).
 #
-# Which units: every unit above the file's coarse levels whose stored run took at most
-# MAX_UNIT_S (the sum of its rows' distinct time columns, as measured when it was computed,
-# on the machine its made_on names) is a candidate; candidates are ordered by a hash of the
-# revision (git HEAD, or SAMPLE_SEED) and the unit, and taken in that order while their
-# wall time stays within BUDGET_S (a unit started is finished).  Successive commits so draw different samples, and
-# over enough of them every cheap unit is recomputed.  The sample and its coverage are printed.
+# Which units (tests/store/sample_draw.py, issue 61 item 6): every unit above the file's
+# coarse levels whose stored run took at most MAX_UNIT_S (the sum of its rows' distinct time
+# columns, as measured when it was computed, on the machine its made_on names) has a known
+# chance per run, cost-weighted so that a run's expected recomputation is BUDGET_S: cheap units
+# often, expensive ones rarely, each sometimes.  The draw is a hash of the revision (git HEAD,
+# or SAMPLE_SEED) and the unit, so successive commits draw independently.  Units above
+# MAX_UNIT_S are never drawn here (one could outlast the suite): make verify-store-full
+# recomputes them.  A run that passes 3 BUDGET_S stops and says how many drawn units it left.
 #
-# usage: verify_sample.sh BUILD_DIR STORE_DIR [BUDGET_S [MAX_UNIT_S]]   (defaults 60, 10)
+# usage: verify_sample.sh BUILD_DIR STORE_DIR [BUDGET_S [MAX_UNIT_S]]   (defaults 60, 60)
 #   SAMPLE_SEED=text  draw the sample from this text instead of the revision;
-#   SAMPLE_UNITS="file:level[:weight] …"  recompute exactly these units (a test's choice).
+#   SAMPLE_UNITS="file:level[:weight] …"  recompute exactly these units (a test's choice);
+#   SAMPLE_COVERAGE=N  recompute nothing: print the coverage per run and after N runs, expected
+#                      from the chances and counted over N seeds.
 export LC_ALL=C
 set -u
 usage="usage: verify_sample.sh BUILD_DIR STORE_DIR [BUDGET_S [MAX_UNIT_S]]"
 [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
-build=$1 store=$2 budget=${3:-60} max_unit=${4:-10}
+build=$1 store=$2 budget=${3:-60} max_unit=${4:-60}
 [ -x "$build/gpm" ] && [ -d "$store" ] || { echo "$usage" >&2; exit 2; }
 seed=${SAMPLE_SEED:-$(git -C "$(dirname "$0")" rev-parse HEAD 2>/dev/null || echo none)}
 # (An empty cell is written as "-": read would merge two tabs.)
@@ -29,9 +33,15 @@ listing=$("$build/gpm" study --store-rows) || { echo "verify_sample.sh: gpm stud
 # Every candidate: file, program, args, level, weight ("-": the whole level), predicted s,
 # and of a heat unit the θ its rows hold ("-": all).
 candidates() {
-  while IFS=$'\t' read -r _study file program args _census coarse _slice; do
+  while IFS=$'\t' read -r _study file program args census coarse _slice; do
     [ -f "$store/$file.tsv" ] || continue  # (args stay "-" when empty: read merges two tabs)
-    awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v coarse="${coarse#--levels }" -v heat=$([ "$program" = thesis_heat ] && echo 1 || echo 0) '
+    # The census's options beyond its levels (a file holding some variants only, --only h15)
+    # go along with the unit, and only the words after --levels are the coarse levels.
+    [ "$census" = - ] && census=""
+    extra=$(awk '{ for (i = 1; i <= NF; i++) if ($i == "--levels") i++; else printf " %s", $i }' <<<"$census")
+    [ -n "$extra" ] && { [ "$args" = - ] && args="${extra# }" || args="$args$extra"; }
+    coarse=$(awk '{ for (i = 1; i < NF; i++) if ($i == "--levels") print $(i + 1) }' <<<"$coarse")
+    awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v coarse="$coarse" -v heat=$([ "$program" = thesis_heat ] && echo 1 || echo 0) '
       BEGIN { n = split(coarse, c, ","); for (i = 1; i <= n; i++) low[c[i]] = 1 }
       /^#/ { next }
       !h++ { for (i = 1; i <= NF; i++) col[$i] = i; t = ("seconds" in col) ? col["seconds"] : col["time_s"]; next }
@@ -50,20 +60,23 @@ if [ -n "${SAMPLE_UNITS:-}" ]; then
     awk -F'\t' -v f="$f" -v l="$l" -v w="${w:--}" '$1 == f && $4 == l && $5 == w' <<<"$all"
   done)
   [ -n "$chosen" ] || { echo "verify_sample.sh: no stored unit matches SAMPLE_UNITS='$SAMPLE_UNITS'" >&2; exit 2; }
+elif [ -n "${SAMPLE_COVERAGE:-}" ]; then
+  python3 "$(dirname "$0")/sample_draw.py" --seed "$seed" --budget "$budget" --max-unit "$max_unit" \
+    --coverage "$SAMPLE_COVERAGE" <<<"$all"
+  exit
 else
-  # The candidates in the revision's order; the loop below takes them while time is left.
-  cheap=$(awk -F'\t' -v m="$max_unit" '$6 <= m' <<<"$all")
-  chosen=$(while IFS= read -r line; do
-      [ -n "$line" ] || continue
-      printf '%s\t%s\n' "$(printf '%s\t%s' "$seed" "$line" | cut -f1,2,5,6 | md5sum | cut -c1-12)" "$line"
-    done <<<"$cheap" | sort | cut -f2-)
+  log=$(mktemp); trap 'rm -f "$log"' EXIT
+  chosen=$(python3 "$(dirname "$0")/sample_draw.py" --seed "$seed" --budget "$budget" --max-unit "$max_unit" \
+    <<<"$all" 2>"$log") || { cat "$log" >&2; exit 2; }
+  drew=$(cat "$log")
+  echo "sample of ${seed:0:12} among the $total units above the coarse levels: $drew"
 fi
-ncheap=$(awk -F'\t' -v m="$max_unit" '$6 <= m' <<<"$all" | grep -c .)
-echo "sample of ${seed:0:12}: candidates $ncheap units (stored time <= ${max_unit} s each) of the $total above the coarse levels; recomputed in the sample's order until ${budget} s have passed"
 failed=0 start=$SECONDS n=0
 while IFS=$'\t' read -r file program args level weight cost thetas; do
   [ -n "$file" ] || continue
-  [ -z "${SAMPLE_UNITS:-}" ] && [ $((SECONDS - start)) -ge "$budget" ] && break
+  if [ -z "${SAMPLE_UNITS:-}" ] && [ $((SECONDS - start)) -ge $((3 * budget)) ]; then
+    echo "sample cut at 3 x ${budget} s: $(($(grep -c . <<<"$chosen") - n)) drawn units not recomputed"; break
+  fi
   n=$((n + 1))
   [ "$args" = - ] && args=""
   sel=(--levels "$level")
