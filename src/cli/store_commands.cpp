@@ -147,25 +147,29 @@ std::size_t seal_anew(TsvTable& t, const std::string& path) {
 // Whether git's committed version of `path` (HEAD, where the file is tracked) is a sealed
 // store file: then a copy without the seal column had it removed, and sealing it anew would
 // bless whatever was edited meanwhile.  False where git or the file's history is absent.
-bool git_has_it_sealed(const std::string& path) {
+struct Committed {
+  bool sealed_rows = false, sealed_header = false;
+};
+Committed git_committed(const std::string& path) {
   const std::filesystem::path p = std::filesystem::absolute(path);
   const std::string cmd = "git -C '" + p.parent_path().string() + "' show 'HEAD:./" + p.filename().string() +
                           "' 2>/dev/null";
-  if (p.string().find('\'') != std::string::npos) return false;  // not quotable here: no check
+  Committed c;
+  if (p.string().find('\'') != std::string::npos) return c;  // not quotable here: no check
   FILE* f = ::popen(cmd.c_str(), "r");
-  if (!f) return false;
+  if (!f) return c;
   char buf[65536];
-  bool sealed = false;
   while (std::fgets(buf, sizeof buf, f)) {
     std::string line(buf);
     while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+    if (line.rfind("# header_seal = ", 0) == 0) c.sealed_header = true;
     if (line.empty() || line[0] == '#') continue;
-    sealed = line.size() >= 5 && line.compare(line.size() - 5, 5, "\tseal") == 0;
+    c.sealed_rows = line.size() >= 5 && line.compare(line.size() - 5, 5, "\tseal") == 0;
     break;
   }
   while (std::fgets(buf, sizeof buf, f)) {}
   ::pclose(f);
-  return sealed;
+  return c;
 }
 
 // One line per sealing in rechecks.log: the file, its rows, when and by whom.
@@ -188,7 +192,9 @@ int cmd_store_seal(int argc, char** argv) {
                  "Seals result-store files: one written before seals gets the seal column (its\n"
                  "re-check chains shortened to their last record); one sealed under an earlier\n"
                  "rule (before the seal bound a row to its file's name, 2026-12-05, or covered\n"
-                 "`checked`, 2026-12-03) is verified row by row under that rule and sealed anew.\n";
+                 "`checked`, 2026-12-03) is verified row by row under that rule and sealed anew;\n"
+                 "a header without its seal (before 2026-12-06) gets one.  An edited header, or a\n"
+                 "seal removed from git's committed version, is refused.\n";
     return 0;
   }
   if (argc < 3) throw InputError("gpm store-seal: name at least one file (see --help)");
@@ -200,18 +206,30 @@ int cmd_store_seal(int argc, char** argv) {
     if (!sealed && (t.columns.size() < 3 || !std::equal(before.begin(), before.end(), t.columns.end() - 3)))
       throw InputError(path + ": not a store file (its last columns are neither code, made_on, "
                        "checked nor ... seal)");
-    if (!sealed && git_has_it_sealed(path))
+    const Committed committed = git_committed(path);
+    if (!sealed && committed.sealed_rows)
       throw InputError(path + ": git's committed version is sealed, this copy has no seal column: a "
                        "removed seal is not sealed again (restore the file from git); nothing written");
+    // The header's seal (2026-12-06): added where it is absent, never renewed over an edit.
+    const bool has_header_seal = t.get("header_seal").has_value();
+    if (has_header_seal && !header_seal_problem(t.meta, path).empty())
+      throw InputError(path + ": " + header_seal_problem(t.meta, path) + ": an edited header is not sealed "
+                       "again (restore the file from git); nothing written");
+    if (!has_header_seal && committed.sealed_header)
+      throw InputError(path + ": git's committed version has a header_seal line, this copy none: a removed "
+                       "seal is not sealed again (restore the file from git); nothing written");
     std::string what = "sealed";
     if (!sealed) {
       seal_unsealed(t, path);
-    } else if (seal_anew(t, path) == 0) {
-      std::cout << path << ": every row sealed already (" << t.rows.size() << " rows)\n";
-      continue;
-    } else {
+    } else if (seal_anew(t, path) != 0) {
       what = "sealed anew (the seal now binds the file's name)";
+    } else if (!has_header_seal) {
+      what = "header sealed (rows sealed already)";
+    } else {
+      std::cout << path << ": every row and the header sealed already (" << t.rows.size() << " rows)\n";
+      continue;
     }
+    t.set("header_seal", header_seal(t.meta, path));
     log_sealing(path, t.rows.size(), what);
     t.save(path);
     std::cout << "sealed " << path << " (" << t.rows.size() << " rows)\n";
@@ -261,6 +279,8 @@ int cmd_store_add_columns(int argc, char** argv) {
       if (t.rows[r].size() != t.columns.size() || t.rows[r].back() != row_seal(t.rows[r], path))
         throw InputError(path + " line " + std::to_string(t.row_lines[r]) +
                          ": its seal does not match its cells and this file's name; nothing written");
+    if (const std::string problem = header_seal_problem(t.meta, path); !problem.empty())
+      throw InputError(path + ": " + problem + "; nothing written");
     std::vector<std::string> names, values;
     for (auto& [name, value] : add) names.push_back(name), values.push_back(value);
     t.columns.insert(t.columns.begin() + after + 1, names.begin(), names.end());
@@ -268,6 +288,7 @@ int cmd_store_add_columns(int argc, char** argv) {
       row.insert(row.begin() + after + 1, values.begin(), values.end());
       row.back() = row_seal(row, path);
     }
+    t.set("header_seal", header_seal(t.meta, path));
     done.emplace_back(path, std::move(t));
   }
   for (auto& [path, t] : done) {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The store's door for the judging pass (StoreChecks::store, judge/snapshot.hpp), on copies of
 # the store: gpm store-rates and gpm rate-levels stop with exit 4 naming the file for a
-# hand-edited number (its seal broken), another reading's file under a registered name, and
+# hand-edited number (its seal broken), a hand-edited header line (its seal), another reading's file under a registered name, and
 # a missing registered file; the untouched store passes.  (Not guarded, so not tested: a row
 # pasted from another file of the same columns with its seal, and an edit resealed by hand:
 # those only the recomputation finds, tests/store/verify_full_test.sh.)
@@ -32,6 +32,10 @@ awk -F'\t' -v OFS='\t' '/^#/ { print; next } !h { for (i = 1; i <= NF; i++) c[$i
   !d && $c["level"] == 9 && $c["h_rule"] == "h15" { $c["rel_error"] = $c["rel_error"] / 2; d = 1 } { print }' \
   "$f" > "$t/x" && mv "$t/x" "$f"
 expect "a hand-edited number" "$(judge "$t/s")" "thesis_table4_4_cellvol.tsv: data row"
+# 1b. A provenance line of its header edited by hand: the header's seal.
+fresh
+sed -i 's/^# git_revision = .*/# git_revision = 000000000000/' "$f"
+expect "a hand-edited header line" "$(judge "$t/s")" "thesis_table4_4_cellvol.tsv: its header's seal"
 # 2. Another reading's file copied over the identified reading's.
 fresh
 cp "$t/s/thesis_table4_6_dtexact.tsv" "$t/s/thesis_table4_6_h15_dtexact_cellvol.tsv"

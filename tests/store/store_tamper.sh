@@ -48,6 +48,8 @@ case_ "a duplicate row"           "sed -n '${first}p' $f >> $f"
 case_ "CRLF line endings"         "sed -i 's/\$/\r/' $f"
 case_ "a UTF-8 byte-order mark"   "sed -i '1s/^/\xEF\xBB\xBF/' $f"
 case_ "a header parameter edited" "sed -i 's/^# tol = .*/# tol = 1e-8/' $f"
+case_ "a provenance line edited"  "sed -i 's/^# git_revision = .*/# git_revision = 000000000000/' $f"
+case_ "the command line edited"   "sed -i 's/^# command = .*/# command = build\/thesis_table4_4 --seed 2/' $f"
 case_ "the checked cell edited"   "$(cell "$first" checked '"recheck 2026-01-01 by hand"')"
 case_ "a stray profile line"      "sed -i '1i # profile = quick' $f"
 

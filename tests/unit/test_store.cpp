@@ -15,6 +15,7 @@
 
 #include "gpm/error.hpp"
 #include "gpm/io/provenance.hpp"
+#include "gpm/io/seal.hpp"
 #include "gpm/io/tsv.hpp"
 #include "gpm/studies/define/registry.hpp"
 #include "gpm/studies/run/store.hpp"
@@ -529,4 +530,43 @@ TEST_CASE("store: a re-check whose record cannot be logged writes nothing", "[un
   fs::create_directory(t.file("rechecks.log"));  // the log cannot be appended to
   REQUIRE_THROWS_WITH(run_study(f, CacheMode::recheck, 0, {5}), Catch::Contains("cannot append to"));
   CHECK(text_of(f) == before);
+}
+
+TEST_CASE("store: the header is sealed; an edited line is refused, a missing seal in a store folder too",
+          "[unit][store]") {
+  TempDir t("gpm_store_");
+  fs::create_directories(t.file("results/paper"));
+  for (const std::string f : {t.file("s.tsv"), t.file("results/paper/s.tsv")}) {
+    CAPTURE(f);
+    run_study(f, CacheMode::run);
+    const auto written = TsvTable::load(f);
+    REQUIRE(written.get("header_seal"));
+    CHECK(header_seal_problem(written.meta, f).empty());
+    // The same header under another file's name does not match: the seal binds the name.
+    CHECK_FALSE(header_seal_problem(written.meta, t.file("other.tsv")).empty());
+    const std::string good = text_of(f);
+    // A provenance line no reader compares (issue 61, case 6.3), edited by hand.
+    edit_lines(f, [](const std::string& l) {
+      return (l.rfind("# git_revision = ", 0) == 0 ? std::string("# git_revision = 000000000000") : l) + "\n";
+    });
+    REQUIRE(text_of(f) != good);
+    REQUIRE_THROWS_AS(run_study(f, CacheMode::verify), InputError);
+    REQUIRE_THROWS_AS(run_study(f, CacheMode::census), InputError);
+    // The seal line removed: tolerated outside a result store (files written before header
+    // seals), refused inside one.
+    std::ofstream(f) << good;
+    edit_lines(f, [](const std::string& l) { return l.rfind("# header_seal = ", 0) == 0 ? "" : l + "\n"; });
+    if (f.find("results/paper") == std::string::npos) {
+      REQUIRE_NOTHROW(run_study(f, CacheMode::verify));
+    } else {
+      try {
+        run_study(f, CacheMode::verify);
+        FAIL("not refused");
+      } catch (const InputError& e) {
+        CHECK_THAT(e.what(), Catch::Contains("no header_seal"));
+      }
+    }
+    std::ofstream(f) << good;
+    REQUIRE_NOTHROW(run_study(f, CacheMode::verify));
+  }
 }

@@ -33,6 +33,24 @@ std::string row_seal(const std::vector<std::string>& row, const std::string& pat
   return hex(feed_cells(feed_cells(kOffset, {sealed_name(path)}, 1), row, but_seal(row)));
 }
 
+std::string header_seal(const HeaderLines& meta, const std::string& path) {
+  uint64_t h = feed_cells(kOffset, {sealed_name(path)}, 1);
+  for (const auto& [key, value] : meta)
+    if (key != "header_seal") h = feed_cells(h, {key, value}, 2);
+  return hex(h);
+}
+
+std::string header_seal_problem(const HeaderLines& meta, const std::string& path) {
+  const std::string* have = nullptr;
+  for (const auto& [key, value] : meta)
+    if (key == "header_seal") have = &value;
+  if (!have) return "its header carries no header_seal line";
+  if (*have != header_seal(meta, path))
+    return "its header's seal does not match its lines and this file's name (a header line edited after "
+           "it was written?)";
+  return "";
+}
+
 std::string row_seal_unbound(const std::vector<std::string>& row) {
   return hex(feed_cells(kOffset, row, but_seal(row)));
 }

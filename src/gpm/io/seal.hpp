@@ -12,6 +12,7 @@
 // tests/store/verify_store_full.sh).
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gpm {
@@ -20,6 +21,16 @@ namespace gpm {
 std::string row_seal(const std::vector<std::string>& row, const std::string& path);
 // The name a seal binds: the stem of `path` ("results/paper/x.tsv" -> "x").
 std::string sealed_name(const std::string& path);
+
+// The header's seal (the `# header_seal = …` line of a store file, issue 61 case 6.3): the same
+// hash over the file's stem and every header line but its own, key then value, in order.  An
+// edited parameter or provenance line (command, git_revision, host) no longer matches; the
+// writer renews it at each save, with the header it writes.
+using HeaderLines = std::vector<std::pair<std::string, std::string>>;
+std::string header_seal(const HeaderLines& meta, const std::string& path);
+// "" when `meta` carries its matching seal; else what is wrong ("no header_seal line", or the
+// seal does not match).
+std::string header_seal_problem(const HeaderLines& meta, const std::string& path);
 
 // The seals written before: without the file's name (2026-12-03 to 2026-12-05), and before
 // 2026-12-03 also without `checked`.  Read only by `gpm store-seal`, which verifies rows under

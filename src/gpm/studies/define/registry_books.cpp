@@ -185,7 +185,7 @@ void poisson_books(RegisteredStudy& s) {
   for (const auto& [seed, census] : std::vector<std::pair<std::string, std::vector<std::string>>>{
            {"1", {"--levels", "5,11", "--only", "h15"}},
            {"2", {"--levels", "5,11", "--only", "h15"}},
-           {"3", {"--levels", "5,11", "--only", "h15,quartic_polynomial"}}}) {
+           {"3", {"--levels", "5,11", "--only", "h15"}}}) {
     const std::string tail = seed == "1" ? "" : "_seed" + seed;
     s.store_files.push_back({.name = "thesis_table4_4_cellvol_tau" + tail,
                              .slice = "cell_tau" + tail,

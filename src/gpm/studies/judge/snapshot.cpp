@@ -58,6 +58,8 @@ void check_store_file(const std::string& path, const TsvTable& t, const Register
   }
   if (t.columns.empty() || t.columns.back() != "seal")
     throw StoreMismatch(path + ": its rows carry no seal column");
+  if (const std::string problem = header_seal_problem(t.meta, path); !problem.empty())
+    throw StoreMismatch(path + ": " + problem);
   for (std::size_t r = 0; r < t.rows.size(); ++r)
     if (t.rows[r].size() != t.columns.size() || t.rows[r].back() != row_seal(t.rows[r], path))
       throw StoreMismatch(path + ": data row " + std::to_string(r + 1) +

@@ -312,6 +312,19 @@ void UnitCache::load(const std::vector<std::pair<std::string, std::string>>& par
     std::fprintf(stderr, "[store] %s: %s: dropped (%s); their units are recomputed when run\n",
                  path_.c_str(), problem.c_str(), reason_.c_str());
   }
+  // The header is sealed too (io/seal.hpp): an edited line (a parameter no run compares, the
+  // command, the revision) is refused like an edited row, after the rows so that a file copied
+  // under another name is named by its rows.  A sealed file outside a result store written
+  // before header seals (2026-12-06) is read without one.
+  if (sealed) {
+    const std::string problem = header_seal_problem(old.meta, path_);
+    const bool absent = !old.get("header_seal");
+    if (!problem.empty() && (!absent || in_store)) {
+      table_.rows.clear();
+      return refuse_file(problem + (absent ? " (seal it once with `gpm store-seal " + path_ + "`)" : ""),
+                         old.rows.size(), replace);
+    }
+  }
   // One unit's rows come from one run (a unit is computed, replaced and re-stamped whole):
   // rows of one unit from two runs are two copies of it, as a merge of two versions of the
   // file leaves them.  Which to keep is not guessed.
@@ -451,6 +464,8 @@ void UnitCache::merge_disk() {
   }
   for (auto& [k, v] : params_)
     if (disk.get(k) != v) rescue("it changed on disk meanwhile, its parameter '" + k + "' now differs");
+  if (disk.get("header_seal") && !header_seal_problem(disk.meta, path_).empty())
+    rescue("it changed on disk meanwhile, and " + header_seal_problem(disk.meta, path_));
   if (disk.columns != table_.columns) rescue("it changed on disk meanwhile, its columns now differ");
   for (std::size_t i = 0; i < disk.rows.size(); ++i)
     if (disk.rows[i].size() != disk.columns.size() || disk.rows[i].back() != row_seal(disk.rows[i], path_))
@@ -482,6 +497,7 @@ void UnitCache::write_file() {
     merge_disk();
   }
   add_provenance(table_);
+  table_.set("header_seal", header_seal(table_.meta, path_));  // last: it covers every line above
   table_.save(path_);
   disk_ = disk_state();
 }
