@@ -41,12 +41,12 @@ awk -F'\t' -v want="$published" '/^#/ { next }
   !h++ { for (i = 1; i <= NF; i++) c[$i] = i; next }
   $c["table"] == "total" {
     if ($c["rates"] != want) { printf "board %s covers %s rates, not the %d published\n", $c["slice"], $c["rates"], want; bad = 1 }
-    else printf "board %s: %s rates; agrees %s, non-convergence %s, sign only %s, seed band %s, checked (restored) %s, our rate explained only %s, unexplained %s, not computed %s, undefined %s, fingerprint %s, indeterminate %s\n",
+    else printf "board %s: %s rates; agrees %s, non-convergence %s, sign only %s, seed band %s, checked (restored) %s, our rate explained only %s, near miss %s, pre-asymptotic %s, unexplained %s, not computed %s, undefined %s, fingerprint %s, consistent with the spread %s\n",
       $c["slice"], $c["rates"], $c["agrees"], $c["non_convergence"], $c["sign_only"], $c["in_seed_band"], $c["checked_reason"], $c["explained_ours"],
-      $c["unexplained"], $c["not_computed"], $c["undefined"], $c["fingerprint"], $c["indeterminate"] }
+      $c["near_miss"], $c["pre_asymptotic"], $c["unexplained"], $c["not_computed"], $c["undefined"], $c["fingerprint"], $c["consistent_spread"] }
   END { exit bad }' "$tmp/score.tsv"
 known=tests/paper/known_unexplained.tsv
-awk -F'\t' -v open='^(differs, unexplained|both unstable, rate differs)$' '
+awk -F'\t' -v open='^(differs, unexplained|both unstable, rate differs|near miss|pre-asymptotic, not comparable at the tolerance)$' '
   FILENAME == ARGV[1] { if (/^#/ || !hk++) next; listed[$1 "|" $2 "|" $3] = $4; next }
   /^#/ { next }
   !h++ { for (i = 1; i <= NF; i++) c[$i] = i; next }

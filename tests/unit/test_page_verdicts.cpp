@@ -31,14 +31,15 @@ TsvTable items(std::vector<std::vector<std::string>> rows) {
 TsvTable score(std::vector<std::vector<std::string>> rows) {
   TsvTable t;
   t.columns = {"table", "slice", "printed", "counted", "rates", "agrees", "non_convergence", "in_seed_band",
-               "checked_reason", "explained_ours", "unexplained", "indeterminate", "undefined",
+               "checked_reason", "explained_ours", "near_miss", "pre_asymptotic", "unexplained", "consistent_spread", "undefined",
                "not_computed", "fingerprint", "sign_only"};
   for (auto& r : rows) {
     TsvRow row = t.named_row();
     row["table"] = r[0], row["slice"] = r[1], row["printed"] = r[2], row["counted"] = r[3], row["rates"] = r[4];
     row["agrees"] = r[5], row["non_convergence"] = r[6], row["in_seed_band"] = r[7], row["checked_reason"] = r[8];
     row["unexplained"] = r[9], row["not_computed"] = r[10], row["fingerprint"] = r[11];
-    for (const char* c : {"explained_ours", "indeterminate", "undefined", "sign_only"}) row[c] = std::string("0");
+    for (const char* c : {"explained_ours", "near_miss", "pre_asymptotic", "consistent_spread", "undefined", "sign_only"})
+      row[c] = std::string("0");
     t.add_row(row);
   }
   return t;

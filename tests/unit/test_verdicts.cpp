@@ -1,9 +1,11 @@
 // The verdicts of the store's rates (src/gpm/studies/judge/verdicts.hpp) on small tables in memory:
 // the seed band deciding only with 5 narrow realizations, a heat series unstable at both rate
 // levels (the sign only where the document prints an unstable run with another rate, undefined
-// where no finite rate is left), checked reasons, and the two boards with a fingerprint row.
+// where no finite rate is left), checked reasons, a differing rate's size (near miss) and our
+// series' movement around the pair (pre-asymptotic), and the two boards with a fingerprint row.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <numeric>
 
 #include "gpm/io/tsv.hpp"
@@ -62,7 +64,7 @@ TEST_CASE("verdicts: one name and one score column per verdict", "[unit][verdict
   CHECK(verdict_name(Verdict::in_seed_band) == "inside seed band");
   CHECK(verdict_name(Verdict::non_convergence) == "non-convergence reproduced");
   CHECK(verdict_column(Verdict::explained_ours) == "explained_ours");
-  REQUIRE(scored_verdicts().size() == 11);
+  REQUIRE(scored_verdicts().size() == 13);
   CHECK(verdict_column(Verdict::sign_only) == "sign_only");
   CHECK(scored_verdicts().front() == Verdict::agrees);
   CHECK(scored_verdicts().back() == Verdict::indeterminate);
@@ -173,8 +175,8 @@ TEST_CASE("verdicts: a heat series unstable at both rate levels", "[unit][verdic
         "both unstable (unstable at both rate levels (2^-8: error 2 after 16 steps; 2^-9: error 8 after 22 steps)), "
         "rate < 0 on both sides: sign only");
   CHECK(row(j, "thesis_table4_6", "h10", "quartic_polynomial 1").verdict == Verdict::agrees);
-  // The least-squares slope beside the two-level rate: two levels fit exactly, no interval.
-  CHECK(row(j, "thesis_table4_6", "h10", "quartic_polynomial 1").rate.lsq == "2.00 (2 levels)");
+  // The least-squares slope needs three levels past the transition: two are no fit.
+  CHECK(row(j, "thesis_table4_6", "h10", "quartic_polynomial 1").rate.lsq.empty());
   CHECK(blown.rate.lsq.empty());
   // Undecided identification: the identified board is the printed one, without fingerprints.
   for (auto& r : j) CHECK((r.printed && r.identified && r.verdict_identified == r.verdict));
@@ -251,4 +253,31 @@ TEST_CASE("verdicts: the printed and identified boards, with the fingerprint row
     for (const std::string& g : score_groups()) sum += std::stoi(score_cell(score, "total", board, g));
     CHECK(fmt(sum) == score_cell(score, "total", board, "rates"));
   }
+}
+
+TEST_CASE("verdicts: a near miss, a pre-asymptotic pair and a gross difference, in error-ratio terms",
+          "[unit][verdicts]") {
+  // Table 4.4's h15 rows as the store holds them (h ratio 2^(1/4) a level): published 2.
+  auto with = [](const std::string& key, const std::string& ours, double before, double after) {
+    StoreRate r = rate("thesis_table4_4", "h15", key, "2", ours, "differs");
+    r.h_ratio = std::pow(2.0, 0.25), r.rate_before = before, r.rate_after = after;
+    return r;
+  };
+  const auto j = judge({with("near", "2.30", 2.31, 2.29),     // 5.3 % apart: within 10 %
+                        with("passing", "3.00", 4.5, 1.9),    // 18.9 %, passes 2 within a level
+                        with("gross", "3.00", 3.05, 2.95),    // 18.9 %, straight there
+                        with("far", "3.74", 6.89, 2.40)});    // moves, but never near 2 within a level
+  const JudgedRate& near = row(j, "thesis_table4_4", "h15", "near");
+  CHECK(near.verdict == Verdict::near_miss);
+  CHECK_THAT(near.reason, Catch::Contains("5.3 % apart") && Catch::Contains("tolerance 2.6 %"));
+  CHECK(row(j, "thesis_table4_4", "h15", "passing").verdict == Verdict::pre_asymptotic);
+  CHECK(row(j, "thesis_table4_4", "h15", "gross").verdict == Verdict::unexplained);
+  CHECK(row(j, "thesis_table4_4", "h15", "far").verdict == Verdict::unexplained);
+  // Without the neighbouring pairs nothing is pre-asymptotic; without h no ratio is claimed.
+  StoreRate alone = with("alone", "3.00", NAN, NAN);
+  StoreRate no_h = with("no_h", "2.30", 2.31, 2.29);
+  no_h.h_ratio = NAN;
+  const auto k = judge({alone, no_h});
+  CHECK(row(k, "thesis_table4_4", "h15", "alone").verdict == Verdict::unexplained);
+  CHECK(row(k, "thesis_table4_4", "h15", "no_h").verdict == Verdict::unexplained);
 }

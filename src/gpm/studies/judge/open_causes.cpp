@@ -33,7 +33,8 @@ bool other_reading(const JudgedRate& j, const JudgedRate& open) {
 }  // namespace
 
 bool open_on_identified_board(const JudgedRate& j) {
-  return j.identified && (j.verdict_identified == Verdict::unexplained || j.verdict_identified == Verdict::sign_only);
+  return j.identified && (j.verdict_identified == Verdict::unexplained || j.verdict_identified == Verdict::sign_only ||
+                          j.verdict_identified == Verdict::near_miss || j.verdict_identified == Verdict::pre_asymptotic);
 }
 
 OpenCause open_cause(const JudgedRate& open, const std::vector<JudgedRate>& judged, double tolerance) {

@@ -1,5 +1,6 @@
-// The open rates of the identified board (differs unexplained, or an unstable run whose rate
-// agrees in sign only) grouped by what the stored data say about each, so that a reader sees
+// The open rates of the identified board (a near miss, a pre-asymptotic pair or a gross
+// difference, each without a checked reason, or an unstable run whose rate agrees in sign only)
+// grouped by what the stored data say about each, so that a reader sees
 // the 20-odd open rates as a handful of questions (referee point 6).  The groups are measured,
 // not guessed: for every open rate, in this order,
 //   another reading    a stored reading of the same table other than the identified one (a

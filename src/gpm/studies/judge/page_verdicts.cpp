@@ -46,7 +46,8 @@ const std::vector<std::pair<std::string, std::string>>& verdict_words() {
       {"agrees", "agree"},           {"non_convergence", "non-convergence"},
       {"sign_only", "unstable, sign only"},  {"in_seed_band", "in seed band"}, {"fingerprint", "fingerprint"},
       {"checked_reason", "checked reason"}, {"explained_ours", "ours explained"},
-      {"unexplained", "unexplained"}, {"indeterminate", "indeterminate"},
+      {"near_miss", "near miss"},     {"pre_asymptotic", "pre-asymptotic"},
+      {"unexplained", "unexplained"}, {"consistent_spread", "consistent with the spread of realizations"},
       {"undefined", "undefined"},     {"not_computed", "not computed"}};
   return w;
 }

@@ -48,6 +48,27 @@ std::vector<int> fixed_levels(const RateJoin& join, const TsvTable& pub, TsvTabl
   return fixed;
 }
 
+// The levels past the transition (issue 59 item 5): the finest run of consecutive stored
+// levels over which every two-level rate lies within the tolerance of the finest pair's.  A
+// least-squares line through a curved series measures its curvature, not a rate; through
+// this tail it measures the rate the series settles to.  Returns its first level.
+template <class Series>
+int transition_tail_start(const Series& s, double tolerance) {
+  std::vector<int> lv;
+  std::vector<double> rate;  // rate[i]: levels lv[i], lv[i+1]
+  for (auto& [level, pt] : s) lv.push_back(level);
+  for (std::size_t i = 0; i + 1 < lv.size(); ++i) {
+    const auto& a = s.at(lv[i]);
+    const auto& b = s.at(lv[i + 1]);
+    rate.push_back(two_level_rate(a.x, a.y, b.x, b.y));
+  }
+  if (rate.empty() || !std::isfinite(rate.back())) return lv.empty() ? 0 : lv.back();
+  std::size_t first = rate.size() - 1;
+  while (first > 0 && std::isfinite(rate[first - 1]) && std::fabs(rate[first - 1] - rate.back()) <= tolerance)
+    --first;
+  return lv[first];
+}
+
 }  // namespace
 
 std::pair<int, int> documents_levels(const TsvTable& published) {
@@ -100,14 +121,16 @@ std::map<std::string, int> join_rates(const TsvTable& data, const TsvTable& pub,
 
   out.columns.insert(out.columns.end(), join.keys.begin(), join.keys.end());
   for (const char* c : {"published", "theoretical", "reproduced", "difference", "lsq_slope",
-                        "lsq_half95", "lsq_points", "levels", "status", "reason"})
+                        "lsq_half95", "lsq_points", "lsq_from", "levels", "h_ratio", "rate_before",
+                        "rate_after", "status", "reason"})
     out.columns.push_back(c);
   const std::vector<int> fixed = fixed_levels(join, pub, out);
   std::map<std::string, int> counts;
   for (std::size_t i = 0; i < pub.rows.size(); ++i) {
     const std::string key = key_of(pub, i, pk);
     const double published = pub.number(i, cv);
-    std::string rep = "NA", diff = "NA", lsq = "NA", half = "NA", points = "0", levels = "", status = "not-computed", why = "";
+    std::string rep = "NA", diff = "NA", lsq = "NA", half = "NA", points = "0", from = "NA", levels = "",
+                ratio = "NA", before = "NA", after = "NA", status = "not-computed", why = "";
     auto it = series.find(key);
     const bool have = it != series.end() &&
                       (fixed.empty() ? it->second.size() >= 2
@@ -117,12 +140,30 @@ std::map<std::string, int> join_rates(const TsvTable& data, const TsvTable& pub,
       auto prev = fixed.empty() ? std::prev(last) : it->second.find(fixed[0]);
       const double rate = two_level_rate(prev->second.x, prev->second.y, last->second.x,
                                          last->second.y);
+      // The least-squares slope over the levels past the transition only (three at least).
+      const int tail = transition_tail_start(it->second, join.tolerance);
       std::vector<double> xs, ys;
-      for (auto& [lv, pt] : it->second) xs.push_back(pt.x), ys.push_back(pt.y);
+      for (auto& [lv, pt] : it->second)
+        if (lv >= tail) xs.push_back(pt.x), ys.push_back(pt.y);
       rep = fmt(rate);
-      const RateFit fit = least_squares_fit(xs, ys);
-      lsq = fmt(fit.slope), half = fmt(fit.half95), points = fmt(static_cast<long long>(fit.points));
+      from = std::to_string(tail);
+      points = fmt(static_cast<long long>(xs.size()));
+      if (xs.size() >= 3) {
+        const RateFit fit = least_squares_fit(xs, ys);
+        lsq = fmt(fit.slope), half = fmt(fit.half95), points = fmt(static_cast<long long>(fit.points));
+      }
       levels = std::to_string(prev->first) + "," + std::to_string(last->first);
+      // The pair's ratio of h, and our rate one level coarser and one finer: how far it moves
+      // around the pair (the verdicts' "pre-asymptotic") and what a rate difference is as an
+      // error ratio per level (their "near miss").
+      ratio = fmt(prev->second.x / last->second.x);
+      if (prev != it->second.begin()) {
+        const auto b = std::prev(prev);
+        if (b->first == prev->first - 1)
+          before = fmt(two_level_rate(b->second.x, b->second.y, prev->second.x, prev->second.y));
+      }
+      if (const auto a = std::next(last); a != it->second.end() && a->first == last->first + 1)
+        after = fmt(two_level_rate(last->second.x, last->second.y, a->second.x, a->second.y));
       // NaN fails every comparison: tested first, or it would fall through to a reason.
       if (!std::isfinite(rate) || !std::isfinite(published)) {
         status = "undefined";
@@ -140,7 +181,7 @@ std::map<std::string, int> join_rates(const TsvTable& data, const TsvTable& pub,
     std::vector<std::string> row;
     for (int c : pk) row.push_back(pub.text(i, c));
     for (auto& s : {fmt(published), ct >= 0 ? pub.text(i, ct) : std::string("NA"), rep, diff, lsq,
-                    half, points, levels, status, why})
+                    half, points, from, levels, ratio, before, after, status, why})
       row.push_back(s);
     out.add_row(row);
   }

@@ -3,8 +3,12 @@
 // (verdicts.hpp) builds it for every slice of the result store and judges its rows.
 //
 // Per published row (matched on the key columns), the documents' rate log(e₁/e₂)/log(h₁/h₂)
-// between two levels, a least-squares slope over all levels with the half-width of its 95 %
-// interval and the number of levels it fits (lsq_slope, lsq_half95, lsq_points), and a status:
+// between two levels; a least-squares slope with the half-width of its 95 % interval over the
+// levels past the transition only (lsq_slope, lsq_half95, lsq_points, lsq_from: the finest run
+// of levels whose two-level rates all lie within the tolerance of the finest pair's; NA under
+// three levels), since through a curved series a line measures the curvature; the pair's h₁/h₂
+// (h_ratio) and our rate one level coarser and one finer (rate_before, rate_after; NA where
+// the store lacks the level); and a status:
 //   other-levels   the rate comes from other levels than the document's (the published
 //                  file's rate_levels): shown, not judged — a pre-asymptotic rate from
 //                  coarser levels neither agrees nor differs with the document
@@ -57,7 +61,8 @@ struct RateJoin {
 
 
 // Appends to `out` the columns (the keys, then published, theoretical, reproduced,
-// difference, lsq_slope, lsq_half95, lsq_points, levels, status, reason) and one row per published row, in the
+// difference, lsq_slope, lsq_half95, lsq_points, lsq_from, levels, h_ratio, rate_before,
+// rate_after, status, reason) and one row per published row, in the
 // published file's order; sets `out`'s rate_levels (fixed levels) and count_<status> lines.
 // Returns the rows per status.  InputError (naming the file, by TsvTable::source) for a
 // missing column, a cell that is no number, two data rows with the same key and level, or

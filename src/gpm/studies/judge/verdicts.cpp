@@ -35,11 +35,13 @@ const std::vector<VerdictSpelling>& spellings() {
       {Verdict::in_seed_band, "inside seed band", "in_seed_band", "reproduced"},
       {Verdict::checked_reason, "differs, checked reason", "checked_reason", "explained"},
       {Verdict::explained_ours, "our rate explained, the published one not", "explained_ours", "explained"},
+      {Verdict::near_miss, "near miss", "near_miss", "not_explained"},
+      {Verdict::pre_asymptotic, "pre-asymptotic, not comparable at the tolerance", "pre_asymptotic", "undecided"},
       {Verdict::unexplained, "differs, unexplained", "unexplained", "not_explained"},
       {Verdict::not_computed, "not computed", "not_computed", "missing"},
       {Verdict::undefined, "undefined", "undefined", "undecided"},
       {Verdict::setup_fingerprint, "fingerprint", "fingerprint", "used_for_setup"},
-      {Verdict::indeterminate, "indeterminate", "indeterminate", "undecided"},
+      {Verdict::indeterminate, "consistent with the spread of realizations", "consistent_spread", "consistent"},
       {Verdict::not_counted, "not counted", "", ""},
   };
   return s;
@@ -144,6 +146,35 @@ std::map<RateKey, SeedBand> seed_bands(const std::vector<StoreRate>& rates) {
   return bands;
 }
 
+// A differing rate without a checked reason, by its size and by what our own series shows
+// (issue 59 item 5): a near miss where the per-level error ratios, h_ratio^|difference|, are
+// within kNearMiss; else pre-asymptotic where our rate moves by more than the tolerance to the
+// documents' pair from the pair one level coarser or one finer and passes the published rate
+// there (within the tolerance): a shift of the transition by part of a level would give the
+// published rate, so the pair is not comparable at the tolerance; else a gross difference,
+// unexplained.  Each reason states the tolerance at this pair as an error ratio.
+std::pair<Verdict, std::string> miss_of(const StoreRate& r, double tolerance) {
+  double ours = 0, published = 0;
+  if (!rate_number(r.reproduced, ours) || !rate_number(r.published, published) || !(r.h_ratio > 1))
+    return {Verdict::unexplained, ""};
+  const double tol_ratio = std::pow(r.h_ratio, tolerance) - 1;
+  const double gap = std::pow(r.h_ratio, std::fabs(ours - published)) - 1;
+  const std::string said = format("per-level error ratios %.1f %% apart (tolerance %.1f %% at this pair, near "
+                                  "miss %.0f %%)",
+                                  100 * gap, 100 * tol_ratio, 100 * kNearMiss);
+  if (gap <= kNearMiss) return {Verdict::near_miss, said};
+  double move = 0, lo = ours, hi = ours;
+  for (double n : {r.rate_before, r.rate_after})
+    if (std::isfinite(n)) move = std::max(move, std::fabs(n - ours)), lo = std::min(lo, n), hi = std::max(hi, n);
+  if (move > tolerance && published >= lo - tolerance && published <= hi + tolerance)
+    return {Verdict::pre_asymptotic,
+            format("%s; our rate moves by %.2f per level around the pair (%s, %.2f, %s), more than the "
+                   "tolerance %.2f, and passes the published one within a level",
+                   said.c_str(), move, std::isfinite(r.rate_before) ? format("%.2f", r.rate_before).c_str() : "-",
+                   ours, std::isfinite(r.rate_after) ? format("%.2f", r.rate_after).c_str() : "-", tolerance)};
+  return {Verdict::unexplained, said};
+}
+
 // The verdict of a document rate (the list in verdicts.hpp), with its reason; `band`: its seed
 // band where it has two realizations or more.
 std::pair<Verdict, std::string> verdict_of(const StoreRate& r, const SeedBand* band,
@@ -189,7 +220,7 @@ std::pair<Verdict, std::string> verdict_of(const StoreRate& r, const SeedBand* b
     // explains only our rate leaves the published one unexplained, and says so.
     if (const auto c = checked.find(place); c != checked.end())
       return {c->second.restores ? Verdict::checked_reason : Verdict::explained_ours, c->second.text};
-    return {Verdict::unexplained, ""};
+    return miss_of(r, tolerance);
   }
   if (r.status == "not-computed" && blown != unstable.end())
     return {Verdict::undefined, "no finite rate: " + blown->second};
@@ -236,19 +267,21 @@ std::string slice_setup(const std::string& table, const std::string& slice) {
 }
 
 namespace {
+// A joined row's number cell; NaN where the column is absent or holds no number (NA: the
+// series has too few levels).
+double number_or_nan(const TsvTable& joined, std::size_t i, const char* name) {
+  const int c = joined.column(name);
+  double v = NAN;
+  return c >= 0 && read_decimal(joined.text(i, c), v) ? v : NAN;
+}
 // A joined row's least-squares slope as StoreRate::lsq writes it.
 std::string lsq_text(const TsvTable& joined, std::size_t i) {
-  // A cell that holds no number (NA: the series has under two levels) gives NaN.
-  auto cell = [&](const char* name) {
-    const int c = joined.column(name);
-    double v = NAN;
-    return c >= 0 && read_decimal(joined.text(i, c), v) ? v : NAN;
-  };
-  const double slope = cell("lsq_slope"), half = cell("lsq_half95"), points = cell("lsq_points");
+  const double slope = number_or_nan(joined, i, "lsq_slope"), half = number_or_nan(joined, i, "lsq_half95");
+  const double points = number_or_nan(joined, i, "lsq_points"), from = number_or_nan(joined, i, "lsq_from");
   if (!std::isfinite(slope)) return "";
-  char buf[64];
-  if (std::isfinite(half))
-    std::snprintf(buf, sizeof buf, "%.2f \u00b1 %.2f (%.0f levels)", slope, half, points);
+  char buf[80];
+  if (std::isfinite(half) && std::isfinite(from))
+    std::snprintf(buf, sizeof buf, "%.2f \u00b1 %.2f (levels %.0f-%.0f)", slope, half, from, from + points - 1);
   else
     std::snprintf(buf, sizeof buf, "%.2f (%.0f levels)", slope, points);
   return buf;
@@ -269,6 +302,9 @@ std::vector<StoreRate> store_rates_of(const std::string& table, const std::strin
     r.reproduced = joined.text(i, "reproduced");
     r.levels = joined.text(i, "levels");
     r.lsq = lsq_text(joined, i);
+    r.h_ratio = number_or_nan(joined, i, "h_ratio");
+    r.rate_before = number_or_nan(joined, i, "rate_before");
+    r.rate_after = number_or_nan(joined, i, "rate_after");
     r.status = setup == kDocumentSetup ? joined.text(i, "status") : "no published value for this set-up";
     // Only a printed NA means "no convergence claimed" (rate_table writes NA where the
     // published file has no theoretical column).
