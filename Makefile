@@ -1,7 +1,7 @@
 # gpm-repro — two commands do everything on a fresh Debian 12 machine (as root):
 #   make report   install what is missing, build, run the studies, plot, assemble the report
 #   make test     install what is missing, build, run the Catch2 suite through ctest
-# Other targets: make pdf, make bench, make plan, make clean, make deps, make build.
+# Other targets: make figures, make tables, make pdf, make bench, make plan, make clean, make deps, make build.
 # PROFILE=quick (default, minutes) or PROFILE=paper (the documents' exact resolutions, hours).
 
 # Every stage reads and prints numbers with '.' whatever the user's locale (awk, printf, sort).
@@ -45,7 +45,7 @@ PACKAGES := build-essential cmake git pkg-config libeigen3-dev libcgal-dev libgm
             libmpfr-dev libboost-dev libgsl-dev libglpk-dev libfftw3-dev glpk-utils catch2 gnuplot-nox pandoc \
             chromium python3
 
-.PHONY: all report pdf test test-paper bench plan deps build data figures tables clean help
+.PHONY: all report pdf test test-paper bench plan deps build data figures figures-all tables clean help
 
 all: report
 
@@ -105,7 +105,7 @@ STORE := results/paper
 , := ,
 # Goals that need no study rule may run before the first build; any other needs them.
 ifeq ($(wildcard $(STUDIES_MK)),)
-ifneq ($(filter-out all report pdf test test-paper bench plan deps build clean help,$(or $(MAKECMDGOALS),all)),)
+ifneq ($(filter-out all report pdf figures tables test test-paper bench plan deps build clean help,$(or $(MAKECMDGOALS),all)),)
 $(error $(STUDIES_MK) is missing: run `make build` first (it writes the studies' make rules))
 endif
 else
@@ -121,7 +121,7 @@ $(FIGOUT)/%.svg:
 	gnuplot -e "datadir='$(DATA)'; $(GNUPLOT_STUDIES); out='$@.tmp'" $< && mv $@.tmp $@
 
 data: $(DATAFILES)
-figures: $(FIGFILES)
+figures-all: $(FIGFILES)
 
 # --- report: paper/NN-*.md in name order -----------------------------------------------
 REPORT_SOURCES := $(sort $(wildcard paper/[0-9][0-9]-*.md))
@@ -166,6 +166,16 @@ report: build
 
 pdf: build
 	$(MAKE) --no-print-directory PROFILE=$(PROFILE) paper/report.pdf paper/supplement.pdf
+
+# make figures: every figure of the report (figures/out/*.svg), after the build.
+figures: build
+	$(MAKE) --no-print-directory PROFILE=$(PROFILE) figures-all
+
+# make tables: every reproduced table, published beside ours at paper scale (the committed
+# store, whatever the profile), as TSV and Markdown in tables/out/ (tables/reproduced_tables.sh).
+tables: build
+	$(MAKE) --no-print-directory PROFILE=$(PROFILE) $(DATA)/store_rates.tsv
+	bash tables/reproduced_tables.sh $(DATA)/store_rates.tsv $(TABOUT)
 
 # --- benchmarks -------------------------------------------------------------------------
 # The measured limit (bench_limit), every kernel variant as a fraction of it, and the
