@@ -24,11 +24,13 @@ set datafile commentschars "#"
 # Draw a reference-slope triangle of slope s with its lower-left corner at (x0, y0),
 # spanning a factor f in x: call   eval triangle(x0, y0, f, s, 'label')
 # The label sits left of the triangle's lower-left corner, so neighbouring triangles do not
-# share label space.
+# share label space; with TRI_BELOW = 1 it sits centred under the triangle instead (a triangle
+# at the left edge of a panel, whose label would cross the axis and its tick labels).
 # TRI_FONT: the label's font (a figure drawn at print size sets it to its text size).
 TRI_FONT = ',10'
-triangle(x0, y0, f, s, lab) = sprintf("set object polygon from %g,%g to %g,%g to %g,%g to %g,%g fs empty border lc rgb '#000000'; set label '%s' at %g,%g right font '%s'", \
-  x0, y0, x0*f, y0, x0*f, y0*f**s, x0, y0, lab, x0/1.06, y0, TRI_FONT)
+TRI_BELOW = 0
+triangle(x0, y0, f, s, lab) = sprintf("set object polygon from %g,%g to %g,%g to %g,%g to %g,%g fs empty border lc rgb '#000000'; set label '%s' at %g,%g %s font '%s'", \
+  x0, y0, x0*f, y0, x0*f, y0*f**s, x0, y0, lab, TRI_BELOW ? x0*sqrt(f) : x0/1.06, TRI_BELOW ? y0/1.6 : y0, TRI_BELOW ? 'center' : 'right', TRI_FONT)
 # A log-2 x axis labelled with powers of 2 in half steps, for abscissae (such as h) that span
 # less than a decade, where '10^{%L}' would leave a single label.  Set the range first:
 #   xlo = 0.09; xhi = 0.22; eval pow2_xtics
@@ -51,13 +53,22 @@ finest_points = "stats ANCHOR using (column('h')) name 'AX' nooutput; " . \
   "stats ANCHOR using (column('h') == AX_min ? column('rel_error') : NaN) name 'AY' nooutput; "
 anchored_triangle(s, lab) = finest_points . \
   sprintf("eval triangle(AX_min, AY_min * ANCHOR_DROP, AX2_min / AX_min, %g, '%s')", s, lab)
-# A published rate p drawn beside the series in ANCHOR: a thick grey segment over its last
-# interval with slope p, PUB_DROP below the finest point (where the rate agrees it runs
-# parallel to the data just under them, not hidden beneath the markers).
-# Legend entry: NaN with lines lw 6 lc rgb '#bbbbbb' title 'published rate'.
+# A published rate p drawn beside the series in ANCHOR: a thick grey segment with slope p over
+# the documents' own level pair (the `# rate_levels` line of the published file P, the pair the
+# rate belongs to), PUB_DROP below the series' point at the finer of them (where the rate agrees
+# it runs parallel to the data just under them, not hidden beneath the markers).  A series that
+# lacks either level (a profile that stops short of the documents') gets it over its two
+# finest points instead.  Legend entry: NaN with lines lw 6 lc rgb '#bbbbbb' title 'published rate'.
 #   ANCHOR = sel(...); p = published_rate(P, '$c["weight"]=="Pi1"'); if (p == p) { eval published_segment(p) }
 published_segment(p) = finest_points . \
-  sprintf("set arrow from AX_min, AY_min * PUB_DROP to AX2_min, AY_min * PUB_DROP * (AX2_min / AX_min)**%.17g nohead lw 6 lc rgb '#bbbbbb' back", p)
+  "DL = doc_levels(P); DL1 = DL[1:strstrt(DL, ',') - 1]; DL2 = DL[strstrt(DL, ',') + 1:]; " . \
+  "PX1 = anchor_at(DL1, 'h'); PX2 = anchor_at(DL2, 'h'); PY2 = anchor_at(DL2, 'rel_error'); " . \
+  "if (!(PX1 == PX1 && PX2 == PX2 && PY2 == PY2)) { PX1 = AX2_min; PX2 = AX_min; PY2 = AY_min }; " . \
+  sprintf("set arrow from PX2, PY2 * PUB_DROP to PX1, PY2 * PUB_DROP * (PX1 / PX2)**%.17g nohead lw 6 lc rgb '#bbbbbb' back", p)
+# The documents' level pair of a published file ("7,8"; "," where it names none).
+doc_levels(P) = system(sprintf("awk -F' = ' '$1 == \"# rate_levels\" { print $2; f = 1; exit } END { if (!f) print \",\" }' '%s'", P))
+# Column `col` of the series in ANCHOR at level `lv` (a number as text); NaN where it has none.
+anchor_at(lv, col) = real(system(sprintf("%s | awk -F'\t' '!h++ { for (i=1;i<=NF;i++) c[$i]=i; next } \"%s\" != \"\" && $c[\"level\"] == \"%s\" { print $c[\"%s\"]; f = 1; exit } END { if (!f) print \"NaN\" }'", ANCHOR[3:], lv, lv, col)))
 PUB_DROP = 0.55  # factor in y between the finest point and the published-rate segment
 # The `numerical` column of the first row of a published long-format table P that satisfies an
 # awk condition on its named columns (as rows_named); NaN when no row does.

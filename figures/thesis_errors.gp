@@ -9,8 +9,8 @@
 # Voronoi volumes (where the table has that reading), the printed h with uniform volumes
 # |Ω_H|/N (beyond the thesis); columns = Case 1, Case 2.  Each triangle (a theoretical rate)
 # sits under the two finest points of its weight's series; in the thesis' settings a thick
-# grey segment starts at the finest point of each series and rises with the PUBLISHED rate of
-# that weight and case over the last interval: where the rate agrees, it lies on the data.
+# grey segment rises with the PUBLISHED rate of that weight and case over the documents' level
+# pair (style.gp's published_segment): where the rate agrees, it lies on the data.
 # Columns are addressed by name (the data file's header).  Drawn at print size: 760 px wide
 # (the A4 text width is 703 px), every text 14 px (superscripts 11 px), so none prints below 8 pt; one legend, in
 # the first panel.

@@ -3,8 +3,8 @@
 # line style for a weight in every panel), from data file `f` (rows that blew up have rel_error
 # NA and are left out); `slopes` gives the theoretical rate per theta for the slope triangle of
 # its panel; P is the published long-format table (weight, theta, numerical): each series gets a
-# grey segment from its finest point, rising with the PUBLISHED rate over the last interval
-# (where the rate agrees, the segment lies on the data).  The panels share both axes.
+# grey segment rising with the PUBLISHED rate over the documents' level pair (style.gp's
+# published_segment; where the rate agrees, the segment lies on the data).  The panels share both axes.
 # Drawn at print size: 760 px wide (the A4 text width is 703 px) with 14 px text, so nothing
 # prints below 8 pt; one legend, below the panels.
 load 'figures/style.gp'
@@ -12,6 +12,7 @@ nth = words(thetas)
 W = 760
 set terminal svg size W,470 dynamic enhanced font 'Helvetica,14' background rgb 'white'
 TRI_FONT = ',14'
+TRI_BELOW = 1  # the triangles sit at the panels' left edge (the finest h)
 
 set output out
 set datafile columnheaders
