@@ -95,7 +95,7 @@ test-paper: build
 # The studies' data and rate-table rules, and the lists STUDIES_<group>, STUDY_FILES, … are
 # generated from the study registry (src/gpm/studies/define/registry.cpp) into build/studies.mk by
 # `make build`; mk/*.mk add what else each part of the report needs (figures, diagnostics),
-# appending to DATAFILES and FIGFILES.  Adding a study: the README, "How to add".
+# appending to DATAFILES and FIGFILES.  Adding a study: docs/reference.md, "How to add".
 # A data file is rebuilt only when its program changed (make's timestamps); inside a
 # program, levels already computed with the same parameters are read back, not redone.
 DATAFILES :=

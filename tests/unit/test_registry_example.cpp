@@ -1,4 +1,4 @@
-// Adding a study is one registry entry plus its unit body (README, "How to add"): this test
+// Adding a study is one registry entry plus its unit body (docs/reference.md, "How to add"): this test
 // registers a small example study beside the package's and checks that every part that
 // should know it does, with no other file touched — the catalog (`gpm study`), the runner
 // (its levels, columns, cache), the plan, the make rules (build/studies.mk, its figure's too) and the
