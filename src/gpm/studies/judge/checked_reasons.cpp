@@ -28,14 +28,6 @@ const char* pass_fail(bool ok) { return ok ? "pass" : "fail"; }
 const char* yes_no(bool b) { return b ? "yes" : "no"; }
 
 
-// A published rate as the heat tables print one: a plain decimal (an optional '-', digits and
-// points); anything else (a word where the document prints no rate) has no number to check.
-bool plain_decimal(const std::string& s) {
-  const std::size_t start = !s.empty() && s[0] == '-' ? 1 : 0;
-  if (s.size() == start) return false;
-  return std::all_of(s.begin() + static_cast<long>(start), s.end(),
-                     [](char c) { return (c >= '0' && c <= '9') || c == '.'; });
-}
 
 void add(TsvTable& out, const std::string& table, const std::string& slice, const std::string& key,
          const std::string& reason, const std::string& evidence, bool pass, bool restores) {
@@ -148,7 +140,7 @@ void add_gradient_smoothing_reasons(const TsvTable& pub, const TsvTable& data, c
     const double q1 = v[0].error / v[0].smoothing, q2 = v[1].error / v[1].smoothing;
     const double rr = two_level_rate(v[0].h, v[0].error, v[1].h, v[1].error);
     const double re = two_level_rate(v[0].h, v[0].smoothing, v[1].h, v[1].smoothing);
-    const double p = std::strtod(published.at(w).c_str(), nullptr);
+    const double p = cell_number_or(published.at(w), NAN);
     const bool own = std::fabs(q1 - 1) <= kGradientSmoothingShare && std::fabs(q2 - 1) <= kGradientSmoothingShare;
     const bool out_of_reach = std::fabs(p - re) > tol;
     add(out, "thesis_table4_3", reading + "_voronoi", w + " grad case2",
@@ -174,7 +166,7 @@ void add_interpolant_smoothing_reasons(const TsvTable& pub, const TsvTable& data
     const double q1 = v[0].smoothing / v[0].error, q2 = v[1].smoothing / v[1].error;
     const double rr = two_level_rate(v[0].h, v[0].error, v[1].h, v[1].error);
     const double rs = two_level_rate(v[0].h, v[0].smoothing, v[1].h, v[1].smoothing);
-    const double p = std::strtod(published.at(w).c_str(), nullptr);
+    const double p = cell_number_or(published.at(w), NAN);
     // Checked when the smoothing part is a small share of the error at both levels and the
     // published rate is the smoothing part's own (what an error made of it alone would give).
     const bool ok = q1 <= kInterpolantSmoothingShare && q2 <= kInterpolantSmoothingShare &&
@@ -197,8 +189,8 @@ void add_heat_mode_reasons(const std::string& table, const std::string& slice, c
     published[pub.text(i, "weight") + " " + pub.text(i, "theta")] = pub.text(i, "numerical");
   for (const ModeRate& r : rates) {
     const auto it = published.find(r.key);
-    if (it == published.end() || !plain_decimal(it->second)) continue;
-    const double p = std::strtod(it->second.c_str(), nullptr);
+    double p;  // a published rate; a word where the document prints none has nothing to check
+    if (it == published.end() || !cell_number(it->second, p)) continue;
     const bool accounts = r.ratio_coarse >= kModeRatioLow && r.ratio_coarse <= kModeRatioHigh &&
                           r.ratio_fine >= kModeRatioLow && r.ratio_fine <= kModeRatioHigh &&
                           std::fabs(r.predicted - r.reproduced) <= tol;

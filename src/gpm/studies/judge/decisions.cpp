@@ -29,11 +29,7 @@ namespace fs = std::filesystem;
 
 // A cell as a number where one is needed for a comparison or a sum: "NA" (rate_table's not
 // computed) counts 0, so a mean over a table's rows is over all of them.
-double num(const std::string& s) {
-  char* end = nullptr;
-  const double v = std::strtod(s.c_str(), &end);
-  return end == s.c_str() ? 0.0 : v;
-}
+double num(const std::string& s) { return cell_number_or(s, 0.0); }
 
 std::optional<TsvTable> load_if(const std::string& path) {
   if (!fs::exists(path)) return std::nullopt;

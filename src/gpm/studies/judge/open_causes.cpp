@@ -5,17 +5,11 @@
 #include <cstdlib>
 #include <map>
 
+#include "gpm/studies/judge/rates.hpp"
+
 namespace gpm {
 
 namespace {
-
-// A rate cell as a number; false for NA, empty, nan or inf.
-bool number(const std::string& s, double& v) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  v = std::strtod(s.c_str(), &end);
-  return end && *end == '\0' && std::isfinite(v);
-}
 
 std::string two(double v) {
   char b[32];
@@ -39,9 +33,9 @@ bool open_on_identified_board(const JudgedRate& j) {
 
 OpenCause open_cause(const JudgedRate& open, const std::vector<JudgedRate>& judged, double tolerance) {
   double published = 0, ours = 0;
-  const bool has_published = number(open.rate.published, published);
+  const bool has_published = cell_number(open.rate.published, published);
   std::string evidence = "published " + open.rate.published;
-  if (number(open.rate.reproduced, ours)) evidence += ", ours " + two(ours);
+  if (cell_number(open.rate.reproduced, ours)) evidence += ", ours " + two(ours);
   if (open.band_seeds >= 2)
     evidence += ", band " + two(open.band_lo) + " to " + two(open.band_hi) + " (" + std::to_string(open.band_seeds) +
                 " seeds)";
@@ -51,7 +45,7 @@ OpenCause open_cause(const JudgedRate& open, const std::vector<JudgedRate>& judg
   double nearest_gap = INFINITY;
   for (const JudgedRate& j : judged) {
     double rate;
-    if (!has_published || !other_reading(j, open) || !number(j.rate.reproduced, rate)) continue;
+    if (!has_published || !other_reading(j, open) || !cell_number(j.rate.reproduced, rate)) continue;
     const double gap = std::fabs(rate - published);
     if (gap <= tolerance) agreeing += (agreeing.empty() ? "" : ", ") + j.rate.slice;
     if (gap < nearest_gap) nearest_gap = gap, nearest = j.rate.slice + " " + two(rate);

@@ -1,5 +1,6 @@
 #include "gpm/studies/judge/rates.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -18,10 +19,30 @@ TsvTable load_published(const std::string& path, const std::string& who) {
   return TsvTable::load(path, false);
 }
 
+bool cell_number(const std::string& s, double& value) {
+  std::size_t i = !s.empty() && s[0] == '-' ? 1 : 0;
+  const std::size_t mantissa = i;
+  while (i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '.')) ++i;
+  if (i == mantissa) return false;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    const std::size_t digits = i;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+    if (i == digits) return false;
+  }
+  if (i != s.size()) return false;
+  value = std::strtod(s.c_str(), nullptr);
+  return std::isfinite(value);
+}
+
+double cell_number_or(const std::string& s, double otherwise) {
+  double v;
+  return cell_number(s, v) ? v : otherwise;
+}
+
 double theoretical_rate(const std::string& text) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  return !text.empty() && !*end ? v : std::numeric_limits<double>::quiet_NaN();
+  return cell_number_or(text, std::numeric_limits<double>::quiet_NaN());
 }
 
 namespace {

@@ -43,6 +43,13 @@ std::string documents_levels_text(const TsvTable& published);  // "8,9"
 // "<who>: no published file PATH" where it is absent.
 TsvTable load_published(const std::string& path, const std::string& who);
 
+// A cell read as a number, the one reader the judges share (issue 57): a plain decimal (an
+// optional '-', digits and points, an optional exponent) and nothing else; false for NA, an
+// empty cell, nan, inf or a word (a document's "unstable").
+bool cell_number(const std::string& text, double& value);
+// The same, `otherwise` where the cell holds no number.
+double cell_number_or(const std::string& text, double otherwise);
+
 // A published `theoretical` cell as a rate; NaN where the document gives a word ("unstable":
 // Table 4.6's explicit series) or nothing.
 double theoretical_rate(const std::string& text);

@@ -75,24 +75,6 @@ std::map<std::string, std::string> identified_slices(const std::optional<PdeRead
   return s;
 }
 
-// A cell rate_table wrote as a number: a decimal, no nan or inf (their rates are undefined).
-bool rate_number(const std::string& s, double& value) {
-  std::size_t i = s[0] == '-' ? 1 : 0;
-  const std::size_t mantissa = i;
-  while (i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '.')) ++i;
-  if (i == mantissa) return false;
-  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-    ++i;
-    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-    const std::size_t digits = i;
-    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
-    if (i == digits) return false;
-  }
-  if (i != s.size()) return false;
-  value = std::strtod(s.c_str(), nullptr);
-  return true;
-}
-
 // A store cell read as a number the way a heat file's evidence needs it: its leading number,
 // 0 where it has none (rel_error is NA in a run that blew up).
 double leading_number(const std::string& s) { return std::strtod(s.c_str(), nullptr); }
@@ -137,7 +119,7 @@ std::map<RateKey, SeedBand> seed_bands(const std::vector<StoreRate>& rates) {
   std::map<RateKey, SeedBand> bands;
   for (const StoreRate& r : rates) {
     double rate;
-    if ((r.setup != kDocumentSetup && r.setup != kJitterSetup) || !rate_number(r.reproduced, rate)) continue;
+    if ((r.setup != kDocumentSetup && r.setup != kJitterSetup) || !cell_number(r.reproduced, rate)) continue;
     SeedBand& b = bands[band_key(r)];
     b.lo = b.seeds == 0 ? rate : std::min(b.lo, rate);
     b.hi = b.seeds == 0 ? rate : std::max(b.hi, rate);
@@ -155,7 +137,7 @@ std::map<RateKey, SeedBand> seed_bands(const std::vector<StoreRate>& rates) {
 // unexplained.  Each reason states the tolerance at this pair as an error ratio.
 std::pair<Verdict, std::string> miss_of(const StoreRate& r, double tolerance) {
   double ours = 0, published = 0;
-  if (!rate_number(r.reproduced, ours) || !rate_number(r.published, published) || !(r.h_ratio > 1))
+  if (!cell_number(r.reproduced, ours) || !cell_number(r.published, published) || !(r.h_ratio > 1))
     return {Verdict::unexplained, ""};
   const double tol_ratio = std::pow(r.h_ratio, tolerance) - 1;
   const double gap = std::pow(r.h_ratio, std::fabs(ours - published)) - 1;
@@ -200,13 +182,13 @@ std::pair<Verdict, std::string> verdict_of(const StoreRate& r, const SeedBand* b
   // the set-up decides: Table 4.6's h10 reading grows by -37 where the document prints -281).
   // Only the sign agrees, so it is not counted as reproduced.
   if (differs && r.theoretical == "unstable" && blown != unstable.end() &&
-      rate_number(r.reproduced, reproduced) && reproduced < 0 && leading_number(r.published) < 0)
+      cell_number(r.reproduced, reproduced) && reproduced < 0 && leading_number(r.published) < 0)
     return {Verdict::sign_only, "both unstable (" + blown->second + "), rate < 0 on both sides: sign only"};
   if (differs) {
     // Inside the band of the jitter realizations: a verdict only with enough of them and a
     // band no wider than the tolerance; otherwise the seeds cannot decide (more seeds only
     // widen a band already too wide).
-    if (band && rate_number(r.published, published) && published >= band->lo && published <= band->hi) {
+    if (band && cell_number(r.published, published) && published >= band->lo && published <= band->hi) {
       const double width = band->hi - band->lo;
       if (band->seeds >= kSeedBandDecides && width <= tolerance) return {Verdict::in_seed_band, ""};
       return {Verdict::indeterminate,
@@ -490,7 +472,7 @@ std::vector<Tally> slice_tallies(const std::vector<JudgedRate>& rates) {
     s->printed = s->printed || j.printed;
     s->identified = s->identified || j.identified;
     double reproduced, published;
-    if (rate_number(r.reproduced, reproduced) && rate_number(r.published, published)) {
+    if (cell_number(r.reproduced, reproduced) && cell_number(r.published, published)) {
       s->sum_difference += std::fabs(reproduced - published);
       ++s->differences;
     }
