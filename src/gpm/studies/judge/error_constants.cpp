@@ -7,6 +7,7 @@
 #include <map>
 
 #include "gpm/error.hpp"
+#include "gpm/io/args.hpp"
 #include "gpm/io/text_format.hpp"
 #include "gpm/studies/define/heat_tables.hpp"
 #include "gpm/studies/define/registry.hpp"
@@ -34,10 +35,12 @@ using Realized = std::map<int, std::map<int, Point>>;
 using Key = std::pair<std::string, std::string>;
 using SeriesPoints = std::map<Key, Realized>;
 
-// The realization a store file holds: N of a slice ending "_seedN", else 1.
+// The realization a store file holds: its registered arguments' --seed (what its program ran
+// with), 1 where they name none; not decoded from the slice's name.
 int seed_of(const StoreFile& f) {
-  const auto at = f.slice.rfind("_seed");
-  return at == std::string::npos ? 1 : std::atoi(f.slice.c_str() + at + 5);
+  for (std::size_t i = 0; i + 1 < f.args.size(); ++i)
+    if (f.args[i] == "--seed") return static_cast<int>(parse_integer(f.args[i + 1], f.name + " --seed", 1, 1 << 30));
+  return 1;
 }
 
 // The store files of a slice, its realizations and (Table 4.4) its τ-PCG companions, plain
