@@ -281,3 +281,15 @@ TEST_CASE("verdicts: a near miss, a pre-asymptotic pair and a gross difference, 
   CHECK(row(k, "thesis_table4_4", "h15", "alone").verdict == Verdict::unexplained);
   CHECK(row(k, "thesis_table4_4", "h15", "no_h").verdict == Verdict::unexplained);
 }
+
+TEST_CASE("verdicts: a non-convergence is judged by the seed band like any agreement", "[unit][verdicts]") {
+  // Imoto's m = 1 row (no convergence claimed): seed 1 within the tolerance of the published
+  // rate, the other realizations spread 0.4 wide: the realizations cannot decide.
+  std::vector<StoreRate> wide = {rate("imoto_table1", "all", "Pi2 1", "-0.1", "-0.05", "agrees", "NA")};
+  for (const char* other : {"0.2", "-0.2", "0.1"}) wide.push_back(rate("imoto_table1", "seed2", "Pi2 1", "-0.1", other, "differs", "NA"));
+  wide[2].slice = "seed3", wide[2].setup = slice_setup("imoto_table1", "seed3");
+  wide[3].slice = "seed4", wide[3].setup = slice_setup("imoto_table1", "seed4");
+  CHECK(row(judge(wide), "imoto_table1", "all", "Pi2 1").verdict == Verdict::indeterminate);
+  // Alone (or with a narrow band) it is a reproduced non-convergence.
+  CHECK(row(judge({wide[0]}), "imoto_table1", "all", "Pi2 1").verdict == Verdict::non_convergence);
+}

@@ -167,14 +167,15 @@ std::pair<Verdict, std::string> verdict_of(const StoreRate& r, const SeedBand* b
   const bool differs = r.status.rfind("differs", 0) == 0;
   double reproduced = 0, published = 0;
   if (r.status == "agrees") {
-    if (r.theoretical == "NA") return {Verdict::non_convergence, ""};
     // One realization agreeing decides nothing when the realizations spread wider than the
-    // tolerance: seed 1 could as well have missed (the same rule as for a differing rate).
+    // tolerance: seed 1 could as well have missed (the same rule as for a differing rate, and
+    // for a non-convergence too: Imoto's m = 1 rows are judged by the same band).
     if (band && band->hi - band->lo > tolerance)
       return {Verdict::indeterminate,
               format("seed 1 agrees, but the band of %d seeds is %.2f wide, wider than the tolerance %.2f: "
                      "the realizations cannot decide",
                      band->seeds, band->hi - band->lo, tolerance)};
+    if (r.theoretical == "NA") return {Verdict::non_convergence, ""};
     return {Verdict::agrees, ""};
   }
   // Both runs unstable but the rates further apart than the tolerance: the blow-up is
