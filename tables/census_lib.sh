@@ -1,5 +1,14 @@
-# Sourced by tables/store_census.sh and tables/beyond_plan.sh: one store file read by its own
-# program in --census mode, and the machine line of their headers.  Nothing is computed.
+# Sourced by tables/store_census.sh, tables/beyond_plan.sh and the store's recomputations
+# (tests/store/verify_store_full.sh, verify_sample.sh): one store file read by its own program
+# in --census mode, a census's options beyond its levels, and the machine line of their
+# headers.  Nothing is computed.
+
+# census_options "CENSUS": a census's options beyond its levels (--only h15, --thetas 0), one
+# space apart: what a recomputation of one of the file's units takes along (a file that holds
+# some variants only).  Empty for none.
+census_options() {
+  awk '{ s = ""; for (i = 1; i <= NF; i++) if ($i == "--levels") i++; else s = s (s == "" ? "" : " ") $i; print s }' <<<"$1"
+}
 
 # census_read BUILD PROGRAM "ARGS" FILE: runs `PROGRAM ARGS --profile paper --out FILE --census`
 # and sets census_line (its "[store] census" summary; empty when the census could not read

@@ -22,6 +22,8 @@
 #                      from the chances and counted over N seeds.
 export LC_ALL=C
 set -u
+# shellcheck source=tables/census_lib.sh
+. "$(cd "$(dirname "$0")/../.." && pwd)/tables/census_lib.sh"
 usage="usage: verify_sample.sh BUILD_DIR STORE_DIR [BUDGET_S [MAX_UNIT_S]]"
 [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
 build=$1 store=$2 budget=${3:-60} max_unit=${4:-60}
@@ -38,8 +40,8 @@ candidates() {
     # The census's options beyond its levels (a file holding some variants only, --only h15)
     # go along with the unit, and only the words after --levels are the coarse levels.
     [ "$census" = - ] && census=""
-    extra=$(awk '{ for (i = 1; i <= NF; i++) if ($i == "--levels") i++; else printf " %s", $i }' <<<"$census")
-    [ -n "$extra" ] && { [ "$args" = - ] && args="${extra# }" || args="$args$extra"; }
+    extra=$(census_options "$census")
+    [ -n "$extra" ] && { [ "$args" = - ] && args=$extra || args="$args $extra"; }
     coarse=$(awk '{ for (i = 1; i < NF; i++) if ($i == "--levels") print $(i + 1) }' <<<"$coarse")
     awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v coarse="$coarse" -v heat=$([ "$program" = thesis_heat ] && echo 1 || echo 0) '
       BEGIN { n = split(coarse, c, ","); for (i = 1; i <= n; i++) low[c[i]] = 1 }

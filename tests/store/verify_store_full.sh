@@ -24,6 +24,8 @@
 #   FILE...     only these store files (stems)
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
+# shellcheck source=tables/census_lib.sh
+. "$(cd "$(dirname "$0")/../.." && pwd)/tables/census_lib.sh"
 usage="usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS] [--dry-run] [FILE...]"
 [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
 build=$1 store=$2
@@ -59,9 +61,9 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
   code=$("$build/gpm" fingerprint "$prog" | awk -F'\t' -v p="$prog" '$1 == p { print $2 }')
   # The census's options beyond its levels (a file that holds some variants only) go along.
   [ "$census" = "-" ] && census=""
-  extra=$(awk '{ for (i = 1; i <= NF; i++) if ($i == "--levels") i++; else printf "%s ", $i }' <<<"$census")
+  extra=$(census_options "$census")
   [ "$args" = "-" ] && args=""
-  args="${args}${extra:+ }${extra% }"
+  args="${args}${args:+${extra:+ }}${extra}"
   [ -n "$args" ] || args="-"
   awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v code="$code" '
     /^#/ { next }
