@@ -27,8 +27,6 @@ namespace {
 const char* pass_fail(bool ok) { return ok ? "pass" : "fail"; }
 const char* yes_no(bool b) { return b ? "yes" : "no"; }
 
-
-
 void add(TsvTable& out, const std::string& table, const std::string& slice, const std::string& key,
          const std::string& reason, const std::string& evidence, bool pass, bool restores) {
   TsvRow row = out.named_row();

@@ -12,7 +12,6 @@
 #include <stdexcept>
 
 #include "gpm/error.hpp"
-#include "gpm/io/args.hpp"
 #include "gpm/io/provenance.hpp"
 #include "gpm/studies/judge/rates.hpp"
 
@@ -254,8 +253,7 @@ namespace {
 // series has too few levels).
 double number_or_nan(const TsvTable& joined, std::size_t i, const char* name) {
   const int c = joined.column(name);
-  double v = NAN;
-  return c >= 0 && read_decimal(joined.text(i, c), v) ? v : NAN;
+  return c >= 0 ? cell_number_or(joined.text(i, c), NAN) : NAN;
 }
 // A joined row's least-squares slope as StoreRate::lsq writes it.
 std::string lsq_text(const TsvTable& joined, std::size_t i) {
