@@ -144,9 +144,10 @@ std::size_t seal_anew(TsvTable& t, const std::string& path) {
   for (auto& row : t.rows) row.back() = row_seal(row, path);
   return t.rows.size() - current;
 }
-// Whether git's committed version of `path` (HEAD, where the file is tracked) is a sealed
-// store file: then a copy without the seal column had it removed, and sealing it anew would
-// bless whatever was edited meanwhile.  False where git or the file's history is absent.
+// Whether git's committed version of `path` (HEAD, where the file is tracked) has sealed rows
+// and a sealed header: then a copy without the seal column or the header_seal line had it
+// removed, and sealing it anew would bless whatever was edited meanwhile.  Both false where
+// git or the file's history is absent.
 struct Committed {
   bool sealed_rows = false, sealed_header = false;
 };
@@ -212,9 +213,9 @@ int cmd_store_seal(int argc, char** argv) {
                        "removed seal is not sealed again (restore the file from git); nothing written");
     // The header's seal (2026-12-06): added where it is absent, never renewed over an edit.
     const bool has_header_seal = t.get("header_seal").has_value();
-    if (has_header_seal && !header_seal_problem(t.meta, path).empty())
-      throw InputError(path + ": " + header_seal_problem(t.meta, path) + ": an edited header is not sealed "
-                       "again (restore the file from git); nothing written");
+    if (const std::string problem = header_seal_problem(t.meta, path); has_header_seal && !problem.empty())
+      throw InputError(path + ": " + problem + ": an edited header is not sealed again (restore the file "
+                       "from git); nothing written");
     if (!has_header_seal && committed.sealed_header)
       throw InputError(path + ": git's committed version has a header_seal line, this copy none: a removed "
                        "seal is not sealed again (restore the file from git); nothing written");

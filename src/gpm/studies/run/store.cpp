@@ -464,8 +464,8 @@ void UnitCache::merge_disk() {
   }
   for (auto& [k, v] : params_)
     if (disk.get(k) != v) rescue("it changed on disk meanwhile, its parameter '" + k + "' now differs");
-  if (disk.get("header_seal") && !header_seal_problem(disk.meta, path_).empty())
-    rescue("it changed on disk meanwhile, and " + header_seal_problem(disk.meta, path_));
+  if (const std::string problem = header_seal_problem(disk.meta, path_); disk.get("header_seal") && !problem.empty())
+    rescue("it changed on disk meanwhile, and " + problem);
   if (disk.columns != table_.columns) rescue("it changed on disk meanwhile, its columns now differ");
   for (std::size_t i = 0; i < disk.rows.size(); ++i)
     if (disk.rows[i].size() != disk.columns.size() || disk.rows[i].back() != row_seal(disk.rows[i], path_))
