@@ -81,7 +81,7 @@ def main():
         print("runs\t%d\nexpected_after_runs\t%.1f\ncounted_after_runs\t%d" % (n, exp_after, len(seen)))
         return
 
-    drawn = sorted((uniform(a.seed, key(f)), f) for f, p in chance if uniform(a.seed, key(f)) < p)
+    drawn = sorted((u, f) for f, p in chance for u in [uniform(a.seed, key(f))] if u < p)
     for _, f in drawn:
         sys.stdout.write("\t".join(f) + "\n")
     sys.stderr.write("%d of %d reachable units drawn (expected %.1f a run; every reachable unit's chance >= %.4f; "
