@@ -129,10 +129,14 @@ REPORT_SOURCES := $(sort $(wildcard paper/[0-9][0-9]-*.md))
 # Two documents from the same sources (paper/tsv-tables.lua, metadata part): the paper
 # (chapters, page one, a pointer where a long table stood) and its supplement (appendices,
 # the long tables, the provenance of every table and figure), each with its own contents.
+# The paper's contents list its chapters only (a page saved); the others list sections too.
+TOC_DEPTH_paper := 1
+TOC_DEPTH_supplement := 2
+TOC_DEPTH_docs := 2
 REPORT_INPUTS := $(REPORT_SOURCES) paper/tsv-tables.lua paper/style.css $(DATAFILES) $(FIGFILES)
 report_html = pandoc --from markdown --to html5 --standalone --mathml --self-contained \
 	  --lua-filter paper/tsv-tables.lua --metadata datadir=$(DATA) \
-	  --metadata profile=$(PROFILE) --metadata part=$(1) --toc --css paper/style.css \
+	  --metadata profile=$(PROFILE) --metadata part=$(1) --toc --toc-depth=$(TOC_DEPTH_$(1)) --css paper/style.css \
 	  $(REPORT_SOURCES) -o $@.tmp && mv $@.tmp $@
 
 paper/report.html: $(REPORT_INPUTS)
@@ -141,6 +145,14 @@ paper/report.html: $(REPORT_INPUTS)
 
 paper/supplement.html: $(REPORT_INPUTS)
 	$(call report_html,supplement)
+	@echo "report: $@ (profile $(PROFILE))"
+
+# The companion, a third document from the same sources: the chapters marked {.docs}
+# (performance against this machine's limits, the cost model, the atlas of accuracy against
+# cost, the quick profile), which support no reproduction claim; the paper and the
+# supplement link to it.
+docs/companion.html: $(REPORT_INPUTS)
+	$(call report_html,docs)
 	@echo "report: $@ (profile $(PROFILE))"
 
 # The printed form: the browser check (figures that load and draw, no table wider than an
@@ -152,20 +164,24 @@ paper/supplement.html: $(REPORT_INPUTS)
 # fall, never rise.
 BLANK_PAGES_ALLOWED_report := 0
 BLANK_PAGES_ALLOWED_supplement := 2
-paper/%.pdf: paper/%.html paper/style.css tests/report/browser_check.sh tests/report/page_fill.py \
-    tests/report/print_pdf.py
-	bash tests/report/browser_check.sh $<
-	python3 tests/report/print_pdf.py $< $@.tmp
-	python3 tests/report/page_fill.py --allow $(BLANK_PAGES_ALLOWED_$*) $@.tmp
-	mv $@.tmp $@
-	@echo "report: $@ (printed from $<)"
+BLANK_PAGES_ALLOWED_companion := 2
+PRINT_RULE_INPUTS := paper/style.css tests/report/browser_check.sh tests/report/page_fill.py tests/report/print_pdf.py
+print_pdf = bash tests/report/browser_check.sh $< && \
+	python3 tests/report/print_pdf.py $< $@.tmp && \
+	python3 tests/report/page_fill.py --allow $(BLANK_PAGES_ALLOWED_$*) $@.tmp && \
+	mv $@.tmp $@ && echo "report: $@ (printed from $<)"
+paper/%.pdf: paper/%.html $(PRINT_RULE_INPUTS)
+	@$(print_pdf)
+docs/%.pdf: docs/%.html $(PRINT_RULE_INPUTS)
+	@$(print_pdf)
 
-REPORT_OUTPUTS := paper/report.html paper/report.pdf paper/supplement.html paper/supplement.pdf
+REPORT_OUTPUTS := paper/report.html paper/report.pdf paper/supplement.html paper/supplement.pdf \
+	docs/companion.html docs/companion.pdf
 report: build
 	$(MAKE) --no-print-directory PROFILE=$(PROFILE) $(REPORT_OUTPUTS)
 
 pdf: build
-	$(MAKE) --no-print-directory PROFILE=$(PROFILE) paper/report.pdf paper/supplement.pdf
+	$(MAKE) --no-print-directory PROFILE=$(PROFILE) paper/report.pdf paper/supplement.pdf docs/companion.pdf
 
 # make figures: every figure of the report (figures/out/*.svg), after the build.
 figures: build

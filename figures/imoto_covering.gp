@@ -4,7 +4,7 @@
 # The panels share their axes.
 load 'figures/style.gp'
 # Print size: 760 px wide (A4 text width 703 px), text 13-14 px, nothing below 8 pt.
-set terminal svg size 760,600 dynamic enhanced font 'Helvetica,14' background rgb 'white'
+set terminal svg size 760,540 dynamic enhanced font 'Helvetica,14' background rgb 'white'
 set output out
 set datafile columnheaders
 f = datadir.'/imoto_regularity_cover.tsv'

@@ -13,7 +13,7 @@
 # prints below 8 pt; panels placed by hand, each row on the h range of its m (the data fill
 # the axis), one legend below the panels (the line type is the weight's index in every panel).
 load 'figures/style.gp'
-W = 760; Hc = 920
+W = 760; Hc = 700
 set terminal svg size W,Hc dynamic enhanced font 'Helvetica,14' background rgb 'white'
 TRI_FONT = ',14'
 set output out

@@ -39,6 +39,6 @@ plot cells('$c["role"]=="R"') using (column("x")):(column("y")) with filledcurve
      rows_named(fp, '$c["role"]=="o" || $c["role"]=="R"') using (column("x")):(column("y")) with points pt 7 ps 0.5 lc rgb '#1f4e9c' title 'a_i', \
      rows_named(fp, '$c["role"]=="k"') using (column("x")):(column("y")) with points pt 7 ps 0.9 lc rgb '#b22222' title 'a_k', \
      rows_named(fc, '$c["name"]=="delta"') using (column("x")):(column("y")):(column("r")) with circles fs empty lc rgb '#000000' dt 1 lw 1.5 title 'B_δ(a_k)', \
-     rows_named(fc, '$c["name"]=="r_sigma"') using (column("x")):(column("y")):(column("r")) with circles fs empty lc rgb '#2e7d32' dt 1 lw 1.5 title 'B_{r_σ}(a_k)', \
-     rows_named(fc, '$c["name"]=="lambda_h"') using (column("x")):(column("y")):(column("r")) with circles fs empty lc rgb '#6a1b9a' dt 2 lw 1.5 title 'B_{λh}(a_k)', \
+     rows_named(fc, '$c["name"]=="r_sigma"') using (column("x")):(column("y")):(column("r")) with circles fs empty lc rgb '#2e7d32' dt 1 lw 1.5 title 'B(a_k, r_σ)', \
+     rows_named(fc, '$c["name"]=="lambda_h"') using (column("x")):(column("y")):(column("r")) with circles fs empty lc rgb '#6a1b9a' dt 2 lw 1.5 title 'B(a_k, λh)', \
      rows_named(fc, '$c["name"]=="h"') using (column("x")):(column("y")):(column("r")) with circles fs empty lc rgb '#b22222' dt 1 lw 1.5 title 'B_h(a_k)'

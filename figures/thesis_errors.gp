@@ -28,7 +28,7 @@ set yrange [ylo:yhi]
 nscaled = int(system(sprintf("awk -F'\t' '/^#/ { next } !h++ { for (i=1;i<=NF;i++) c[$i]=i; next } $c[\"h_reading\"]==\"scaled\"' '%s' | wc -l", f)))
 settings = nscaled > 0 ? "printed:voronoi scaled:voronoi printed:uniform" : "printed:voronoi printed:uniform"
 nrow = words(settings)
-set terminal svg size 760,(250 * nrow + 70) dynamic enhanced font 'Helvetica,14' background rgb 'white'
+set terminal svg size 760,(200 * nrow + 70) dynamic enhanced font 'Helvetica,14' background rgb 'white'
 set output out
 TRI_FONT = ',14'
 set key bottom right box opaque font ',14' samplen 2 spacing 0.9

@@ -2,7 +2,7 @@
 # for the printed h = (2.6⁴·2^-10·Δx)^{1/4} (solid) and the reading (2.6⁴·2^-15·Δx)^{1/4}.
 load 'figures/style.gp'
 # Print size: 760 px wide (A4 text width 703 px), 14 px text, so nothing prints below 8 pt.
-set terminal svg size 760,580 dynamic enhanced font 'Helvetica,14' background rgb 'white'
+set terminal svg size 760,440 dynamic enhanced font 'Helvetica,14' background rgb 'white'
 TRI_FONT = ',14'
 set output out
 set datafile columnheaders

@@ -10,7 +10,7 @@
 load 'figures/style.gp'
 nth = words(thetas)
 W = 760
-set terminal svg size W,470 dynamic enhanced font 'Helvetica,14' background rgb 'white'
+set terminal svg size W,360 dynamic enhanced font 'Helvetica,14' background rgb 'white'
 TRI_FONT = ',14'
 TRI_BELOW = 1  # the triangles sit at the panels' left edge (the finest h)
 

@@ -10,7 +10,7 @@
 #   positive quartic polynomial, both readings of h.  Above 0 = the principle is violated.
 load 'figures/style.gp'
 # Print size: 760 px wide (A4 text width 703 px), text 13-14 px, nothing below 8 pt.
-set terminal svg size 760,820 dynamic enhanced font 'Helvetica,14' background rgb 'white'
+set terminal svg size 760,720 dynamic enhanced font 'Helvetica,14' background rgb 'white'
 set output out
 set datafile columnheaders
 fa = datadir.'/thesis_poisson_failure.tsv'

@@ -6,7 +6,7 @@
 load 'figures/style.gp'
 # Print size: 760 px wide (A4 text width 703 px), 14 px text, nothing below 8 pt; panels placed
 # by hand and one key, in a strip below them (line style = role, in black).
-W = 760; Hc = 580
+W = 760; Hc = 500
 set terminal svg size W,Hc dynamic enhanced font 'Helvetica,14' background rgb 'white'
 set output out
 set datafile columnheaders

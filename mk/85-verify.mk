@@ -16,7 +16,7 @@ verify-report: $(VERIFY_STAMP)
 
 # Extra prerequisite of the paper and the supplement (the Makefile's pandoc recipe names its
 # inputs itself).
-paper/report.html paper/supplement.html: $(VERIFY_STAMP)
+paper/report.html paper/supplement.html docs/companion.html: $(VERIFY_STAMP)
 
 # Every unit of the store recomputed under the current code and compared with the stored rows,
 # level by level, cheapest first, resumably: one sealed line per (file, level) in

@@ -92,6 +92,10 @@ local function matching_rows(el)
     for _, c in ipairs(conds) do
       local cell = r[c.idx] or ""
       if c.val:sub(1, 1) == "~" then ok = ok and cell:match("^" .. c.val:sub(2) .. "$") ~= nil
+      elseif c.val:find("|", 1, true) then  -- alternatives, as a table's filter= takes them
+        local any = false
+        for alt in c.val:gmatch("[^|]+") do any = any or cell == alt end
+        ok = ok and any
       else ok = ok and cell == c.val end
     end
     if ok then table.insert(out, r) end
@@ -198,7 +202,7 @@ local function fmtnum(s, digits)
 end
 
 local profile = "quick"
-local part = "whole"  -- "paper", "supplement" or "whole" (one document with everything)
+local part = "whole"  -- "paper", "supplement", "docs" (the companion) or "whole" (everything)
 local LONG_TABLE_ROWS = 15  -- a table longer than this is a supplement table (keep="paper" aside)
 
 -- "program P, command `C`, profile, seed, git, written, wall time" of one data file.
@@ -335,9 +339,9 @@ local function figure_provenance(img)
 end
 
 -- A cell's text as inlines that wrap between words only: a browser also breaks after a
--- hyphen or a slash ("other-|levels", "1.5e-|16"), so a piece holding one is kept on one
--- line (class nobr, paper/style.css).  A long identifier (thesis_table4_5_h15) may wrap after
--- an underscore, a long formula after a plus: a zero-width space marks those points.
+-- hyphen, a slash or a bar ("other-|levels", "1.5e-|16", "|(1"), so a piece holding one is kept on one
+-- line (class nobr, paper/style.css).  An identifier (thesis_table4_5_h15) is code on one line
+-- (human_names first), a long formula may wrap after a plus (a zero-width space marks it).
 -- The plain-text math of data files ("V_i = rho_i/m_i", "lambda0", "sin 2pi(x+y)", "eps_grad")
 -- as the reader should see it: Greek names as letters, a one-letter subscript as a subscript
 -- character, dx and dt as Δx and Δt.  Whole words only (never inside "piecewise" or
@@ -403,23 +407,68 @@ local function long_numbers(v)
   end))
 end
 
+-- The data files' identifiers as a reader names them (issue 60: no raw identifier on a page):
+-- weights, tables and the readings of a table's set-up (h rule · volumes · time step · solver ·
+-- seed; "h15_cell_exact" is h15 · Δx² · Δt₀).  Whole tokens only, never in a command line or a
+-- file name; an identifier not named here (a program, a store file, a benchmark variant) is
+-- set as code by cell_inlines: a name to type, not prose.
+local HUMAN = {quartic_polynomial = "quartic", piecewise_cubic_polynomial = "pw. cubic",
+               piecewise_quintic_polynomial = "pw. quintic", cubic_spike = "cubic spike",
+               quadratic_spike = "quadratic spike", cubic_bspline = "cubic B-spline",
+               quintic_bspline = "quintic B-spline", matrix_free = "matrix-free",
+               not_positive_definite = "not positive definite", no_convergence = "no convergence",
+               imoto_table1 = "Imoto Table 1", printed_voronoi = "printed h · Voronoi",
+               scaled_voronoi = "scaled h · Voronoi", printed_uniform = "printed h · |Ω" .. SUB_MARK .. "H|/N",
+               scaled_uniform = "scaled h · |Ω" .. SUB_MARK .. "H|/N", box_laplacian = "box Laplacian",
+               laplacian_with_c8 = "Laplacian with c₈", error_printed = "error (printed)"}
+local READING_PART = {cell = "Δx²", exact = "Δt₀", tau = "τ-PCG"}
+local function human_token(t)
+  if HUMAN[t] then return HUMAN[t] end
+  local n = t:match("^thesis_table4_(%d)$") or t:match("^thesis4_(%d)$")
+  if n then return "Table 4." .. n end
+  local rule, rest = t:match("^(h1[05])(_[%w_]*)$")
+  if not rule then return nil end
+  local out = {rule}
+  for word in rest:gmatch("[^_]+") do
+    local seed = word:match("^seed(%d+)$")
+    if seed then table.insert(out, "seed " .. seed)
+    elseif READING_PART[word] then table.insert(out, READING_PART[word])
+    else return nil end
+  end
+  return table.concat(out, " · ")
+end
+local function human_names(v)
+  if literal(v) then return v end
+  -- (a token joined to another by ':' — kernel_l1:thesis4_1 — is one identifier, left whole)
+  return (v:gsub("%f[%w_:][%w]+_[%w_]*%f[^%w_:]", function(t) return human_token(t) end))
+end
+
 local function cell_inlines(v)
-  v = long_numbers(ascii_math(v))
+  v = long_numbers(ascii_math(human_names(v)))
   -- The author's name as a word (a program's label "imoto §5 (Π1)"), not inside a file name,
   -- an identifier or a command line, is set capitalized.
   if not v:find(" --", 1, true) then v = v:gsub("%f[%w_/%-]imoto%f[^%w_%-]", "Imoto") end
-  v = v:gsub("_", "_\u{200B}")
+  local lit = literal(v)
   local out = {}
   for word, space in v:gmatch("(%S+)(%s*)") do
-    if #word > 20 then word = word:gsub("%+", "+\u{200B}") end
-    local parts = {}
-    for piece in (word .. "\u{200B}"):gmatch("(.-)\u{200B}") do table.insert(parts, piece) end
-    for i, piece in ipairs(parts) do
-      if i > 1 then table.insert(out, pandoc.Str("\u{200B}")) end
-      if piece:find("[-/]") or piece:find("–", 1, true) or piece:find("−", 1, true) then
-        table.insert(out, pandoc.Span(piece_inlines(piece), pandoc.Attr("", {"nobr"})))
-      elseif piece ~= "" then
-        for _, x in ipairs(piece_inlines(piece)) do table.insert(out, x) end
+    local pre, core, post = word:match("^([%(%[]*)(.-)([,;:%.%)%]]*)$")
+    if not lit and core:find("%w_%w") then
+      -- An identifier no human name covers: code, kept on one line (a name to type).
+      if pre ~= "" then table.insert(out, pandoc.Str(pre)) end
+      table.insert(out, pandoc.Code(core))
+      if post ~= "" then table.insert(out, pandoc.Str(post)) end
+    else
+      word = word:gsub("_", "_\u{200B}")
+      if #word > 20 then word = word:gsub("%+", "+\u{200B}") end
+      local parts = {}
+      for piece in (word .. "\u{200B}"):gmatch("(.-)\u{200B}") do table.insert(parts, piece) end
+      for i, piece in ipairs(parts) do
+        if i > 1 then table.insert(out, pandoc.Str("\u{200B}")) end
+        if piece:find("[-/|]") or piece:find("–", 1, true) or piece:find("−", 1, true) then
+          table.insert(out, pandoc.Span(piece_inlines(piece), pandoc.Attr("", {"nobr"})))
+        elseif piece ~= "" then
+          for _, x in ipairs(piece_inlines(piece)) do table.insert(out, x) end
+        end
       end
     end
     if space ~= "" then table.insert(out, pandoc.Space()) end
@@ -570,8 +619,42 @@ local function split_parts(doc)
       titled = true
     end
   end
+  -- companion: the chapter being read is marked {.docs} (performance, cost model, atlas: they
+  -- support no reproduction claim), so it goes to the third document, whole and in place (its
+  -- long tables and marked sections too), and to neither other.  side: the level of a section
+  -- marked {.docs} being read in another chapter (a quick-profile table, a cost): it moves to
+  -- the companion as Section C1, C2, … under "Companion to: <its chapter>", and the paper keeps
+  -- a one-line pointer where it stood, as for the supplement.
+  local companion, side, side_titled, c = false, nil, false, 0
   for _, b in ipairs(doc.blocks) do
     if b.t == "Header" and moving and b.level <= moving then moving = nil end
+    if b.t == "Header" and side and b.level <= side then side = nil end
+    if b.t == "Header" and b.level == 1 then
+      companion, side_titled = b.classes:includes("docs"), false
+      if not companion then chapter = b end
+    elseif b.t == "Header" and b.classes:includes("docs") and not companion and not moving then
+      c, side = c + 1, b.level
+      local label = "Section C" .. c
+      if part == "paper" then
+        table.insert(out, pandoc.Para(pandoc.List({pandoc.Emph({pandoc.Str(label)}),
+          pandoc.Str(" (companion): ")}) .. b.content))
+      elseif part == "docs" then
+        if not side_titled then
+          table.insert(out, pandoc.Header(1, {pandoc.Str("Companion to: ")} .. chapter.content,
+                                          pandoc.Attr("c-" .. (chapter.identifier or ""))))
+          side_titled = true
+        end
+        table.insert(out, pandoc.Header(2, pandoc.List({pandoc.Str(label .. "."), pandoc.Space()}) ..
+                                        b.content, b.attr))
+      end
+      goto next_block
+    end
+    if part == "docs" or companion or side then
+      if part == "docs" and (companion or side) then
+        table.insert(out, (b.t == "Div" and b.classes:includes("long-table")) and b.content[1] or b)
+      end
+      goto next_block
+    end
     if b.t == "Header" and b.level == 1 then
       appendix = pandoc.utils.stringify(b.content):match("^Appendix") ~= nil
       chapter, marked, titled = b, false, false
@@ -612,6 +695,12 @@ local function split_parts(doc)
     elseif (part == "paper") ~= (appendix or moving ~= nil) then
       table.insert(out, b)
     end
+    ::next_block::
+  end
+  if part == "docs" then
+    doc.meta.abstract = nil
+    doc.meta.title = pandoc.MetaInlines(pandoc.List({pandoc.Str("Companion: ")}) ..
+                                        pandoc.List(doc.meta.title or {pandoc.Str("the report")}))
   end
   if part == "supplement" then
     doc.meta.abstract = nil
@@ -627,7 +716,7 @@ end
 -- documents' own figures ("the thesis' Figure 4.8") keeps that name after the number.
 local function number_figures(doc)
   local n = 0
-  local prefix = part == "supplement" and "S" or ""
+  local prefix = part == "supplement" and "S" or part == "docs" and "C" or ""
   doc.blocks = doc.blocks:walk({
     Image = function(el)
       if el.title:match("^fig:") then
@@ -699,8 +788,9 @@ local function gather_provenance(doc)
   end
   flush()
   if #appendix > 0 and part ~= "paper" then
-    table.insert(out, pandoc.Header(1, "Appendix E. Provenance of every table and figure",
-                                    pandoc.Attr("appendix-e-provenance")))
+    table.insert(out, pandoc.Header(1, (part == "docs" and "Appendix" or "Appendix B") ..
+                                    ". Provenance of every table and figure",
+                                    pandoc.Attr("appendix-provenance")))
     for _, b in ipairs(appendix) do table.insert(out, b) end
   end
   return pandoc.Pandoc(out, doc.meta)

@@ -9,11 +9,12 @@
 #     MathML <merror>,
 #   * text in a figure that prints below 8 pt (the base size of each SVG <text>, scaled by
 #     the width the figure takes on the page; 1 px = 0.75 pt at the A4 printable width),
-#   * a table cell in which a word or a number wraps onto a second line,
+#   * a table cell in which a word, a number or an identifier wraps onto a second line,
 #   * a number with more than 10 significant digits in a table cell (outside code, a command
 #     line or a file name);
 #   * plain-text math in a table cell (V_i, rho, lambda0, 2pi) outside code, a command line or
-#     a file name,
+#     a file name, or a raw identifier (piecewise_cubic_polynomial) outside code there,
+#   * a sub- or superscript in a figure below 6 pt (gnuplot's <tspan> with its own size),
 #   * a raw caret exponent (2^-8, ^{...}) or a bare nan in the text outside code, where the
 #     reader should see a superscript, or a word saying what failed.
 # The checks run as a script injected into a copy of the page; Chromium's --dump-dom brings
@@ -89,6 +90,17 @@ window.addEventListener('load', function () {
     if (smallest < MIN_PT)
       out.push('SMALL TEXT in figure ' + (im.dataset.figure || '?') + ' (' + smallest.toFixed(1) + ' pt, "' +
                sample + '"): ' + name(im));
+    // A sub- or superscript (gnuplot's enhanced text sets it as a <tspan> with its own, smaller
+    // font size): at least MIN_SCRIPT_PT, so an exponent of an axis label stays legible.
+    var MIN_SCRIPT_PT = 6, tiny = Infinity, tinySample = '';
+    Array.prototype.forEach.call(svg.getElementsByTagName('tspan'), function (t) {
+      if (!flat(t.textContent)) return;
+      var pt = size(t) * shown / vw * PT_PER_PX;
+      if (pt < tiny) { tiny = pt; tinySample = flat(t.textContent).slice(0, 20); }
+    });
+    if (tiny < MIN_SCRIPT_PT)
+      out.push('SMALL SCRIPT in figure ' + (im.dataset.figure || '?') + ' (' + tiny.toFixed(1) + ' pt, "' +
+               tinySample + '"): ' + name(im));
   });
   // A word or number that wraps inside a table cell: its text range has boxes on two lines.
   document.querySelectorAll('td, th').forEach(function (cell) {
@@ -132,6 +144,13 @@ window.addEventListener('load', function () {
     if (raw) {
       out.push('RAW MATH "' + raw[0].trim() + '" in a table: ' + captionOf(cell));
     }
+    // A raw identifier (piecewise_cubic_polynomial, h15_cell_exact) in a cell's prose: the
+    // tables' filter names it for a reader (human_names) or sets it as code.
+    var plain = '';
+    var tw = document.createTreeWalker(cell, NodeFilter.SHOW_TEXT), tn;
+    while ((tn = tw.nextNode())) if (!tn.parentNode.closest('code')) plain += tn.data;
+    var ident = plain.replace(/\u200B/g, '').match(/[A-Za-z0-9]{2,}_[A-Za-z0-9_]*[A-Za-z0-9]/);
+    if (ident) out.push('RAW IDENTIFIER "' + ident[0] + '" in a table: ' + captionOf(cell));
     // A number with more than 10 significant digits (a double printed in full).
     var nums = t.match(/\d+\.\d+/g) || [];
     for (var k = 0; k < nums.length; k++) {

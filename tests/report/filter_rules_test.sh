@@ -52,23 +52,32 @@ split() {  # split PART: the split fixture as that part, its text without tags
   (cd "$fx" && pandoc --from markdown --to html5 --lua-filter "$src/paper/tsv-tables.lua" \
      --metadata datadir=data --metadata part="$1" split.md 2>&1) | sed 's/<[^>]*>//g' | tr -s ' \n' ' '
 }
-paper=$(split paper) supplement=$(split supplement)
+paper=$(split paper) supplement=$(split supplement) companion=$(split docs)
 for want in "Table S1 (supplement, 30 rows): A long table of Uk." "A short table." "Figure 1. A main figure." \
-            "Section S1 (supplement): A side section" "Main text."; do
+            "Section S1 (supplement): A side section" "Main text." "Section C1 (companion): A quick section"; do
   case $paper in *"$want"*) ;; *) echo "FAIL: the paper lacks '$want'"; fail=1 ;; esac
 done
 # The paper counts a chapter's data files and points to the supplement, which lists them.
 case $paper in *"Data of this chapter: "[0-9]*" file"*"supplement's last appendix"*) ;;
   *) echo "FAIL: the paper does not count its chapter's data files and point to the supplement"; fail=1 ;; esac
-for unwanted in "Appendix A" "Appendix E" "Side text." "Data of this chapter: data/"; do
+for unwanted in "Appendix A" "Appendix B" "Side text." "Data of this chapter: data/" "Companion text." "Quick text."; do
   case $paper in *"$unwanted"*) echo "FAIL: the paper holds '$unwanted'"; fail=1 ;; esac
 done
-for want in "Table S1. A long table of Uk." "Appendix A. Details" "Appendix E. Provenance" "Figure S1. A side figure." \
+for want in "Table S1. A long table of Uk." "Appendix A. Details" "Appendix B. Provenance" "Figure S1. A side figure." \
             "Section S1. A side section" "Side text."; do
   case $supplement in *"$want"*) ;; *) echo "FAIL: the supplement lacks '$want'"; fail=1 ;; esac
 done
-for unwanted in "A short table." "Main text."; do
+for unwanted in "A short table." "Main text." "Companion text." "A long companion table." "Quick text."; do
   case $supplement in *"$unwanted"*) echo "FAIL: the supplement holds '$unwanted'"; fail=1 ;; esac
 done
-[ $fail -eq 0 ] && echo "filter rules: good page builds, each of the 6 bad pages stopped with its message, paper and supplement split (long table, marked section), table filters of several conditions, figures numbered per part"
+# The companion (part docs): the chapters marked {.docs}, whole (its long table in place), and the
+# sections marked {.docs} under their chapter's name; nothing of the paper's or the supplement's.
+for want in "Companion text." "A long companion table." "Appendix. Provenance" "Companion to: A chapter" \
+            "Section C1. A quick section" "Quick text."; do
+  case $companion in *"$want"*) ;; *) echo "FAIL: the companion lacks '$want'"; fail=1 ;; esac
+done
+for unwanted in "Main text." "Side text." "Appendix A. Details" "Table S1"; do
+  case $companion in *"$unwanted"*) echo "FAIL: the companion holds '$unwanted'"; fail=1 ;; esac
+done
+[ $fail -eq 0 ] && echo "filter rules: good page builds, each of the 6 bad pages stopped with its message, paper, supplement and companion split (long table, marked section, {.docs} chapter), table filters of several conditions, figures numbered per part"
 exit $fail

@@ -21,7 +21,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import page_fill  # noqa: E402
 
-HALF = 0.5   # a chapter follows on the previous page when that page is less full than this
+HALF = 0.9   # a chapter follows on the previous page when that page is less full than this
 PASSES = 6   # prints at most; each pass can only let more chapters follow, so it ends
 
 

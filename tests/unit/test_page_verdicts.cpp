@@ -27,10 +27,11 @@ TsvTable items(std::vector<std::vector<std::string>> rows) {
 }
 
 // A score with one row per (table, slice): printed, counted, rates, then the counts
-// agrees, non_convergence, in_seed_band, checked_reason, unexplained, not_computed, fingerprint.
+// agrees, non_convergence, in_seed_band, checked_reason, unexplained, not_computed, fingerprint,
+// and optionally the setup (default "document").
 TsvTable score(std::vector<std::vector<std::string>> rows) {
   TsvTable t;
-  t.columns = {"table", "slice", "printed", "counted", "rates", "agrees", "non_convergence", "in_seed_band",
+  t.columns = {"table", "slice", "setup", "printed", "counted", "rates", "agrees", "non_convergence", "in_seed_band",
                "checked_reason", "explained_ours", "near_miss", "pre_asymptotic", "unexplained", "consistent_spread", "undefined",
                "not_computed", "fingerprint", "sign_only"};
   for (auto& r : rows) {
@@ -38,6 +39,7 @@ TsvTable score(std::vector<std::vector<std::string>> rows) {
     row["table"] = r[0], row["slice"] = r[1], row["printed"] = r[2], row["counted"] = r[3], row["rates"] = r[4];
     row["agrees"] = r[5], row["non_convergence"] = r[6], row["in_seed_band"] = r[7], row["checked_reason"] = r[8];
     row["unexplained"] = r[9], row["not_computed"] = r[10], row["fingerprint"] = r[11];
+    row["setup"] = r.size() > 12 ? r[12] : std::string("document");
     for (const char* c : {"explained_ours", "near_miss", "pre_asymptotic", "consistent_spread", "undefined", "sign_only"})
       row[c] = std::string("0");
     t.add_row(row);
@@ -82,7 +84,14 @@ TEST_CASE("page verdicts: the two boards and the rate table's verdict", "[page_v
                              {"t4", "all", "yes", "yes", "2", "0", "0", "0", "1", "1", "0", "0"},
                              {"t5", "all", "yes", "yes", "2", "0", "0", "0", "0", "0", "2", "0"},
                              {"t6", "printed", "yes", "no", "2", "0", "0", "0", "0", "2", "0", "0"},
-                             {"t7", "all", "yes", "yes", "2", "1", "0", "0", "0", "0", "0", "1"}});
+                             {"t7", "all", "yes", "yes", "2", "1", "0", "0", "0", "0", "0", "1"},
+                             // t8: the deciding reading misses; another reading of the text
+                             // reproduces every rate (named), a second jitter realization too (not).
+                             {"t8", "h15", "yes", "yes", "2", "0", "0", "0", "0", "2", "0", "0"},
+                             {"t8", "h10", "no", "no", "2", "2", "0", "0", "0", "0", "0", "0"},
+                             {"t8", "h10_seed2", "no", "no", "2", "2", "0", "0", "0", "0", "0", "0",
+                              "another jitter realization"},
+                             {"t8", "h12", "no", "no", "2", "1", "0", "0", "0", "1", "0", "0"}});
   auto v = [&](const std::string& t) {
     const PageVerdict p = rate_table_verdict(sc, t);
     return p.verdict + " | " + p.evidence;
@@ -91,7 +100,8 @@ TEST_CASE("page verdicts: the two boards and the rate table's verdict", "[page_v
   // A rate that identified the reading (fingerprint) is not one the documents' set-up reproduces.
   CHECK(v("t7") == "partial | both boards: 1 agree, 1 fingerprint of 2");
   CHECK(v("t3") == "not reproduced (reason checked) | both boards: 1 checked reason, 1 not computed of 2");
-  CHECK(v("t4") == "not reproduced | both boards: 1 checked reason, 1 unexplained of 2");
+  CHECK(v("t4") == "open | both boards: 1 checked reason, 1 unexplained of 2");
+  CHECK(v("t8") == "open | both boards: 2 unexplained of 2; reproduced under another reading, h10 (seed 1): 2 agree of 2");
   CHECK(v("t5") == "not yet computed | both boards: 2 not computed of 2");
   CHECK(v("t6") == "not yet computed | identified reading not stored; printed: 2 unexplained of 2");
   CHECK(v("t9") == "not yet computed | no rows in the store");

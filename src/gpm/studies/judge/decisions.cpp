@@ -205,10 +205,10 @@ void poisson_volume_question(const StoreSnapshot& store, const std::string& pub_
       ev += format_text(" %s, rates 2^-8/2^-9:%s (published %s).", w.c_str(), line.c_str(),
                    p == published.end() ? "" : p->second.c_str());
     }
-    add_question(out, "Table 4.4, " + r + ": the volumes (A.10) on the grid G_dx", ev,
+    add_question(out, "Table 4.4, " + r + ": the volumes (A.10) on the particles' lattice", ev,
                  "the error is the operator consistency error (V/dx^2)(1 - eps) - 1 carried through the solve; with "
-                 "(A.10) on G_dx the volume mismatch changes sign between 2^-8 and 2^-9 and sets the rates; with "
-                 "V_i = dx^2 the rates are those of eps alone (rows *_cell). Kept: (A.10) as the thesis prints it; "
+                 "(A.10) on that lattice the volume mismatch changes sign between 2^-8 and 2^-9 and sets the rates; with "
+                 "V_i = dx^2 the rates are those of eps alone (the readings with V_i = dx^2). Kept: (A.10) as the thesis prints it; "
                  "the published rates match V_i = dx^2");
   }
 }

@@ -101,7 +101,20 @@ PageVerdict rate_table_verdict(const TsvTable& score, const std::string& table) 
   v.verdict = good == total ? "reproduced"
               : good > 0    ? "partial"
               : checked > 0 && checked + n("not_computed") == total ? "not reproduced (reason checked)"
-                                                                     : "not reproduced";
+                                                                     : "open";
+  // A table the deciding reading does not reproduce may be reproduced under another reading
+  // the text admits (Table 4.4 under h10 with V_i = Δx²): named, so page one does not hide it,
+  // but it decides nothing (the set-up rule chose the counted reading before the rates).
+  if (v.verdict != "reproduced") {
+    const int sc = score.require_column("slice"), uc = score.require_column("setup");
+    for (std::size_t i = 0; i < score.rows.size(); ++i) {
+      if (score.text(i, tc) != table || score.text(i, uc) != "document" || counted == i || printed == i) continue;
+      const auto m = [&](const char* column) { return score.number(i, score.require_column(column)); };
+      const double all = m("rates");
+      if (all > 0 && m("agrees") + m("non_convergence") + m("in_seed_band") == all)
+        v.evidence += "; reproduced under another reading, " + score.text(i, sc) + " (seed 1): " + counts(score, i);
+    }
+  }
   return v;
 }
 

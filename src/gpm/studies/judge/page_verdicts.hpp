@@ -4,9 +4,11 @@
 // neighbouring illustrations of one document share one row.  The rules (items.tsv's `rule`):
 //   rates T    the paper-scale verdicts of T's published rates (store_score.tsv, the counted
 //              setting): reproduced when every rate agrees, is inside the seed band or
-//              reproduces non-convergence; partial when some do; not reproduced when none do
-//              ("reason checked" when every other rate has a checked reason or is not
-//              computed); not yet computed when the store lacks the table or computed none;
+//              reproduces non-convergence; partial when some do; open when none do (the
+//              evidence says how each misses); "not reproduced (reason checked)" when every
+//              rate has a checked reason or is not computed; not yet computed when the store
+//              lacks the table or computed none.  Another reading of the text under which
+//              every rate agrees is named in the evidence (it decides nothing);
 //   as T       a figure of T's errors: merged into T's row, since it is drawn from the same rows;
 //   cor71      Corollary 7.1: printed coefficients that hold (koba_sato_cor71.tsv, holds);
 //   bounds     Theorems 1.3–1.6: cases where a bound falls below the measured error
