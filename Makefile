@@ -43,7 +43,7 @@ endif
 # Debian packages the project needs (compilers, libraries, plotting, report).
 PACKAGES := build-essential cmake git pkg-config libeigen3-dev libcgal-dev libgmp-dev \
             libmpfr-dev libboost-dev libgsl-dev libglpk-dev libfftw3-dev glpk-utils catch2 gnuplot-nox pandoc \
-            chromium python3
+            chromium poppler-utils python3
 
 .PHONY: all report pdf test test-paper bench plan deps build data figures figures-all tables clean help
 
@@ -170,8 +170,9 @@ print_pdf = bash tests/report/browser_check.sh $< && \
 	python3 tests/report/print_pdf.py $< $@.tmp && \
 	python3 tests/report/page_fill.py --allow $(BLANK_PAGES_ALLOWED_$*) $@.tmp && \
 	mv $@.tmp $@ && echo "report: $@ (printed from $<)"
-paper/%.pdf: paper/%.html $(PRINT_RULE_INPUTS)
+paper/%.pdf: paper/%.html $(PRINT_RULE_INPUTS) tests/report/page_one.sh
 	@$(print_pdf)
+	@if [ "$*" = report ]; then bash tests/report/page_one.sh $@ || { rm -f $@; exit 1; }; fi
 docs/%.pdf: docs/%.html $(PRINT_RULE_INPUTS)
 	@$(print_pdf)
 
