@@ -163,7 +163,7 @@ docs/companion.html: $(REPORT_INPUTS)
 # the pages the current layout still leaves blank before a figure that does not fit: it may
 # fall, never rise.
 BLANK_PAGES_ALLOWED_report := 0
-BLANK_PAGES_ALLOWED_supplement := 2
+BLANK_PAGES_ALLOWED_supplement := 1
 BLANK_PAGES_ALLOWED_companion := 2
 PRINT_RULE_INPUTS := paper/style.css tests/report/browser_check.sh tests/report/page_fill.py tests/report/print_pdf.py
 print_pdf = bash tests/report/browser_check.sh $< && \

@@ -133,7 +133,7 @@ TEST_CASE("page verdicts: the data rules", "[page_verdicts]") {
   CHECK(v("fig3") == "reproduced | covering radius 0.1414 (uniform) against 0.246 (non-uniform), same N");
   CHECK(v("bounds") == "reproduced | bound below the measured error in 0 of 15 cases (smallest bound/error 3.78)");
   CHECK(v("weights cubic_bspline,quadratic_spike") ==
-        "published value wrong | norm as printed: cubic bspline 1.381; norm of the plotted (corrected) weights: "
+        "published value wrong | the printed formulas, not the drawn curves, are wrong: norm as printed cubic bspline 1.381; norm of the plotted (corrected) weights: "
         "cubic bspline 1, quadratic spike 1");
   CHECK(v("weights quadratic_spike") == "reproduced | norm of the plotted (corrected) weights: quadratic spike 1");
   CHECK(v("covering") == "not yet computed | -");  // its file is not there

@@ -193,7 +193,8 @@ PageVerdict data_rule_verdict(const std::string& rule, const PageDataReader& dat
     }
     if (ok.empty()) return kNotYet;
     return {wrong.empty() ? "reproduced" : "published value wrong",
-            (wrong.empty() ? "" : "norm as printed: " + wrong + "; ") + "norm of the plotted (corrected) weights: " + ok};
+            (wrong.empty() ? "" : "the printed formulas, not the drawn curves, are wrong: norm as printed " + wrong + "; ") +
+                "norm of the plotted (corrected) weights: " + ok};
   }
   if (kind == "drawn")
     return {"reproduced qualitatively", "illustrations drawn from the same definitions (no number to compare)"};
