@@ -5,7 +5,8 @@
 # series have no theoretical rate and are left out).  Per panel the three weights (point types
 # and dashes tell them apart), the theory's rate (a thin horizontal line) and the published
 # rates at the documents' pair (open circles).  Where the store holds other jitter realizations
-# of a pair, its band is drawn as an error bar on the seed-1 point.
+# of a pair, its band is drawn as an error bar on the seed-1 point; a pair that only one
+# realization holds, at or past the documents' pair, is marked by a cross (its rate is seed 1's alone).
 # Drawn at print size: 640 px wide, 14 px text; the key in the last slot of the grid.
 load 'figures/style.gp'
 set terminal svg size 640,1120 dynamic enhanced font 'Helvetica,14' background rgb 'white'
@@ -23,6 +24,8 @@ wn(i) = word('quartic pw.cubic pw.quintic', i)
 sel(t, r, th, i) = rows_named(f, sprintf('$c["table"]=="%s" && $c["reading"]=="%s" && $c["theta"]=="%s" && $c["weight"]=="%s"', t, r, th, w(i)))
 # The pairs whose band is stored (other realizations hold both levels).
 selband(t, r, th, i) = rows_named(f, sprintf('$c["table"]=="%s" && $c["reading"]=="%s" && $c["theta"]=="%s" && $c["weight"]=="%s" && $c["band_lo"]!="NA"', t, r, th, w(i)))
+# The pairs only one realization holds.
+selone(t, r, th, i) = rows_named(f, sprintf('$c["table"]=="%s" && $c["reading"]=="%s" && $c["theta"]=="%s" && $c["weight"]=="%s" && $c["seeds"]=="1" && $c["where"]!="coarser"', t, r, th, w(i)))
 seltheta(t, r, th) = rows_named(f, sprintf('$c["table"]=="%s" && $c["reading"]=="%s" && $c["theta"]=="%s"', t, r, th))
 # Nine panels on a 2 x 5 grid, the tenth slot for the key; 1120 px tall, so that the page's
 # largest figure height (232 mm) prints its text at 8 pt or more.
@@ -45,6 +48,7 @@ do for [p=1:9] {
   plot for [i=1:3] sel(t, r, th, i) using (column("level_hi")):(column("rate")) with linespoints lt i notitle, \
        for [i=1:3] selband(t, r, th, i) using (column("level_hi")):(column("rate")):(column("band_lo")):(column("band_hi")) \
          with yerrorbars lt i pt 0 notitle, \
+       for [i=1:3] selone(t, r, th, i) using (column("level_hi")):(column("rate")) with points pt 2 ps 1.4 lc rgb '#000000' notitle, \
        seltheta(t, r, th) using (column("level_hi")):(column("theoretical")) with lines lt 7 lw 1 notitle, \
        seltheta(t, r, th) using (column("level_hi")):(strcol("published") eq 'NA' ? NaN : column("published")) \
          with points pt 6 ps 1.4 lc rgb '#000000' notitle
@@ -59,5 +63,6 @@ set bmargin at screen PT - 4 * (PH + GY) - PH; set tmargin at screen PT - 4 * (P
 set key center center vertical box noopaque font ',14' samplen 2.5 spacing 1.1 Left reverse
 plot for [i=1:3] NaN with linespoints lt i title wn(i), \
      NaN with lines lt 7 lw 1 title 'theory (Thm 2.1, 3.7)', \
-     NaN with points pt 6 ps 1.4 lc rgb '#000000' title 'published'
+     NaN with points pt 6 ps 1.4 lc rgb '#000000' title 'published', \
+     NaN with points pt 2 ps 1.4 lc rgb '#000000' title 'one realization'
 unset multiplot
