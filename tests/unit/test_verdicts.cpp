@@ -218,7 +218,22 @@ TEST_CASE("verdicts: the printed and identified boards, with the fingerprint row
   const TsvTable rates = rates_table(j);
   CHECK(rates.columns == std::vector<std::string>{"table", "slice", "setup", "key", "published", "reproduced",
                                                   "levels", "lsq", "status", "seed_band", "verdict", "reason", "printed",
-                                                  "identified", "verdict_identified", "counted"});
+                                                  "identified", "verdict_identified", "counted", "open",
+                                                  "open_identified"});
+  // Open on a board where its verdict leaves it open: the fingerprint row is open as printed
+  // (unexplained) but not on the identified board, where it identified the reading.
+  auto cell = [&](const char* slice, const char* key, const char* column) {
+    for (std::size_t i = 0; i < rates.rows.size(); ++i)
+      if (rates.text(i, "slice") == slice && rates.text(i, "key") == key) return rates.text(i, column);
+    return std::string("?");
+  };
+  CHECK(cell("h15", "quartic_polynomial 0", "open") == "yes");
+  CHECK(cell("h15", "quartic_polynomial 0", "open_identified") == "no");
+  CHECK(cell("h10", "quartic_polynomial 1", "open") == "no");
+  CHECK(verdict_open(Verdict::near_miss));
+  CHECK(verdict_open(Verdict::pre_asymptotic));
+  CHECK(!verdict_open(Verdict::indeterminate));
+  CHECK(!verdict_open(Verdict::checked_reason));
   const std::string published_dir = std::string(GPM_SOURCE_DIR) + "/tables/published";
   const TsvTable score = score_table(j, published_dir);
   // Per slice: the identified one counts its own verdicts (fingerprint), the other its verdicts.

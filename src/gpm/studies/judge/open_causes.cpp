@@ -26,8 +26,7 @@ bool other_reading(const JudgedRate& j, const JudgedRate& open) {
 }  // namespace
 
 bool open_on_identified_board(const JudgedRate& j) {
-  return j.identified && (j.verdict_identified == Verdict::unexplained || j.verdict_identified == Verdict::sign_only ||
-                          j.verdict_identified == Verdict::near_miss || j.verdict_identified == Verdict::pre_asymptotic);
+  return j.identified && verdict_open(j.verdict_identified);
 }
 
 OpenCause open_cause(const JudgedRate& open, const std::vector<JudgedRate>& judged, double tolerance) {

@@ -19,24 +19,26 @@ namespace gpm {
 
 namespace {
 
-// Every verdict with its printed name, score column and the group a one-line summary counts
+// Every verdict with its printed name, score column, the group a one-line summary counts
 // it in (reproduced, explained by a measurement, not explained, used to identify the set-up,
-// undecided, missing): the one place they are spelled.
+// undecided, missing) and whether it leaves the rate open (a miss no diagnostic accounts for:
+// tests/paper/known_unexplained.tsv lists each): the one place they are spelled.
 struct VerdictSpelling {
   Verdict verdict;
   std::string name, column, group;
+  bool open = false;
 };
 const std::vector<VerdictSpelling>& spellings() {
   static const std::vector<VerdictSpelling> s = {
       {Verdict::agrees, "agrees", "agrees", "reproduced"},
       {Verdict::non_convergence, "non-convergence reproduced", "non_convergence", "reproduced"},
-      {Verdict::sign_only, "both unstable, rate differs", "sign_only", "not_explained"},
+      {Verdict::sign_only, "both unstable, rate differs", "sign_only", "not_explained", true},
       {Verdict::in_seed_band, "inside seed band", "in_seed_band", "reproduced"},
       {Verdict::checked_reason, "differs, checked reason", "checked_reason", "explained"},
       {Verdict::explained_ours, "our rate explained, the published one not", "explained_ours", "explained"},
-      {Verdict::near_miss, "near miss", "near_miss", "not_explained"},
-      {Verdict::pre_asymptotic, "pre-asymptotic, not comparable at the tolerance", "pre_asymptotic", "undecided"},
-      {Verdict::unexplained, "differs, unexplained", "unexplained", "not_explained"},
+      {Verdict::near_miss, "near miss", "near_miss", "not_explained", true},
+      {Verdict::pre_asymptotic, "pre-asymptotic, not comparable at the tolerance", "pre_asymptotic", "undecided", true},
+      {Verdict::unexplained, "differs, unexplained", "unexplained", "not_explained", true},
       {Verdict::not_computed, "not computed", "not_computed", "missing"},
       {Verdict::undefined, "undefined", "undefined", "undecided"},
       {Verdict::setup_fingerprint, "fingerprint", "fingerprint", "used_for_setup"},
@@ -219,6 +221,7 @@ std::pair<Verdict, std::string> verdict_of(const StoreRate& r, const SeedBand* b
 }  // namespace
 
 const std::string& verdict_name(Verdict v) { return spelling(v).name; }
+bool verdict_open(Verdict v) { return spelling(v).open; }
 const std::string& verdict_column(Verdict v) { return spelling(v).column; }
 const std::vector<std::string>& score_groups() {
   static const std::vector<std::string> g = [] {
@@ -396,7 +399,8 @@ std::vector<JudgedRate> judge_rates(const std::vector<StoreRate>& rates, const U
 TsvTable rates_table(const std::vector<JudgedRate>& rates) {
   TsvTable t;
   t.columns = {"table",  "slice",     "setup",   "key",     "published",  "reproduced",         "levels", "lsq", "status",
-               "seed_band", "verdict", "reason", "printed", "identified", "verdict_identified", "counted"};
+               "seed_band", "verdict", "reason", "printed", "identified", "verdict_identified", "counted",
+               "open", "open_identified"};
   for (const JudgedRate& j : rates) {
     TsvRow row = t.named_row();
     row["table"] = j.rate.table, row["slice"] = j.rate.slice, row["setup"] = j.rate.setup;
@@ -406,6 +410,8 @@ TsvTable rates_table(const std::vector<JudgedRate>& rates) {
     row["printed"] = j.printed ? "yes" : "no", row["identified"] = j.identified ? "yes" : "no";
     row["verdict_identified"] = verdict_name(j.verdict_identified);
     row["counted"] = j.identified ? "yes" : "no";
+    row["open"] = verdict_open(j.verdict) ? "yes" : "no";
+    row["open_identified"] = verdict_open(j.verdict_identified) ? "yes" : "no";
     t.add_row(row);
   }
   return t;

@@ -93,6 +93,10 @@ enum class Verdict {
 };
 // "agrees", "non-convergence reproduced", …: the rates file's verdict columns.
 const std::string& verdict_name(Verdict v);
+// Whether a verdict leaves the rate open (unexplained, sign only, near miss, pre-asymptotic):
+// the rates file's columns open and open_identified, which the paper tier's list of open
+// items (tests/paper) reads instead of spelling the set again.
+bool verdict_open(Verdict v);
 // "agrees", "non_convergence", …: the score's column; empty for not_counted.
 const std::string& verdict_column(Verdict v);
 // Every verdict a board counts (all but not_counted), in score order.
