@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "gpm/error.hpp"
 #include "gpm/geometry/domain.hpp"
@@ -41,111 +43,131 @@ void add_edges(TsvTable& t, const std::string& tag, const VoronoiCells& c) {
   }
 }
 
-int body(int argc, char** argv) {
-  Args args("imoto_figs1_4",
-            "imoto Figures 1-4 as data: the jittered distribution at dx = 2^-5, its Voronoi\n"
-            "cells, and the covering discs of a uniform and a graded distribution (same N).");
-  args.opt("prefix", "", "output path prefix (required): writes <prefix>_particles.tsv,\n"
-                         "  <prefix>_voronoi.tsv, <prefix>_fig3_particles.tsv,\n"
-                         "  <prefix>_fig3_edges.tsv, <prefix>_fig3_discs.tsv")
-      .opt("seed", "1", "jitter seed (non-negative integer)");
-  args.parse(argc, argv);
-  const std::string prefix = args.required("prefix");
-  const uint64_t seed = args.seed();
-  // Every file this run writes, checked before the first is computed.
-  std::vector<std::pair<std::string, std::string>> outputs;
-  for (const char* f : {"_particles.tsv", "_voronoi.tsv", "_fig3_particles.tsv",
-                        "_fig3_edges.tsv", "_fig3_discs.tsv"})
-    outputs.emplace_back("--prefix", prefix + f);
-  check_output_paths(outputs);
-  const Stopwatch wall;
-  const Domain dom;
-  auto header = [&](TsvTable& t, const char* what) {
+// The program: the options read and every output path checked before anything is computed;
+// run() writes Figures 1/4 and 2, then Figure 3.
+class Figures {
+ public:
+  Figures(int argc, char** argv)
+      : args_("imoto_figs1_4",
+              "imoto Figures 1-4 as data: the jittered distribution at dx = 2^-5, its Voronoi\n"
+              "cells, and the covering discs of a uniform and a graded distribution (same N).") {
+    args_.opt("prefix", "", "output path prefix (required): writes <prefix>_particles.tsv,\n"
+                            "  <prefix>_voronoi.tsv, <prefix>_fig3_particles.tsv,\n"
+                            "  <prefix>_fig3_edges.tsv, <prefix>_fig3_discs.tsv")
+        .opt("seed", "1", "jitter seed (non-negative integer)");
+    args_.parse(argc, argv);
+    prefix_ = args_.required("prefix");
+    seed_ = args_.seed();
+    std::vector<std::pair<std::string, std::string>> outputs;
+    for (const char* f : {"_particles.tsv", "_voronoi.tsv", "_fig3_particles.tsv",
+                          "_fig3_edges.tsv", "_fig3_discs.tsv"})
+      outputs.emplace_back("--prefix", prefix_ + f);
+    check_output_paths(outputs);
+  }
+
+  int run() {
+    section5_distribution();
+    figure3_covering_discs();
+    return 0;
+  }
+
+ private:
+  void header(TsvTable& t, const char* what) const {
     t.set("program", std::string("imoto_figs1_4 ") + what);
-    for (auto& [k, v] : args.values()) t.set(k, v);
-    t.set("H", dom.H);
+    for (auto& [k, v] : args_.values()) t.set(k, v);
+    t.set("H", dom_.H);
     add_provenance(t);
-  };
-  auto finish = [&](TsvTable& t, const std::string& path) {
-    t.set("wall_time_s",
-          wall.seconds());
-    t.save(path);
-  };
+  }
+  void finish(TsvTable& t, const std::string& suffix) const {
+    t.set("wall_time_s", wall_.seconds());
+    t.save(prefix_ + suffix);
+  }
 
   // Figures 1/4 and 2: the §5 distribution and its Voronoi cells.
-  const double dx = std::ldexp(1.0, -kLevel);
-  const Particles p = jittered_grid(dx, seed, 0.25, dom);
-  const VoronoiCells c = voronoi_cells(p, dom, true);
-  TsvTable parts;
-  header(parts, "particles");
-  parts.set("dx", dx);
-  parts.set("N", fmt(p.size()));
-  parts.set("N_in_omega", fmt(p.count_in_omega()));
-  parts.columns = {"x", "y", "in_omega"};
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    TsvRow row = parts.named_row();
-    row["x"] = fmt(p.x[i]), row["y"] = fmt(p.y[i]), row["in_omega"] = p.in_omega[i] ? "1" : "0";
-    parts.add_row(row);
+  void section5_distribution() const {
+    const double dx = std::ldexp(1.0, -kLevel);
+    const Particles p = jittered_grid(dx, seed_, 0.25, dom_);
+    const VoronoiCells c = voronoi_cells(p, dom_, true);
+    TsvTable parts;
+    header(parts, "particles");
+    parts.set("dx", dx);
+    parts.set("N", fmt(p.size()));
+    parts.set("N_in_omega", fmt(p.count_in_omega()));
+    parts.columns = {"x", "y", "in_omega"};
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      TsvRow row = parts.named_row();
+      row["x"] = fmt(p.x[i]), row["y"] = fmt(p.y[i]), row["in_omega"] = p.in_omega[i] ? "1" : "0";
+      parts.add_row(row);
+    }
+    finish(parts, "_particles.tsv");
+    TsvTable vor;
+    header(vor, "voronoi");
+    vor.set("dx", dx);
+    vor.set("N", fmt(p.size()));
+    vor.set("area_sum", c.area_sum);
+    vor.columns = {"distribution", "cell", "x1", "y1", "x2", "y2"};
+    add_edges(vor, "jittered", c);
+    finish(vor, "_voronoi.tsv");
   }
-  finish(parts, prefix + "_particles.tsv");
-  TsvTable vor;
-  header(vor, "voronoi");
-  vor.set("dx", dx);
-  vor.set("N", fmt(p.size()));
-  vor.set("area_sum", c.area_sum);
-  vor.columns = {"distribution", "cell", "x1", "y1", "x2", "y2"};
-  add_edges(vor, "jittered", c);
-  finish(vor, prefix + "_voronoi.tsv");
 
-  // Figure 3: uniform (plain grid) against graded, same nodes.
-  const double dx3 = std::ldexp(1.0, -kFig3Level);
-  const Particles uni = jittered_grid(dx3, 0, 0.0, dom);
-  Particles gra;
-  for (std::size_t i = 0; i < uni.size(); ++i) {
-    auto grade = [&](double s) {
-      return dom.lo() + dom.side() * std::pow((s - dom.lo()) / dom.side(), kGrade);
-    };
-    gra.push(grade(uni.x[i]), grade(uni.y[i]), uni.gi[i], uni.gj[i]);
-  }
-  TsvTable f3p, f3e, f3d;
-  header(f3p, "fig3 particles");
-  header(f3e, "fig3 edges");
-  header(f3d, "fig3 discs");
-  for (TsvTable* t : {&f3p, &f3e, &f3d}) {
-    t->set("dx", dx3);
-    t->set("grading", "non-uniform: x -> lo + side*((x-lo)/side)^" + fmt(kGrade) + " per axis");
-  }
-  f3p.columns = {"distribution", "x", "y"};
-  f3e.columns = {"distribution", "cell", "x1", "y1", "x2", "y2"};
-  f3d.columns = {"distribution", "N", "worst_x", "worst_y", "centre_x", "centre_y", "r_N"};
-  for (auto [tag, q] : {std::pair<const char*, const Particles*>{"uniform", &uni},
-                        {"non-uniform", &gra}}) {
-    const VoronoiCells v = voronoi_cells(*q, dom, true);
-    for (std::size_t i = 0; i < q->size(); ++i) {
-      TsvRow row = f3p.named_row();
-      row["distribution"] = tag, row["x"] = fmt(q->x[i]), row["y"] = fmt(q->y[i]);
-      f3p.add_row(row);
+  // Figure 3: uniform (plain grid) against graded, same nodes; per distribution its particles,
+  // its cells and the covering disc of its worst cell.
+  void figure3_covering_discs() const {
+    const double dx3 = std::ldexp(1.0, -kFig3Level);
+    const Particles uni = jittered_grid(dx3, 0, 0.0, dom_);
+    Particles gra;
+    for (std::size_t i = 0; i < uni.size(); ++i) {
+      auto grade = [&](double s) {
+        return dom_.lo() + dom_.side() * std::pow((s - dom_.lo()) / dom_.side(), kGrade);
+      };
+      gra.push(grade(uni.x[i]), grade(uni.y[i]), uni.gi[i], uni.gj[i]);
     }
-    add_edges(f3e, tag, v);
-    // The covering disc: centred at the worst cell's vertex farthest from its particle.
-    const std::size_t w = v.worst;
-    double cx = 0, cy = 0, best = -1;
-    for (uint64_t k = v.offset[w]; k < v.offset[w + 1]; ++k) {
-      const double d = std::hypot(v.px[k] - q->x[w], v.py[k] - q->y[w]);
-      if (d > best) best = d, cx = v.px[k], cy = v.py[k];
+    TsvTable f3p, f3e, f3d;
+    header(f3p, "fig3 particles");
+    header(f3e, "fig3 edges");
+    header(f3d, "fig3 discs");
+    for (TsvTable* t : {&f3p, &f3e, &f3d}) {
+      t->set("dx", dx3);
+      t->set("grading", "non-uniform: x -> lo + side*((x-lo)/side)^" + fmt(kGrade) + " per axis");
     }
-    TsvRow disc = f3d.named_row();
-    disc["distribution"] = tag, disc["N"] = fmt(q->size());
-    disc["worst_x"] = fmt(q->x[w]), disc["worst_y"] = fmt(q->y[w]);
-    disc["centre_x"] = fmt(cx), disc["centre_y"] = fmt(cy), disc["r_N"] = fmt(v.covering_radius);
-    f3d.add_row(disc);
-    std::printf("Figure 3 %-12s N = %zu  r_N = %.6f\n", tag, q->size(), v.covering_radius);
+    f3p.columns = {"distribution", "x", "y"};
+    f3e.columns = {"distribution", "cell", "x1", "y1", "x2", "y2"};
+    f3d.columns = {"distribution", "N", "worst_x", "worst_y", "centre_x", "centre_y", "r_N"};
+    for (auto [tag, q] : {std::pair<const char*, const Particles*>{"uniform", &uni}, {"non-uniform", &gra}}) {
+      const VoronoiCells v = voronoi_cells(*q, dom_, true);
+      for (std::size_t i = 0; i < q->size(); ++i) {
+        TsvRow row = f3p.named_row();
+        row["distribution"] = tag, row["x"] = fmt(q->x[i]), row["y"] = fmt(q->y[i]);
+        f3p.add_row(row);
+      }
+      add_edges(f3e, tag, v);
+      // The covering disc: centred at the worst cell's vertex farthest from its particle.
+      const std::size_t w = v.worst;
+      double cx = 0, cy = 0, best = -1;
+      for (uint64_t k = v.offset[w]; k < v.offset[w + 1]; ++k) {
+        const double d = std::hypot(v.px[k] - q->x[w], v.py[k] - q->y[w]);
+        if (d > best) best = d, cx = v.px[k], cy = v.py[k];
+      }
+      TsvRow disc = f3d.named_row();
+      disc["distribution"] = tag, disc["N"] = fmt(q->size());
+      disc["worst_x"] = fmt(q->x[w]), disc["worst_y"] = fmt(q->y[w]);
+      disc["centre_x"] = fmt(cx), disc["centre_y"] = fmt(cy), disc["r_N"] = fmt(v.covering_radius);
+      f3d.add_row(disc);
+      std::printf("Figure 3 %-12s N = %zu  r_N = %.6f\n", tag, q->size(), v.covering_radius);
+    }
+    finish(f3p, "_fig3_particles.tsv");
+    finish(f3e, "_fig3_edges.tsv");
+    finish(f3d, "_fig3_discs.tsv");
   }
-  finish(f3p, prefix + "_fig3_particles.tsv");
-  finish(f3e, prefix + "_fig3_edges.tsv");
-  finish(f3d, prefix + "_fig3_discs.tsv");
-  return 0;
-}
+
+  Args args_;
+  std::string prefix_;
+  uint64_t seed_ = 1;
+  const Domain dom_;
+  const Stopwatch wall_;
+};
+
+int body(int argc, char** argv) { return Figures(argc, argv).run(); }
 
 }  // namespace
 
