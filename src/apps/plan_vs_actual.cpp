@@ -45,59 +45,80 @@ struct Cmp {
   }
 };
 
-int body(int argc, char** argv) {
-  Args a("plan_vs_actual",
-         "Predicted (plan) against measured (data files) seconds per study and level.");
-  a.opt("plan", "", "plan file (plan --out) (required)")
-      .opt("datadir", "", "directory of the studies' data files (required)")
-      .output("out", "", "output TSV (required)");
-  a.parse(argc, argv);
-  if (a.str("plan").empty() || a.str("datadir").empty() || a.str("out").empty())
-    throw InputError("--plan, --datadir and --out are required (see --help)");
-  const TsvTable plan = TsvTable::load(a.str("plan"));
-  auto pc = [&](const char* n) {
-    const int c = plan.column(n);
-    if (c < 0) throw InputError(a.str("plan") + ": no column '" + std::string(n) + "'");
-    return c;
-  };
-  const int c_study = pc("study"), c_var = pc("variant"), c_level = pc("level"),
-            c_time = pc("time_s"), c_mem = pc("peak_mib"), c_rec = pc("recorded"),
-            c_pairs = pc("pairs"), c_prod = pc("products"), c_method = pc("method");
-  const int c_trim = plan.column("trimmed");  // units a profile skips (absent in older plans)
+// The program: the plan read once and its columns found; run() compares every modelled study,
+// then writes the total row and the file.
+class PlanVsActual {
+ public:
+  PlanVsActual(int argc, char** argv)
+      : a_("plan_vs_actual", "Predicted (plan) against measured (data files) seconds per study and level.") {
+    a_.opt("plan", "", "plan file (plan --out) (required)")
+        .opt("datadir", "", "directory of the studies' data files (required)")
+        .output("out", "", "output TSV (required)");
+    a_.parse(argc, argv);
+    if (a_.str("plan").empty() || a_.str("datadir").empty() || a_.str("out").empty())
+      throw InputError("--plan, --datadir and --out are required (see --help)");
+    plan_ = TsvTable::load(a_.str("plan"));
+    auto pc = [&](const char* n) {
+      const int c = plan_.column(n);
+      if (c < 0) throw InputError(a_.str("plan") + ": no column '" + std::string(n) + "'");
+      return c;
+    };
+    c_study_ = pc("study"), c_var_ = pc("variant"), c_level_ = pc("level"), c_time_ = pc("time_s");
+    c_mem_ = pc("peak_mib"), c_rec_ = pc("recorded"), c_pairs_ = pc("pairs"), c_prod_ = pc("products");
+    c_method_ = pc("method");
+    c_trim_ = plan_.column("trimmed");  // units a profile skips (absent in older plans)
+  }
 
-  TsvTable out;
-  out.set("program", "plan_vs_actual");
-  out.set("plan", a.str("plan"));
-  out.set("profile", plan.get("profile").value_or("?"));
-  out.set("plan_written_utc", plan.get("written_utc").value_or("?"));
-  out.set("datadir", a.str("datadir"));
-  out.set("ratio", "actual_s / predicted_s over the units that ran (both sides the same units)");
-  out.set("predicted_total_s", "all planned units, run or not (incl. set-up not in the rows)");
-  out.set("work_ratio", "recorded / predicted pair interactions (machine-independent; heat: "
-                        "steps and CG iterations only, see study_plan.hpp; Voronoi: none)");
-  add_provenance(out);
-  out.columns = {"study", "level", "units_planned", "units_run", "unplanned", "predicted_s",
-                 "actual_s", "ratio", "work_ratio", "predicted_total_s", "peak_pred_mib",
-                 "peak_actual_mib"};
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  auto f = [](double v) { return std::isfinite(v) ? fmt(v) : std::string("NA"); };
+  int run() {
+    describe();
+    for (auto& study : planned_studies()) compare(study);
+    total_row();
+    out_.save(a_.str("out"));
+    std::printf("wrote %s\n", a_.str("out").c_str());
+    return 0;
+  }
 
-  Cmp total;
-  for (auto& study : planned_studies()) {
-    const std::string path = a.str("datadir") + "/" + study + ".tsv";
+ private:
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  static std::string na(double v) { return std::isfinite(v) ? fmt(v) : std::string("NA"); }
+  // A plan row of this study that the profile runs (not trimmed).
+  bool planned_row(std::size_t i, const std::string& study) const {
+    const auto& r = plan_.rows[i];
+    return r[c_study_] == study && (c_trim_ < 0 || r[c_trim_] == "no");
+  }
+
+  void describe() {
+    out_.set("program", "plan_vs_actual");
+    out_.set("plan", a_.str("plan"));
+    out_.set("profile", plan_.get("profile").value_or("?"));
+    out_.set("plan_written_utc", plan_.get("written_utc").value_or("?"));
+    out_.set("datadir", a_.str("datadir"));
+    out_.set("ratio", "actual_s / predicted_s over the units that ran (both sides the same units)");
+    out_.set("predicted_total_s", "all planned units, run or not (incl. set-up not in the rows)");
+    out_.set("work_ratio", "recorded / predicted pair interactions (machine-independent; heat: "
+                           "steps and CG iterations only, see study_plan.hpp; Voronoi: none)");
+    add_provenance(out_);
+    out_.columns = {"study", "level", "units_planned", "units_run", "unplanned", "predicted_s",
+                    "actual_s", "ratio", "work_ratio", "predicted_total_s", "peak_pred_mib",
+                    "peak_actual_mib"};
+  }
+
+  // One study: its planned units beside the units its data file recorded, a row per level and
+  // one for the study (with the peak memory), and its line on stdout.
+  void compare(const std::string& study) {
+    const std::string path = a_.str("datadir") + "/" + study + ".tsv";
     // The plan's pair interactions per unit (and its non-zeros, which heat rows lack).
     std::map<std::pair<std::string, int>, double> planned_pairs, planned_work;
-    for (std::size_t i = 0; i < plan.rows.size(); ++i) {
-      const auto& r = plan.rows[i];
-      if (r[c_study] != study || (c_trim >= 0 && r[c_trim] != "no")) continue;
-      const std::pair<std::string, int> key{r[c_var], static_cast<int>(plan.integer(i, c_level))};
-      const double pairs = plan.number(i, c_pairs);
+    for (std::size_t i = 0; i < plan_.rows.size(); ++i) {
+      if (!planned_row(i, study)) continue;
+      const auto& r = plan_.rows[i];
+      const std::pair<std::string, int> key{r[c_var_], static_cast<int>(plan_.integer(i, c_level_))};
+      const double pairs = plan_.number(i, c_pairs_);
       planned_pairs[key] = pairs;
-      planned_work[key] =
-          r[c_method] == "voronoi" ? nan : pairs * std::max(1.0, plan.number(i, c_prod));
+      planned_work[key] = r[c_method_] == "voronoi" ? kNaN : pairs * std::max(1.0, plan_.number(i, c_prod_));
     }
     std::map<std::pair<std::string, int>, RecordedUnit> rec;
-    double peak_actual = nan;
+    double peak_actual = kNaN;
     if (std::filesystem::exists(path)) {
       const TsvTable d = TsvTable::load(path);
       rec = recorded_units(study, d, planned_pairs);
@@ -106,22 +127,22 @@ int body(int argc, char** argv) {
     std::map<int, Cmp> lv;
     Cmp st;
     std::map<std::pair<std::string, int>, bool> planned_keys;
-    for (std::size_t i = 0; i < plan.rows.size(); ++i) {
-      const auto& r = plan.rows[i];
-      if (r[c_study] != study || (c_trim >= 0 && r[c_trim] != "no")) continue;
-      const int k = static_cast<int>(plan.integer(i, c_level));
-      const double pred = plan.number(i, c_time);
+    for (std::size_t i = 0; i < plan_.rows.size(); ++i) {
+      if (!planned_row(i, study)) continue;
+      const auto& r = plan_.rows[i];
+      const int k = static_cast<int>(plan_.integer(i, c_level_));
+      const double pred = plan_.number(i, c_time_);
       Cmp& c = lv[k];
       c.predicted_all_s += pred;
       st.predicted_all_s += pred;
-      c.peak_pred = std::max(c.peak_pred, plan.number(i, c_mem));
+      c.peak_pred = std::max(c.peak_pred, plan_.number(i, c_mem_));
       st.peak_pred = std::max(st.peak_pred, c.peak_pred);
-      if (r[c_rec] != "yes") continue;
+      if (r[c_rec_] != "yes") continue;
       ++c.planned, ++st.planned;
-      planned_keys[{r[c_var], k}] = true;
-      auto it = rec.find({r[c_var], k});
+      planned_keys[{r[c_var_], k}] = true;
+      auto it = rec.find({r[c_var_], k});
       if (it == rec.end() || !std::isfinite(it->second.seconds)) continue;
-      const double wp = planned_work[{r[c_var], k}], wa = it->second.pair_interactions;
+      const double wp = planned_work[{r[c_var_], k}], wa = it->second.pair_interactions;
       c.add(pred, it->second.seconds, wp, wa);
       st.add(pred, it->second.seconds, wp, wa);
     }
@@ -129,43 +150,51 @@ int body(int argc, char** argv) {
     std::map<int, int> unplanned_at;
     for (auto& [key, s] : rec)
       if (!planned_keys.count(key)) ++unplanned, ++unplanned_at[key.second];
-    auto emit = [&](const std::string& level, const Cmp& c, int unpl, double peak_act) {
-      TsvRow row = out.named_row();
-      row["study"] = study, row["level"] = level;
-      row["units_planned"] = fmt(c.planned), row["units_run"] = fmt(c.run), row["unplanned"] = fmt(unpl);
-      row["predicted_s"] = c.run ? fmt(c.predicted_s) : "NA";
-      row["actual_s"] = c.run ? fmt(c.actual_s) : "NA";
-      row["ratio"] = c.run && c.predicted_s > 0 ? fmt(c.actual_s / c.predicted_s) : "NA";
-      row["work_ratio"] = c.work_pred > 0 ? fmt(c.work_act / c.work_pred) : "NA";
-      row["predicted_total_s"] = fmt(c.predicted_all_s);
-      row["peak_pred_mib"] = fmt(c.peak_pred), row["peak_actual_mib"] = f(peak_act);
-      out.add_row(row);
-    };
-    for (auto& [k, c] : lv) emit(fmt(k), c, unplanned_at[k], nan);
-    emit("all", st, unplanned, peak_actual);
+    for (auto& [k, c] : lv) emit(study, fmt(k), c, unplanned_at[k], kNaN);
+    emit(study, "all", st, unplanned, peak_actual);
     if (unplanned > 0)
-      std::fprintf(stderr, "[plan_vs_actual] %s: %d recorded units are not in the plan\n",
-                   study.c_str(), unplanned);
-    total.add(st);
+      std::fprintf(stderr, "[plan_vs_actual] %s: %d recorded units are not in the plan\n", study.c_str(), unplanned);
+    total_.add(st);
     std::printf("%-22s run %3d/%3d units  predicted %9.2f s  measured %9.2f s  ratio %6.3f  "
                 "work ratio %6.3f\n",
                 study.c_str(), st.run, st.planned, st.predicted_s, st.actual_s,
-                st.run && st.predicted_s > 0 ? st.actual_s / st.predicted_s : nan,
-                st.work_pred > 0 ? st.work_act / st.work_pred : nan);
+                st.run && st.predicted_s > 0 ? st.actual_s / st.predicted_s : kNaN,
+                st.work_pred > 0 ? st.work_act / st.work_pred : kNaN);
   }
-  TsvRow row = out.named_row();
-  row["study"] = "total", row["level"] = "all";
-  row["units_planned"] = fmt(total.planned), row["units_run"] = fmt(total.run), row["unplanned"] = "0";
-  row["predicted_s"] = fmt(total.predicted_s), row["actual_s"] = fmt(total.actual_s);
-  row["ratio"] = total.predicted_s > 0 ? fmt(total.actual_s / total.predicted_s) : "NA";
-  row["work_ratio"] = total.work_pred > 0 ? fmt(total.work_act / total.work_pred) : "NA";
-  row["predicted_total_s"] = fmt(total.predicted_all_s);
-  row["peak_pred_mib"] = fmt(total.peak_pred), row["peak_actual_mib"] = "NA";
-  out.add_row(row);
-  out.save(a.str("out"));
-  std::printf("wrote %s\n", a.str("out").c_str());
-  return 0;
-}
+
+  void emit(const std::string& study, const std::string& level, const Cmp& c, int unpl, double peak_act) {
+    TsvRow row = out_.named_row();
+    row["study"] = study, row["level"] = level;
+    row["units_planned"] = fmt(c.planned), row["units_run"] = fmt(c.run), row["unplanned"] = fmt(unpl);
+    row["predicted_s"] = c.run ? fmt(c.predicted_s) : "NA";
+    row["actual_s"] = c.run ? fmt(c.actual_s) : "NA";
+    row["ratio"] = c.run && c.predicted_s > 0 ? fmt(c.actual_s / c.predicted_s) : "NA";
+    row["work_ratio"] = c.work_pred > 0 ? fmt(c.work_act / c.work_pred) : "NA";
+    row["predicted_total_s"] = fmt(c.predicted_all_s);
+    row["peak_pred_mib"] = fmt(c.peak_pred), row["peak_actual_mib"] = na(peak_act);
+    out_.add_row(row);
+  }
+
+  void total_row() {
+    TsvRow row = out_.named_row();
+    row["study"] = "total", row["level"] = "all";
+    row["units_planned"] = fmt(total_.planned), row["units_run"] = fmt(total_.run), row["unplanned"] = "0";
+    row["predicted_s"] = fmt(total_.predicted_s), row["actual_s"] = fmt(total_.actual_s);
+    row["ratio"] = total_.predicted_s > 0 ? fmt(total_.actual_s / total_.predicted_s) : "NA";
+    row["work_ratio"] = total_.work_pred > 0 ? fmt(total_.work_act / total_.work_pred) : "NA";
+    row["predicted_total_s"] = fmt(total_.predicted_all_s);
+    row["peak_pred_mib"] = fmt(total_.peak_pred), row["peak_actual_mib"] = "NA";
+    out_.add_row(row);
+  }
+
+  Args a_;
+  TsvTable plan_, out_;
+  int c_study_ = -1, c_var_ = -1, c_level_ = -1, c_time_ = -1, c_mem_ = -1, c_rec_ = -1, c_pairs_ = -1,
+      c_prod_ = -1, c_method_ = -1, c_trim_ = -1;
+  Cmp total_;
+};
+
+int body(int argc, char** argv) { return PlanVsActual(argc, argv).run(); }
 
 }  // namespace
 
