@@ -60,22 +60,36 @@ OpenCause open_cause(const JudgedRate& open, const std::vector<JudgedRate>& judg
 }
 
 TsvTable open_causes(const std::vector<JudgedRate>& judged, double tolerance) {
-  TsvTable t;
-  t.columns = {"table", "cause", "rates", "keys", "evidence"};
-  std::map<std::pair<std::string, std::string>, std::size_t> row_of;
+  // One group per (table, cause): its rates counted and its keys and evidence gathered while
+  // they are numbers and lists, written as cells once at the end.
+  struct Group {
+    std::string table, cause;
+    int rates = 0;
+    std::string keys, evidence;
+  };
+  std::vector<Group> groups;
+  std::map<std::pair<std::string, std::string>, std::size_t> group_of;
   for (const JudgedRate& j : judged) {
     if (!open_on_identified_board(j)) continue;
     const OpenCause c = open_cause(j, judged, tolerance);
     const auto place = std::make_pair(j.rate.table, c.cause);
-    auto it = row_of.find(place);
-    if (it == row_of.end()) {
-      it = row_of.emplace(place, t.rows.size()).first;
-      t.rows.push_back({j.rate.table, c.cause, "0", "", ""});
+    auto it = group_of.find(place);
+    if (it == group_of.end()) {
+      it = group_of.emplace(place, groups.size()).first;
+      groups.push_back({j.rate.table, c.cause});
     }
-    auto& row = t.rows[it->second];
-    row[2] = std::to_string(std::stoi(row[2]) + 1);
-    row[3] += (row[3].empty() ? "" : ", ") + j.rate.key;
-    row[4] += (row[4].empty() ? "" : "; ") + j.rate.key + ": " + c.evidence;
+    Group& g = groups[it->second];
+    ++g.rates;
+    g.keys += (g.keys.empty() ? "" : ", ") + j.rate.key;
+    g.evidence += (g.evidence.empty() ? "" : "; ") + j.rate.key + ": " + c.evidence;
+  }
+  TsvTable t;
+  t.columns = {"table", "cause", "rates", "keys", "evidence"};
+  for (const Group& g : groups) {
+    TsvRow row = t.named_row();
+    row["table"] = g.table, row["cause"] = g.cause, row["rates"] = std::to_string(g.rates);
+    row["keys"] = g.keys, row["evidence"] = g.evidence;
+    t.add_row(row);
   }
   return t;
 }
