@@ -4,7 +4,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <set>
@@ -75,10 +74,6 @@ std::map<std::string, std::string> identified_slices(const std::optional<PdeRead
         s[st.published->table] = st.published->identified_slice(*identified);
   return s;
 }
-
-// A store cell read as a number the way a heat file's evidence needs it: its leading number,
-// 0 where it has none (rel_error is NA in a run that blew up).
-double leading_number(const std::string& s) { return std::strtod(s.c_str(), nullptr); }
 
 // printf into a string: the bands and reasons print their numbers as the report shows them.
 std::string format(const char* f, auto... args) {
@@ -184,7 +179,7 @@ std::pair<Verdict, std::string> verdict_of(const StoreRate& r, const SeedBand* b
   // the set-up decides: Table 4.6's h10 reading grows by -37 where the document prints -281).
   // Only the sign agrees, so it is not counted as reproduced.
   if (differs && r.theoretical == "unstable" && blown != unstable.end() &&
-      cell_number(r.reproduced, reproduced) && reproduced < 0 && leading_number(r.published) < 0)
+      cell_number(r.reproduced, reproduced) && reproduced < 0 && cell_number_or(r.published, 0) < 0)
     return {Verdict::sign_only, "both unstable (" + blown->second + "), rate < 0 on both sides: sign only"};
   if (differs) {
     // Inside the band of the jitter realizations: a verdict only with enough of them and a
@@ -325,14 +320,15 @@ void add_unstable_series(const std::string& table, const std::string& slice, con
     const std::string& level = heat.text(i, "level");
     if (level != l1 && level != l2) continue;
     const bool blew_up = heat.text(i, "blew_up") == "yes";
-    const double error = leading_number(heat.text(i, "rel_error"));
+    // rel_error is NA in a run that blew up: 0 there (the judges' one number reader).
+    const double error = cell_number_or(heat.text(i, "rel_error"), 0);
     if (!blew_up && !(error > 1)) continue;
     auto& [n, evidence] = series[heat.text(i, "weight") + " " + heat.text(i, "theta")];
     ++n;
     evidence += (evidence.empty() ? "" : "; ") + ("2^-" + level + ": ") +
                 (blew_up ? "blew up at step " + heat.text(i, "blowup_step") + " of " + heat.text(i, "K")
                          : format("error %.3g after %lld steps", error,
-                                  std::strtoll(heat.text(i, "K").c_str(), nullptr, 10)));
+                                  static_cast<long long>(cell_number_or(heat.text(i, "K"), 0))));
   }
   for (auto& [key, s] : series)
     if (s.first == 2) out[{table, slice, key}] = "unstable at both rate levels (" + s.second + ")";
