@@ -536,7 +536,7 @@ TEST_CASE("store: the header is sealed; an edited line is refused, a missing sea
           "[unit][store]") {
   TempDir t("gpm_store_");
   fs::create_directories(t.file("results/paper"));
-  for (const std::string f : {t.file("s.tsv"), t.file("results/paper/s.tsv")}) {
+  for (const std::string& f : {t.file("s.tsv"), t.file("results/paper/s.tsv")}) {
     CAPTURE(f);
     run_study(f, CacheMode::run);
     const auto written = TsvTable::load(f);
