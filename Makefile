@@ -165,14 +165,17 @@ docs/companion.html: $(REPORT_INPUTS)
 BLANK_PAGES_ALLOWED_report := 0
 BLANK_PAGES_ALLOWED_supplement := 1
 BLANK_PAGES_ALLOWED_companion := 2
-PRINT_RULE_INPUTS := paper/style.css tests/report/browser_check.sh tests/report/page_fill.py tests/report/print_pdf.py
+# A part's own check of the printed PDF before it takes its place, beside its blank-page
+# allowance: the paper's page one must hold the bottom line (tests/report/page_one.sh).
+PAGE_CHECK_report = bash tests/report/page_one.sh $@.tmp &&
+PRINT_RULE_INPUTS := paper/style.css tests/report/browser_check.sh tests/report/page_fill.py tests/report/print_pdf.py \
+	tests/report/page_one.sh
 print_pdf = bash tests/report/browser_check.sh $< && \
 	python3 tests/report/print_pdf.py $< $@.tmp && \
 	python3 tests/report/page_fill.py --allow $(BLANK_PAGES_ALLOWED_$*) $@.tmp && \
-	mv $@.tmp $@ && echo "report: $@ (printed from $<)"
-paper/%.pdf: paper/%.html $(PRINT_RULE_INPUTS) tests/report/page_one.sh
+	$(PAGE_CHECK_$*) mv $@.tmp $@ && echo "report: $@ (printed from $<)"
+paper/%.pdf: paper/%.html $(PRINT_RULE_INPUTS)
 	@$(print_pdf)
-	@if [ "$*" = report ]; then bash tests/report/page_one.sh $@ || { rm -f $@; exit 1; }; fi
 docs/%.pdf: docs/%.html $(PRINT_RULE_INPUTS)
 	@$(print_pdf)
 

@@ -77,6 +77,14 @@ local function column_index(t, name, path)
 end
 
 -- The rows of a data file that satisfy where="col=value,col=~pattern".
+-- The values a condition "column=a|b" allows, as a set: a datum's where= and a table's
+-- filter= read alternatives the same way.
+local function alternatives(val)
+  local allowed = {}
+  for v in val:gmatch("[^|]+") do allowed[v] = true end
+  return allowed
+end
+
 local function matching_rows(el)
   local file = el.attributes["file"] or fail("datum without file= attribute")
   local path = file:sub(1, 1) == "/" and file or (datadir .. "/" .. file)
@@ -84,19 +92,18 @@ local function matching_rows(el)
   local conds = {}
   for _, c in ipairs(split(el.attributes["where"] or "", ",")) do
     local k, v = c:match("^([^=]+)=(.*)$")
-    if k then table.insert(conds, {idx = column_index(t, k, path), val = v}) end
+    if k then
+      table.insert(conds, {idx = column_index(t, k, path), val = v,
+                           allowed = v == "" and {[""] = true} or v:sub(1, 1) ~= "~" and alternatives(v) or nil})
+    end
   end
   local out = {}
   for _, r in ipairs(t.rows) do
     local ok = true
     for _, c in ipairs(conds) do
       local cell = r[c.idx] or ""
-      if c.val:sub(1, 1) == "~" then ok = ok and cell:match("^" .. c.val:sub(2) .. "$") ~= nil
-      elseif c.val:find("|", 1, true) then  -- alternatives, as a table's filter= takes them
-        local any = false
-        for alt in c.val:gmatch("[^|]+") do any = any or cell == alt end
-        ok = ok and any
-      else ok = ok and cell == c.val end
+      if c.allowed then ok = ok and c.allowed[cell] == true
+      else ok = ok and cell:match("^" .. c.val:sub(2) .. "$") ~= nil end
     end
     if ok then table.insert(out, r) end
   end
@@ -505,9 +512,7 @@ local function tsv_block(el)
     local fidx
     for i, h in ipairs(header) do if h == fcol then fidx = i end end
     if not fidx then fail("filter column '" .. fcol .. "' not in " .. path) end
-    local allowed = {}
-    for v in fval:gmatch("[^|]+") do allowed[v] = true end
-    table.insert(conds, {idx = fidx, allowed = allowed})
+    table.insert(conds, {idx = fidx, allowed = alternatives(fval)})
   end
   local function kept(r)
     for _, c in ipairs(conds) do if not c.allowed[r[c.idx] or ""] then return false end end

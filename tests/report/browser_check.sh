@@ -59,7 +59,7 @@ window.addEventListener('load', function () {
     }
   });
   // Text below 8 pt in a figure: the SVG's own font sizes times the scale it is drawn at.
-  var MIN_PT = 8, PT_PER_PX = 0.75;
+  var MIN_PT = 8, MIN_SCRIPT_PT = 6, PT_PER_PX = 0.75;
   document.querySelectorAll('img').forEach(function (im) {
     var s = im.getAttribute('src') || '';
     if (s.indexOf('data:image/svg+xml') !== 0 || !im.complete) return;
@@ -81,26 +81,22 @@ window.addEventListener('load', function () {
       }
       return 16;  // the SVG default
     };
-    var smallest = Infinity, sample = '';
-    Array.prototype.forEach.call(svg.getElementsByTagName('text'), function (t) {
-      if (!flat(t.textContent)) return;
-      var pt = size(t) * shown / vw * PT_PER_PX;
-      if (pt < smallest) { smallest = pt; sample = flat(t.textContent).slice(0, 20); }
-    });
-    if (smallest < MIN_PT)
-      out.push('SMALL TEXT in figure ' + (im.dataset.figure || '?') + ' (' + smallest.toFixed(1) + ' pt, "' +
-               sample + '"): ' + name(im));
-    // A sub- or superscript (gnuplot's enhanced text sets it as a <tspan> with its own, smaller
-    // font size): at least MIN_SCRIPT_PT, so an exponent of an axis label stays legible.
-    var MIN_SCRIPT_PT = 6, tiny = Infinity, tinySample = '';
-    Array.prototype.forEach.call(svg.getElementsByTagName('tspan'), function (t) {
-      if (!flat(t.textContent)) return;
-      var pt = size(t) * shown / vw * PT_PER_PX;
-      if (pt < tiny) { tiny = pt; tinySample = flat(t.textContent).slice(0, 20); }
-    });
-    if (tiny < MIN_SCRIPT_PT)
-      out.push('SMALL SCRIPT in figure ' + (im.dataset.figure || '?') + ' (' + tiny.toFixed(1) + ' pt, "' +
-               tinySample + '"): ' + name(im));
+    // The smallest printed size among the elements of one tag, reported when under `min`:
+    // <text> for the text itself, <tspan> for a sub- or superscript (gnuplot's enhanced text
+    // sets it with its own, smaller font size), so an exponent of an axis label stays legible.
+    var check = function (tag, min, what) {
+      var smallest = Infinity, sample = '';
+      Array.prototype.forEach.call(svg.getElementsByTagName(tag), function (t) {
+        if (!flat(t.textContent)) return;
+        var pt = size(t) * shown / vw * PT_PER_PX;
+        if (pt < smallest) { smallest = pt; sample = flat(t.textContent).slice(0, 20); }
+      });
+      if (smallest < min)
+        out.push(what + ' in figure ' + (im.dataset.figure || '?') + ' (' + smallest.toFixed(1) + ' pt, "' +
+                 sample + '"): ' + name(im));
+    };
+    check('text', MIN_PT, 'SMALL TEXT');
+    check('tspan', MIN_SCRIPT_PT, 'SMALL SCRIPT');
   });
   // A word or number that wraps inside a table cell: its text range has boxes on two lines.
   document.querySelectorAll('td, th').forEach(function (cell) {

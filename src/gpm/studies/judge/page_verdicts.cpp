@@ -62,6 +62,13 @@ std::string counts(const TsvTable& score, std::size_t i) {
   return (out.empty() ? "none" : out) + " of " + score.text(i, "rates");
 }
 
+// The rates of score row i that reproduce a published one: agreements, reproduced
+// non-convergence and rates inside the seed band.
+double reproduced_rates(const TsvTable& score, std::size_t i) {
+  const auto n = [&](const char* column) { return score.number(i, score.require_column(column)); };
+  return n("agrees") + n("non_convergence") + n("in_seed_band");
+}
+
 }  // namespace
 
 PageDataReader page_data_dir(const std::string& dir) {
@@ -96,7 +103,7 @@ PageVerdict rate_table_verdict(const TsvTable& score, const std::string& table) 
     v.verdict = "not yet computed";
     return v;
   }
-  const double total = n("rates"), good = n("agrees") + n("non_convergence") + n("in_seed_band");
+  const double total = n("rates"), good = reproduced_rates(score, *counted);
   const double checked = n("checked_reason");
   v.verdict = good == total ? "reproduced"
               : good > 0    ? "partial"
@@ -109,9 +116,8 @@ PageVerdict rate_table_verdict(const TsvTable& score, const std::string& table) 
     const int sc = score.require_column("slice"), uc = score.require_column("setup");
     for (std::size_t i = 0; i < score.rows.size(); ++i) {
       if (score.text(i, tc) != table || score.text(i, uc) != "document" || counted == i || printed == i) continue;
-      const auto m = [&](const char* column) { return score.number(i, score.require_column(column)); };
-      const double all = m("rates");
-      if (all > 0 && m("agrees") + m("non_convergence") + m("in_seed_band") == all)
+      const double all = score.number(i, score.require_column("rates"));
+      if (all > 0 && reproduced_rates(score, i) == all)
         v.evidence += "; reproduced under another reading, " + score.text(i, sc) + " (seed 1): " + counts(score, i);
     }
   }
