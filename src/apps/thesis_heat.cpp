@@ -153,7 +153,7 @@ class HeatTables {
   std::vector<PdeVolumes> volume_choices_;
   std::vector<PdeReading> readings_;
   HeatSetting hs_;
-  bool guarded_ = false, rechecking_ = false, tau_ = false;
+  bool guarded_ = false, rechecking_ = false, tau_ = false, given_propagator_ = false;
   LaplacianStorage storage_ = LaplacianStorage::automatic;
   HeatPropagator how_ = HeatPropagator::automatic;
   double max_bytes_ = 0;
@@ -185,11 +185,13 @@ class HeatTables {
         .opt("weights", "", "run only these weights (comma list; default: all three)")
         .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
         .opt("solver", "cg", "implicit steps: cg (plain conjugate gradients, the reference of every stored\n"
-                             "  row) or tau (preconditioned by the lattice's fast sine transform)")
+                             "  row) or tau (preconditioned by the lattice's fast sine transform);\n"
+                             "  --verify --solver tau compares plain CG's rows at 1e-6")
         .opt("propagator", "auto", "stepped: the theta-method step by step (the reference); krylov: the\n"
                                    "  recurrence propagated exactly in a Krylov subspace (heat_krylov.hpp);\n"
                                    "  auto: per series, the one with fewer predicted Laplacian products.\n"
-                                   "  --verify/--recheck recompute each row by the propagator that made it")
+                                   "  --recheck recomputes each row by the propagator that made it; so does\n"
+                                   "  --verify, unless given one: every row by it, compared at 1e-4")
         .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB)");
   }
 
@@ -218,12 +220,18 @@ class HeatTables {
     const std::string solver = a.str("solver");
     if (solver != "cg" && solver != "tau") throw InputError("--solver '" + solver + "' is not cg or tau");
     tau_ = solver == "tau";
-    if (rechecking_ && tau_)
-      throw InputError("--solver tau with --verify/--recheck: the stored rows were made with plain CG "
-                       "(their iteration counts would differ); compare with bench_pcg --problem heat");
-    if (rechecking_ && a.has("propagator"))
-      throw InputError("--propagator with --verify/--recheck: each stored row is recomputed by the "
-                       "propagator that made it (its column 'propagator')");
+    // --verify may recompute by another, cheaper path than the rows' own (the store compares
+    // at that path's tolerance, store.hpp); --recheck writes rows, so only by their own.
+    const bool recheck = run_.mode() == CacheMode::recheck;
+    if (recheck && tau_)
+      throw InputError("--solver tau with --recheck: the stored rows were made with plain CG (their "
+                       "iteration counts would differ); --verify --solver tau compares their numbers");
+    if (recheck && a.has("propagator"))
+      throw InputError("--propagator with --recheck: each stored row is recomputed by the propagator that "
+                       "made it (its column 'propagator'); --verify --propagator compares by another");
+    // A --verify given a propagator recomputes every row by it; the store compares a row made
+    // by another one at the propagator path's tolerance.
+    given_propagator_ = rechecking_ && a.has("propagator");
     max_bytes_ = a.positive("max-gb") * 1e9;
     out_ = run_.out(), rates_input_ = a.str("rates-input");
     if (readings_.size() > 1 && out_.find("{reading}") == std::string::npos)
@@ -342,7 +350,7 @@ class HeatTables {
           s.volumes = &other.at(r.volumes);
         }
         here.push_back(u), settings.push_back(s), done[u] = true;
-        hows.push_back(rechecking_ ? stored_propagator(*caches_[todo[u].reading], {wname, fmt(todo[u].theta), fmt(k)})
+        hows.push_back(rechecking_ && !given_propagator_ ? stored_propagator(*caches_[todo[u].reading], {wname, fmt(todo[u].theta), fmt(k)})
                                    : how_);
       }
       // A fine level's subspace grows for up to an hour: one line per size tried says how far

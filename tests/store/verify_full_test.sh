@@ -2,7 +2,8 @@
 # verify_store_full.sh on a copy of one store file (Table 4.4, the cheap levels): the first run
 # logs a sealed "agree" line per level, a second run resumes (verifies nothing again), and a
 # stored number changed by hand (seal recomputed, so only the recomputation can tell) makes
-# its level "differs" with exit 4.
+# its level "differs" with exit 4, by the rows' own path and by the cheaper one (--cheap:
+# preconditioned CG for plain CG's rows, at 1e-6: an edit of 1e-5 is still caught).
 # usage: verify_full_test.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
@@ -18,24 +19,37 @@ fail=0
 run > "$t/out1" 2>&1 || { echo "FAIL: the first run failed:"; cat "$t/out1"; exit 1; }
 n=$(grep -c '	agree	' "$t/verified.log")
 [ "$n" -eq 2 ] || { echo "FAIL: expected 2 agree lines (levels 5, 6), got $n:"; cat "$t/verified.log"; fail=1; }
-awk -F'\t' 'NR > 1 && length($13) != 16 { bad = 1 } END { exit bad }' "$t/verified.log" ||
+awk -F'\t' 'NR > 1 && (length($14) != 16 || $13 != "own") { bad = 1 } END { exit bad }' "$t/verified.log" ||
   { echo "FAIL: a log line without its 16-digit seal"; fail=1; }
 run > "$t/out2" 2>&1
 grep -q '^verify_store_full: 0 (file, level) to verify' "$t/out2" ||
   { echo "FAIL: the second run did not resume (it found work again):"; cat "$t/out2"; fail=1; }
-# One error at level 6 changed by hand, the seal column dropped and the file sealed anew
-# (gpm store-seal): the seals pass, only the recomputation can tell.
-awk -F'\t' -v OFS='\t' '/^#/ { print; next }
-  !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; NF--; print; next }
-  $c["level"] == 6 && !done { $c["rel_error"] = $c["rel_error"] * 1.01; done = 1 } { NF--; print }' \
-  "$t/store/thesis_table4_4.tsv" > "$t/x" && mv "$t/x" "$t/store/thesis_table4_4.tsv"
-"$build/gpm" store-seal "$t/store/thesis_table4_4.tsv" > "$t/seal.out" 2>&1 ||
-  { echo "FAIL: gpm store-seal refused the test's file:"; cat "$t/seal.out"; exit 1; }
+# The cheaper path: both levels agree at its tolerance, logged with the path's options.
 rm -f "$t/verified.log"
-run > "$t/out3" 2>&1
-rc=$?
-[ $rc -eq 4 ] || { echo "FAIL: a changed stored number gave exit $rc, not 4:"; cat "$t/out3"; fail=1; }
-grep -q '	6	thesis_table4_4	.*	differs	' "$t/verified.log" ||
-  { echo "FAIL: level 6 is not logged as differing:"; cat "$t/verified.log"; fail=1; }
-[ $fail -eq 0 ] && echo "verify_store_full: logs sealed lines, resumes, and a resealed edit differs"
+run --cheap > "$t/out4" 2>&1 || { echo "FAIL: the cheap path failed:"; cat "$t/out4"; fail=1; }
+n=$(awk -F'\t' '$9 == "agree" && $13 == "--solver tau"' "$t/verified.log" | wc -l)
+[ "$n" -eq 2 ] || { echo "FAIL: expected 2 agree lines by --solver tau, got $n:"; cat "$t/verified.log"; fail=1; }
+# One error at level 6 changed by hand (by `factor`), the seal column dropped and the file
+# sealed anew (gpm store-seal): the seals pass, only the recomputation can tell.
+edit() {
+  cp "$t/orig.tsv" "$t/store/thesis_table4_4.tsv"
+  awk -F'\t' -v OFS='\t' -v f="$1" '/^#/ { print; next }
+    !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; NF--; print; next }
+    $c["level"] == 6 && !done { $c["rel_error"] = $c["rel_error"] * f; done = 1 } { NF--; print }' \
+    "$t/store/thesis_table4_4.tsv" > "$t/x" && mv "$t/x" "$t/store/thesis_table4_4.tsv"
+  "$build/gpm" store-seal "$t/store/thesis_table4_4.tsv" > "$t/seal.out" 2>&1 ||
+    { echo "FAIL: gpm store-seal refused the test's file:"; cat "$t/seal.out"; exit 1; }
+  rm -f "$t/verified.log"
+}
+cp "$t/store/thesis_table4_4.tsv" "$t/orig.tsv"
+for how in "1.01 own" "1.00001 --cheap"; do
+  set -- $how
+  edit "$1"
+  if [ "$2" = own ]; then run > "$t/out3" 2>&1; else run "$2" > "$t/out3" 2>&1; fi
+  rc=$?
+  [ $rc -eq 4 ] || { echo "FAIL: a stored number changed by $1 gave exit $rc, not 4 ($2):"; cat "$t/out3"; fail=1; }
+  grep -q '	6	thesis_table4_4	.*	differs	' "$t/verified.log" ||
+    { echo "FAIL: level 6 is not logged as differing ($2):"; cat "$t/verified.log"; fail=1; }
+done
+[ $fail -eq 0 ] && echo "verify_store_full: logs sealed lines, resumes, a resealed edit differs (own and cheaper path)"
 exit $fail

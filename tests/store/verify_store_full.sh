@@ -6,7 +6,17 @@
 # propagator; storage as the program chooses it: the numbers, not the path's bookkeeping, are
 # compared: store.hpp).  Each (file, level) verified appends one sealed line to the log:
 #
-#   date  file  level  program  code  units  rows  max_rel_diff  verdict  seconds  stored_s  machine  seal
+#   date  file  level  program  code  units  rows  max_rel_diff  verdict  seconds  stored_s  machine  path  seal
+#
+# path: "own" (the rows' own path) or, with --cheap, the options of an independent and
+# cheaper path (issue 58, item 3): Table 4.4's plain-CG files by CG preconditioned with the
+# lattice's tau matrix ("--solver tau", compared at 1e-6 relative); the heat files by the
+# propagator with fewer predicted products per series, a Krylov subspace for most stepped rows
+# ("--propagator auto", at 1e-4 where a row's propagator differs from its own), their implicit
+# steps, if stepped, preconditioned ("--solver tau").  Tolerances: kStoreSolverPathRelTol and
+# kStorePropagatorPathRelTol in src/gpm/studies/run/store.hpp, ten times the largest
+# difference measured between the paths.  The rows' own path stays on the sample verified by
+# it (every line of path "own") and on make test's draw.
 #
 # seal: the first 16 hex digits of the SHA-256 of the line's other cells, a tripwire for
 # hand edits.  A (file, level) whose line carries the program's current code is skipped, so a
@@ -15,30 +25,36 @@
 # exit 4 at the end (the log keeps it: a difference is a finding, not an accident).
 #
 # usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS]
-#                             [--dry-run] [FILE...]
+#                             [--cheap] [--dry-run] [FILE...]
 #   --log       default STORE/verified.log
 #   --budget    stop before a (file, level) whose stored time would take the run past this
 #               many seconds (default: no limit); --max-unit: skip levels whose stored time
 #               exceeds this (default: none)
+#   --cheap     the cheaper paths above; the budget, the order and the price then use each
+#               level's estimated seconds by that path (cheap_s: Table 4.4's assembly plus its
+#               solve scaled by 15 iterations over its own count, the preconditioned solver's
+#               11-13 at every level measured, results/bench/pcg_*; a heat row's stored time,
+#               an upper bound: its path is chosen only where it needs fewer products)
 #   --dry-run   the price only: each (file, level) to do with its stored seconds, and the sum
 #   FILE...     only these store files (stems)
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 # shellcheck source=tables/census_lib.sh
 . "$(cd "$(dirname "$0")/../.." && pwd)/tables/census_lib.sh"
-usage="usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS] [--dry-run] [FILE...]"
+usage="usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS] [--cheap] [--dry-run] [FILE...]"
 [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
 build=$1 store=$2
 shift 2
 [ -x "$build/gpm" ] || { echo "verify_store_full.sh: $build/gpm not found; $usage" >&2; exit 2; }
 [ -d "$store" ] || { echo "verify_store_full.sh: $store is not a directory; $usage" >&2; exit 2; }
-log=$store/verified.log budget="" max_unit="" dry=0 only=()
+log=$store/verified.log budget="" max_unit="" dry=0 cheap=0 only=()
 while [ $# -gt 0 ]; do
   case $1 in
     --log) log=${2:?--log needs a file}; shift 2 ;;
     --budget) budget=${2:?--budget needs seconds}; shift 2 ;;
     --max-unit) max_unit=${2:?--max-unit needs seconds}; shift 2 ;;
     --dry-run) dry=1; shift ;;
+    --cheap) cheap=1; shift ;;
     -*) echo "verify_store_full.sh: unknown option '$1'; $usage" >&2; exit 2 ;;
     *) only+=("$1"); shift ;;
   esac
@@ -46,12 +62,13 @@ done
 for n in "$budget" "$max_unit"; do
   [ -z "$n" ] || [[ $n =~ ^[0-9]+$ ]] || { echo "verify_store_full.sh: '$n' is not a whole number of seconds" >&2; exit 2; }
 done
-header="date	file	level	program	code	units	rows	max_rel_diff	verdict	seconds	stored_s	machine	seal"
+header="date	file	level	program	code	units	rows	max_rel_diff	verdict	seconds	stored_s	machine	path	seal"
 [ -f "$log" ] || [ $dry = 1 ] || printf '%s\n' "$header" > "$log"
 machine="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(nproc) cores"
 
 # Every (file, level) with its stored seconds: the distinct values of the file's time column
-# per level (a unit repeats its time on each of its rows), summed.
+# per level (a unit repeats its time on each of its rows), summed; with --cheap, the path
+# and the estimated seconds by it (cheap_s above).
 todo=$(mktemp); trap 'rm -f "$todo"' EXIT
 while IFS=$'\t' read -r study file program args census coarse slice; do
   [ ${#only[@]} -eq 0 ] || [[ " ${only[*]} " == *" $file "* ]] || continue
@@ -65,35 +82,47 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
   [ "$args" = "-" ] && args=""
   args="${args}${args:+${extra:+ }}${extra}"
   [ -n "$args" ] || args="-"
-  awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v code="$code" '
+  path=own plain=0
+  grep -q '^# solver = ' "$f" || plain=1
+  if [ $cheap = 1 ] && [ "$prog" = thesis_table4_4 ] && [ $plain = 1 ]; then path="--solver tau"
+  elif [ $cheap = 1 ] && [ "$prog" = thesis_heat ]; then
+    path="--propagator auto$([ $plain = 1 ] && echo " --solver tau")"; fi
+  awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v code="$code" -v path="$path" '
     /^#/ { next }
     !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1
          t = ("seconds" in c) ? c["seconds"] : c["time_s"]; next }
     { k = $c["level"]; key = k SUBSEP $t
-      if (!(key in seen)) { seen[key] = 1; s[k] += $t } }
-    END { for (k in s) printf "%s\t%s\t%s\t%s\t%s\t%.1f\n", file, k, program, args, code, s[k] }' "$f"
-done < <("$build/gpm" study --store-rows) | sort -t$'\t' -k6,6g > "$todo"
+      if (!(key in seen)) { seen[key] = 1; s[k] += $t; e[k] += cheap_s() } }
+    function cheap_s(   its) {
+      if (path == "own") return $t
+      if ("cg_iterations" in c) { its = $c["cg_iterations"]
+        return its > 15 ? $c["assembly_s"] + $c["solve_s"] * 15 / its : $t }
+      return $t }
+    END { for (k in s) printf "%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%.1f\n", file, k, program, args, code, s[k], path, e[k] }' "$f"
+done < <("$build/gpm" study --store-rows) | sort -t$'\t' -k8,8g > "$todo"
 
 # Skip what the log already vouches for under the current code.
 pending=$(mktemp); trap 'rm -f "$todo" "$pending"' EXIT
 awk -F'\t' 'NR == FNR { if (FNR > 1 && $9 == "agree") done[$2 SUBSEP $3 SUBSEP $5] = 1; next }
   !(($1 SUBSEP $2 SUBSEP $5) in done)' "$log" "$todo" 2>/dev/null > "$pending" || cp "$todo" "$pending"
 total=$(awk -F'\t' '{ s += $6 } END { printf "%.0f", s }' "$pending")
+by_path=$(awk -F'\t' '{ s += $8 } END { printf "%.0f", s }' "$pending")
 n=$(wc -l < "$pending")
-echo "verify_store_full: $n (file, level) to verify, $total s stored time ($(awk -v s="$total" 'BEGIN { printf "%.1f", s / 3600 }') h as recorded); $(($(wc -l < "$todo") - n)) already in $log"
+echo "verify_store_full: $n (file, level) to verify, $total s stored time ($(awk -v s="$total" 'BEGIN { printf "%.1f", s / 3600 }') h as recorded)$([ $cheap = 1 ] && echo ", $by_path s ($(awk -v s="$by_path" 'BEGIN { printf "%.1f", s / 3600 }') h) estimated by the cheap path"); $(($(wc -l < "$todo") - n)) already in $log"
 if [ $dry = 1 ]; then
-  printf 'file\tlevel\tprogram\tstored_s\n'
-  awk -F'\t' -v OFS='\t' '{ print $1, $2, $3, $6 }' "$pending"
+  printf 'file\tlevel\tprogram\tstored_s\tpath\tcheap_s\n'
+  awk -F'\t' -v OFS='\t' '{ print $1, $2, $3, $6, $7, $8 }' "$pending"
   exit 0
 fi
 
 spent=0 differs=0 done_n=0
-while IFS=$'\t' read -r file level program args code stored; do
-  if [ -n "$max_unit" ] && awk -v s="$stored" -v m="$max_unit" 'BEGIN { exit !(s > m) }'; then continue; fi
-  if [ -n "$budget" ] && awk -v s="$stored" -v p="$spent" -v b="$budget" 'BEGIN { exit !(p + s > b) }'; then
+while IFS=$'\t' read -r file level program args code stored path expect; do
+  if [ -n "$max_unit" ] && awk -v s="$expect" -v m="$max_unit" 'BEGIN { exit !(s > m) }'; then continue; fi
+  if [ -n "$budget" ] && awk -v s="$expect" -v p="$spent" -v b="$budget" 'BEGIN { exit !(p + s > b) }'; then
     echo "verify_store_full: budget of $budget s reached ($spent s spent); rerun to continue"; break
   fi
   [ "$args" = "-" ] && args=""
+  [ "$path" = own ] || args="$args $path"
   t0=$(date +%s)
   # shellcheck disable=SC2086
   out=$("$build"/$program $args --profile paper --levels "$level" --out "$store/$file.tsv" --verify 2>&1)
@@ -103,6 +132,7 @@ while IFS=$'\t' read -r file level program args code stored; do
   units=$(sed -n 's/.*: \([0-9]*\) units recomputed.*/\1/p' <<<"$line")
   rows=$(sed -n 's/.* \([0-9]*\) rows compared.*/\1/p' <<<"$line")
   diff=$(sed -n 's/.*max relative difference \([^ ]*\) .*/\1/p' <<<"$line")
+  tol=$(sed -n 's/.*(tolerance \([^,)]*\).*/\1/p' <<<"$line")
   # A level the file holds in part (a census that stores some θ or variants only): the units
   # it lacks are recomputed too and reported "not in the file"; the rows it holds decide.
   others=$(grep '^\[store\]   differs: ' <<<"$out" | grep -vc ': not in the file$')
@@ -110,14 +140,14 @@ while IFS=$'\t' read -r file level program args code stored; do
   [ -n "$units" ] && [ -n "$missing" ] && units=$((units - missing))
   if [ $rc -eq 0 ] && [[ $line == *": agree" ]]; then verdict=agree
   elif [ $rc -eq 4 ] && [ "$others" -eq 0 ] && [ "${rows:-0}" -gt 0 ] &&
-       awk -v d="${diff:-1}" 'BEGIN { exit !(d + 0 <= 1e-9) }'; then verdict=agree
+       awk -v d="${diff:-1}" -v t="${tol:-1e-9}" 'BEGIN { exit !(d + 0 <= t + 0) }'; then verdict=agree
   elif [ $rc -eq 4 ]; then verdict=differs; differs=$((differs + 1))
   else echo "verify_store_full: $file level $level: exit $rc"; tail -3 <<<"$out"; exit 1; fi
-  cells="$(date -u +%Y-%m-%dT%H:%M:%SZ)	$file	$level	${program%% *}	$code	${units:-0}	${rows:-0}	${diff:-NA}	$verdict	$secs	$stored	$machine"
+  cells="$(date -u +%Y-%m-%dT%H:%M:%SZ)	$file	$level	${program%% *}	$code	${units:-0}	${rows:-0}	${diff:-NA}	$verdict	$secs	$stored	$machine	$path"
   seal=$(printf '%s' "$cells" | sha256sum | cut -c1-16)
   printf '%s\t%s\n' "$cells" "$seal" >> "$log"
   done_n=$((done_n + 1))
-  echo "verify_store_full: $file level $level: $verdict (max rel diff ${diff:-NA}, $secs s; stored $stored s)"
+  echo "verify_store_full: $file level $level ($path path): $verdict (max rel diff ${diff:-NA}, $secs s; stored $stored s)"
 done < "$pending"
 echo "verify_store_full: $done_n verified this run, $differs differ, $spent s"
 [ $differs -eq 0 ] || exit 4

@@ -332,6 +332,43 @@ TEST_CASE("store: residual columns are compared on their own scale", "[unit][sto
   REQUIRE_THROWS_AS(study(CacheMode::verify, 1e-9), StoreMismatch);  // a looser solve
 }
 
+// --- issue 58, item 3: --verify by another, cheaper path ------------------------------------
+TEST_CASE("store: --verify by another solver or propagator compares at that path's tolerance",
+          "[unit][store]") {
+  TempDir t("gpm_store_");
+  const std::string f = t.file("p.tsv");
+  const std::vector<std::string> cols = {"level", "propagator", "rel_error", "cg_mean_iterations"};
+  // A file of plain CG (no solver line); a run names its solver, propagator, error and iterations.
+  auto study = [&](CacheMode mode, const char* solver, const char* propagator, double err, double its) {
+    auto params = kParams;
+    if (solver) params.emplace_back("solver", solver);
+    UnitCache c(f, params, cols, 1, mode);
+    c.add({"5", propagator, fmt(err), fmt(its)});
+    c.save();
+    c.finish();
+  };
+  const double e = 0.125;
+  study(CacheMode::run, nullptr, "stepped", e, 80);
+  // Its own path: the iterations are compared, the error to 1e-9.
+  REQUIRE_THROWS_AS(study(CacheMode::verify, nullptr, "stepped", e, 12), StoreMismatch);
+  REQUIRE_THROWS_AS(study(CacheMode::verify, nullptr, "stepped", e * (1 + 1e-8), 80), StoreMismatch);
+  // Another solver: iterations aside, the error to 1e-6; a 1e-5 edit is still a difference.
+  REQUIRE_NOTHROW(study(CacheMode::verify, "tau", "stepped", e * (1 + 1e-7), 12));
+  REQUIRE_THROWS_AS(study(CacheMode::verify, "tau", "stepped", e * (1 + 1e-5), 12), StoreMismatch);
+  // Another propagator (the row's cell differs): the error to 1e-4; a 1e-3 edit differs.
+  REQUIRE_NOTHROW(study(CacheMode::verify, nullptr, "krylov", e * (1 + 1e-5), 0));
+  REQUIRE_THROWS_AS(study(CacheMode::verify, nullptr, "krylov", e * (1 + 1e-3), 0), StoreMismatch);
+  // Only --verify takes another path: a run or a re-check with another solver is refused.
+  REQUIRE_THROWS_AS(study(CacheMode::recheck, "tau", "stepped", e, 12), InputError);
+  REQUIRE_THROWS_AS(study(CacheMode::run, "tau", "stepped", e, 12), InputError);
+  // A file of the preconditioned solver verified by plain CG: another path as well.
+  fs::remove(f);
+  study(CacheMode::run, "tau", "stepped", e, 12);
+  REQUIRE_NOTHROW(study(CacheMode::verify, nullptr, "stepped", e * (1 + 1e-7), 80));
+  REQUIRE_THROWS_AS(study(CacheMode::verify, "tau", "stepped", e * (1 + 1e-7), 12), StoreMismatch);
+  REQUIRE_THROWS_AS(study(CacheMode::run, nullptr, "stepped", e, 80), InputError);  // not its file
+}
+
 // --- issue 43: nothing the user does loses a stored row ---------------------------------
 
 TEST_CASE("store: the seal covers `checked` too", "[unit][store]") {

@@ -80,6 +80,14 @@ std::string escaped(const std::string& s) {
 
 bool is_storage_column(const std::string& n) { return n == "storage" || n == "nnz"; }
 
+bool is_path_parameter(const std::string& k) { return k == "solver"; }
+
+bool is_path_column(const std::string& n) {
+  static const std::set<std::string> path = {"cg_iterations",      "rel_residual", "cg_mean_iterations",
+                                             "max_rel_residual",   "propagator",   "subspace"};
+  return path.count(n) > 0;
+}
+
 bool is_volatile_column(const std::string& n) {
   auto ends = [&](const std::string& s) {
     return n.size() >= s.size() && n.compare(n.size() - s.size(), s.size(), s) == 0;
@@ -254,8 +262,23 @@ void UnitCache::load(const std::vector<std::pair<std::string, std::string>>& par
   const bool replace = (mode_ == CacheMode::replace || quick_cache) &&
                        mode_ != CacheMode::verify && mode_ != CacheMode::census;
   reason_ = mode_ == CacheMode::replace ? "--replace" : "a quick-profile cache";
+  // --verify by another path (issue 58, item 3): a path parameter (how the numbers were
+  // solved for, not which numbers: is_path_parameter) may differ from the file's; the rows
+  // are then compared at the path's tolerance, the path's own columns aside.
+  // A path parameter the file names and the run does not (a plain run onto a preconditioned
+  // run's file) differs as much as one both name.
+  for (auto& [k, v] : old.meta)
+    if (is_path_parameter(k) && !table_.get(k)) {
+      if (mode_ == CacheMode::verify) other_path_ = true;
+      else return refuse_file("parameter '" + k + "' differs (file: '" + escaped(v) + "'; now: absent)",
+                              old.rows.size(), replace);
+    }
   for (auto& [k, v] : params) {
     const auto have = old.get(k);
+    if (mode_ == CacheMode::verify && is_path_parameter(k)) {
+      if (!have || *have != v) other_path_ = true;
+      continue;
+    }
     if (!have || *have != v)
       return refuse_file("parameter '" + k + "' differs (file: " +
                              (have ? "'" + escaped(*have) + "'" : std::string("absent")) +
@@ -533,6 +556,9 @@ void UnitCache::finish() {
   std::set<std::string> old_codes;
   const int ccode = table_.column("code");
   const int cstorage = table_.column("storage");
+  const int cpropagator = table_.column("propagator");
+  double tol_used = kStoreRelTol;  // the widest tolerance a row was compared at
+  bool by_other_path = false;
   for (auto& key : units) {
     std::vector<const std::vector<std::string>*> a, b;
     for (auto& r : fresh_)
@@ -555,13 +581,22 @@ void UnitCache::finish() {
       // A unit recomputed by another storage of its Laplacian (matrix-free on a device
       // against an assembled row) is compared on its numbers, not on how the product ran.
       const bool other_storage = cstorage >= 0 && (*a[i])[cstorage] != (*b[i])[cstorage];
+      // Another path (store.hpp): the run's solver differs from the file's, or this row's
+      // propagator from the stored row's (a Krylov subspace for a stepped row).
+      const bool other_propagator = cpropagator >= 0 && (*a[i])[cpropagator] != (*b[i])[cpropagator];
+      const double tol = other_propagator ? kStorePropagatorPathRelTol
+                         : other_path_    ? kStoreSolverPathRelTol
+                                          : kStoreRelTol;
+      tol_used = std::max(tol_used, tol);
+      by_other_path = by_other_path || other_propagator || other_path_;
       for (std::size_t c = 0; c < table_.columns.size(); ++c) {
         if (is_volatile_column(table_.columns[c])) continue;
         if (other_storage && is_storage_column(table_.columns[c])) continue;
+        if ((other_propagator || other_path_) && is_path_column(table_.columns[c])) continue;
         const double d = cell_difference((*a[i])[c], (*b[i])[c],
                                          table_.columns[c].find("residual") != std::string::npos);
         if (d >= 0) max_diff = std::max(max_diff, d);
-        if (d < 0 || d > kStoreRelTol) {
+        if (d < 0 || d > tol) {
           if (problems.size() < 5)
             problems.push_back(key_text(key) + ", row " + std::to_string(i + 1) + ": " +
                                table_.columns[c] + " " + escaped((*b[i])[c]) + " in the file, " +
@@ -578,9 +613,9 @@ void UnitCache::finish() {
   for (auto& c : old_codes) codes += (codes.empty() ? "" : ",") + c;
   std::fprintf(stderr,
                "[store] %s %s: %zu units recomputed (%zu not in the file), %zu rows compared "
-               "(file's code %s), max relative difference %s (tolerance %g)%s\n",
+               "(file's code %s), max relative difference %s (tolerance %g%s)%s\n",
                what, path_.c_str(), units.size(), missing, compared, codes.empty() ? "-" : codes.c_str(),
-               diff, kStoreRelTol, problems.empty() ? ": agree" : "");
+               diff, tol_used, by_other_path ? ", another path" : "", problems.empty() ? ": agree" : "");
   std::string first;
   for (auto& p : problems)
     if (!p.empty()) {

@@ -52,6 +52,16 @@ constexpr double kStoreRelTol = 1e-9;
 // (a long CG on another CPU's vector width ends at another rounding: store.cpp).
 constexpr double kStoreResidualAbsTol = 1e-13;
 constexpr double kStoreResidualRelTol = 0.1;
+// --verify by another path than the rows' own (issue 58, item 3: a cheaper, independent
+// recomputation): the numbers agree when they differ by at most this, relatively.  Measured
+// before it was set: preconditioned CG against plain CG (both to a relative residual of 1e-10)
+// differ by at most 8.4e-8 in Table 4.4's error (36 rows, 2^-5..2^-10,
+// results/bench/pcg_table4_4_*) and by 1.6e-10 in Table 4.7's implicit steps (38 rows,
+// pcg_heat_4_7_*); Krylov against stepping by at most 1.6e-5 in rel_error_max (246 rows,
+// heat_propagator_check.tsv).  A tenfold margin over the largest of its path: a changed digit
+// of a stored error (1e-4 relative or more) is still a difference.
+constexpr double kStoreSolverPathRelTol = 1e-6;
+constexpr double kStorePropagatorPathRelTol = 1e-4;
 
 // The writer's lock of a store file (`<file>.lock`, as a study's run takes it), for a tool that
 // rewrites the file outside a study (gpm store-add-columns): InputError naming the file if
@@ -87,6 +97,16 @@ bool is_volatile_column(const std::string& name);
 // --recheck compare them only between rows of the same storage, so a unit recomputed
 // matrix-free (on a device, say) is judged on its numbers.
 bool is_storage_column(const std::string& name);
+// Header parameters that name how a unit's numbers were solved for, not which numbers they are
+// (`solver`: plain or preconditioned CG, both to the file's tolerance).  --verify accepts a
+// run whose path parameters differ from the file's and compares by another path (below).
+bool is_path_parameter(const std::string& key);
+// Columns that report how the path ran (iteration counts, residuals, the propagator and its
+// subspace): compared only when the recomputation took the rows' own path.  A row recomputed
+// by another propagator than its `propagator` cell names (a heat study's --verify --propagator)
+// is compared at kStorePropagatorPathRelTol; a run whose path parameter differs from the
+// file's at kStoreSolverPathRelTol.
+bool is_path_column(const std::string& name);
 
 // One data file of a study read and written unit by unit: a unit's rows are reused when the
 // current code made them (or a re-check carried them), else computed and added; the modes
@@ -172,6 +192,7 @@ class UnitCache {
   std::vector<std::vector<std::string>> fresh_;  // verify/recheck: the recomputed rows
   bool writer_ = true;
   bool quick_run_ = false;
+  bool other_path_ = false;  // --verify through another solver (a path parameter differs)
 };
 
 }  // namespace gpm
