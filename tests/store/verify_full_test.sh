@@ -26,7 +26,7 @@ grep -q '^verify_store_full: 0 (file, level) to verify' "$t/out2" ||
   { echo "FAIL: the second run did not resume (it found work again):"; cat "$t/out2"; fail=1; }
 # The cheaper path: both levels agree at its tolerance, logged with the path's options.
 rm -f "$t/verified.log"
-run --cheap > "$t/out4" 2>&1 || { echo "FAIL: the cheap path failed:"; cat "$t/out4"; fail=1; }
+run --cheap --cheap-above 0 > "$t/out4" 2>&1 || { echo "FAIL: the cheap path failed:"; cat "$t/out4"; fail=1; }
 n=$(awk -F'\t' '$9 == "agree" && $13 == "--solver tau"' "$t/verified.log" | wc -l)
 [ "$n" -eq 2 ] || { echo "FAIL: expected 2 agree lines by --solver tau, got $n:"; cat "$t/verified.log"; fail=1; }
 # One error at level 6 changed by hand (by `factor`), the seal column dropped and the file
@@ -42,14 +42,15 @@ edit() {
   rm -f "$t/verified.log"
 }
 cp "$t/store/thesis_table4_4.tsv" "$t/orig.tsv"
-for how in "1.01 own" "1.00001 --cheap"; do
+for how in "1.01 own" "1.00001 --cheap --cheap-above 0"; do
   set -- $how
   edit "$1"
-  if [ "$2" = own ]; then run > "$t/out3" 2>&1; else run "$2" > "$t/out3" 2>&1; fi
+  f=$1; shift
+  if [ "$1" = own ]; then run > "$t/out3" 2>&1; else run "$@" > "$t/out3" 2>&1; fi
   rc=$?
-  [ $rc -eq 4 ] || { echo "FAIL: a stored number changed by $1 gave exit $rc, not 4 ($2):"; cat "$t/out3"; fail=1; }
+  [ $rc -eq 4 ] || { echo "FAIL: a stored number changed by $f gave exit $rc, not 4 ($*):"; cat "$t/out3"; fail=1; }
   grep -q '	6	thesis_table4_4	.*	differs	' "$t/verified.log" ||
-    { echo "FAIL: level 6 is not logged as differing ($2):"; cat "$t/verified.log"; fail=1; }
+    { echo "FAIL: level 6 is not logged as differing ($*):"; cat "$t/verified.log"; fail=1; }
 done
 [ $fail -eq 0 ] && echo "verify_store_full: logs sealed lines, resumes, a resealed edit differs (own and cheaper path)"
 exit $fail

@@ -25,12 +25,14 @@
 # exit 4 at the end (the log keeps it: a difference is a finding, not an accident).
 #
 # usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS]
-#                             [--cheap] [--dry-run] [FILE...]
+#                             [--cheap [--cheap-above SECONDS]] [--dry-run] [FILE...]
 #   --log       default STORE/verified.log
 #   --budget    stop before a (file, level) whose stored time would take the run past this
 #               many seconds (default: no limit); --max-unit: skip levels whose stored time
 #               exceeds this (default: none)
-#   --cheap     the cheaper paths above; the budget, the order and the price then use each
+#   --cheap     the cheaper paths above for levels of more than 60 stored seconds (a cheaper
+#               level by its own path, at 1e-9; --cheap-above SECONDS moves the bound); the
+#               budget, the order and the price then use each
 #               level's estimated seconds by that path (cheap_s: Table 4.4's assembly plus its
 #               solve scaled by 15 iterations over its own count, the preconditioned solver's
 #               11-13 at every level measured, results/bench/pcg_*; a heat row's stored time,
@@ -41,13 +43,13 @@ export LC_ALL=C  # numbers are read and printed with '.' whatever the user's loc
 set -u
 # shellcheck source=tables/census_lib.sh
 . "$(cd "$(dirname "$0")/../.." && pwd)/tables/census_lib.sh"
-usage="usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS] [--cheap] [--dry-run] [FILE...]"
+usage="usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS] [--cheap [--cheap-above SECONDS]] [--dry-run] [FILE...]"
 [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
 build=$1 store=$2
 shift 2
 [ -x "$build/gpm" ] || { echo "verify_store_full.sh: $build/gpm not found; $usage" >&2; exit 2; }
 [ -d "$store" ] || { echo "verify_store_full.sh: $store is not a directory; $usage" >&2; exit 2; }
-log=$store/verified.log budget="" max_unit="" dry=0 cheap=0 only=()
+log=$store/verified.log budget="" max_unit="" dry=0 cheap=0 above=60 only=()
 while [ $# -gt 0 ]; do
   case $1 in
     --log) log=${2:?--log needs a file}; shift 2 ;;
@@ -55,11 +57,12 @@ while [ $# -gt 0 ]; do
     --max-unit) max_unit=${2:?--max-unit needs seconds}; shift 2 ;;
     --dry-run) dry=1; shift ;;
     --cheap) cheap=1; shift ;;
+    --cheap-above) above=${2:?--cheap-above needs seconds}; shift 2 ;;
     -*) echo "verify_store_full.sh: unknown option '$1'; $usage" >&2; exit 2 ;;
     *) only+=("$1"); shift ;;
   esac
 done
-for n in "$budget" "$max_unit"; do
+for n in "$budget" "$max_unit" "$above"; do
   [ -z "$n" ] || [[ $n =~ ^[0-9]+$ ]] || { echo "verify_store_full.sh: '$n' is not a whole number of seconds" >&2; exit 2; }
 done
 header="date	file	level	program	code	units	rows	max_rel_diff	verdict	seconds	stored_s	machine	path	seal"
@@ -87,7 +90,7 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
   if [ $cheap = 1 ] && [ "$prog" = thesis_table4_4 ] && [ $plain = 1 ]; then path="--solver tau"
   elif [ $cheap = 1 ] && [ "$prog" = thesis_heat ]; then
     path="--propagator auto$([ $plain = 1 ] && echo " --solver tau")"; fi
-  awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v code="$code" -v path="$path" '
+  awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v code="$code" -v path="$path" -v above="$above" '
     /^#/ { next }
     !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1
          t = ("seconds" in c) ? c["seconds"] : c["time_s"]; next }
@@ -98,7 +101,8 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
       if ("cg_iterations" in c) { its = $c["cg_iterations"]
         return its > 15 ? $c["assembly_s"] + $c["solve_s"] * 15 / its : $t }
       return $t }
-    END { for (k in s) printf "%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%.1f\n", file, k, program, args, code, s[k], path, e[k] }' "$f"
+    END { for (k in s) printf "%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%.1f\n", file, k, program, args, code, s[k],
+                             (s[k] > above ? path : "own"), (s[k] > above ? e[k] : s[k]) }' "$f"
 done < <("$build/gpm" study --store-rows) | sort -t$'\t' -k8,8g > "$todo"
 
 # Skip what the log already vouches for under the current code.
