@@ -1,17 +1,21 @@
 #!/usr/bin/env python3
 """The draw of make test's sampled store check (verify_sample.sh; issue 61, item 6).
 
-Every unit above its file's coarse levels whose stored time is at most --max-unit seconds has a
-known chance per run, p = min(1, tau / c), where c = overhead + slow * (stored seconds) is its
-predicted cost here and tau is set so that the expected cost of a run, sum p c, is the budget:
-a cheap unit is drawn often, an expensive one rarely, and every one of them sometimes.  Units
-above --max-unit have no chance in make test (one could outlast the suite); make
-verify-store-full recomputes them.  Whether a unit is drawn is decided by a hash of the seed
+Every unit above its file's coarse levels whose predicted time is at most --max-unit seconds
+has a known chance per run, p = min(1, tau / c), where c = overhead + slow * (predicted seconds)
+is its predicted cost here and tau is set so that the expected cost of a run, sum p c, is the
+budget: a cheap unit is drawn often, an expensive one rarely, and every one of them sometimes.
+A unit's predicted seconds are the cheaper of its stored time (its own path) and its cheaper
+path's prediction (verify_sample.sh), and it is recomputed by that path.  Units above
+--max-unit have no chance in make test (one could outlast the suite); make verify-store-full
+recomputes them.  Whether a unit is drawn is decided by a hash of the seed
 (the revision) and the unit, uniform in [0, 1) against p, so a revision's sample is fixed and
 successive revisions draw independently.
 
-stdin: verify_sample.sh's candidates (file, program, args, level, weight, stored s, thetas).
-stdout: the drawn units, same columns, in hash order.  stderr: one summary line.
+stdin: verify_sample.sh's candidates (file, program, args, level, weight, stored s, thetas,
+cheaper path's options or "-", its predicted s).
+stdout: the drawn units (file, program, args, level, weight, stored s, thetas, the path's
+options or "-" for its own), in hash order.  stderr: one summary line.
 --coverage N: instead of drawing, print the coverage per run and after N runs, expected from
 the chances and counted over N seeds (seed.1 … seed.N).
 """
@@ -52,12 +56,16 @@ def main():
         if not getattr(a, name) > 0:
             sys.exit("sample_draw.py: --%s %r must be positive" % (name.replace("_", "-"), getattr(a, name)))
 
-    units = []
+    units = []  # (the unit as drawn: its first 7 columns and its path, predicted seconds)
     for line in sys.stdin:
         f = line.rstrip("\n").split("\t")
         if len(f) < 7:
             continue
-        units.append((f, float(f[5])))
+        own = float(f[5])
+        if len(f) >= 9 and f[7] != "-" and float(f[8]) < own:
+            units.append((f[:7] + [f[7]], float(f[8])))
+        else:
+            units.append((f[:7] + ["-"], own))
     reach = [(f, a.overhead + a.slow * s) for f, s in units if s <= a.max_unit]
     tau = tau_for([c for _, c in reach], a.budget)
     chance = [(f, min(1.0, tau / c)) for f, c in reach]
@@ -75,7 +83,9 @@ def main():
             seen.update(drawn)
         cost_all = sum(s for _, s in units)
         cost_reach = sum(s for f, s in units if s <= a.max_unit)
-        print("units\t%d\nreachable\t%d\nreachable_stored_s\t%.0f\nall_stored_s\t%.0f" % (n_all, n_reach, cost_reach, cost_all))
+        by_path = sum(1 for f, s in units if s <= a.max_unit and f[7] != "-")
+        print("units\t%d\nreachable\t%d\nreachable_by_cheaper_path\t%d\nreachable_predicted_s\t%.0f\nall_predicted_s\t%.0f" % (
+            n_all, n_reach, by_path, cost_reach, cost_all))
         print("min_chance\t%.5f\nexpected_per_run\t%.1f\ncounted_per_run_mean\t%.1f" % (
             min((p for _, p in chance), default=0), expected, sum(per_run) / n))
         print("runs\t%d\nexpected_after_runs\t%.1f\ncounted_after_runs\t%d" % (n, exp_after, len(seen)))
@@ -85,7 +95,7 @@ def main():
     for _, f in drawn:
         sys.stdout.write("\t".join(f) + "\n")
     sys.stderr.write("%d of %d reachable units drawn (expected %.1f a run; every reachable unit's chance >= %.4f; "
-                     "%d units above %g stored s never drawn here)\n" % (
+                     "%d units above %g predicted s never drawn here)\n" % (
                          len(drawn), n_reach, expected, min((p for _, p in chance), default=0),
                          n_all - n_reach, a.max_unit))
 

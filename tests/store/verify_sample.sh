@@ -15,9 +15,17 @@
 # MAX_UNIT_S are never drawn here (one could outlast the suite): make verify-store-full
 # recomputes them.  A run that passes 3 BUDGET_S stops and says how many drawn units it left.
 #
+# A unit dearer than that by its own path may be reached by a cheaper, independent one (issue
+# 58 item 3, verify_store_full.sh --cheap): Table 4.4's plain-CG rows by the tau-preconditioned
+# solver (compared at 1e-6; predicted: assembly plus solve x 15 / its CG iterations), a heat
+# unit by the propagator with fewer products (compared at 1e-4 where a row's propagator is not
+# its own; predicted: what verified.log measured for its level by that path, shared among the
+# level's weights, else its stored time).  The draw prices each unit by the cheaper of the two.
+#
 # usage: verify_sample.sh BUILD_DIR STORE_DIR [BUDGET_S [MAX_UNIT_S]]   (defaults 60, 60)
 #   SAMPLE_SEED=text  draw the sample from this text instead of the revision;
-#   SAMPLE_UNITS="file:level[:weight] …"  recompute exactly these units (a test's choice);
+#   SAMPLE_UNITS="file:level[:weight[:cheap]] …"  recompute exactly these units (a test's choice;
+#                      ":cheap": by its cheaper path, "-" for a weight if it has none);
 #   SAMPLE_COVERAGE=N  recompute nothing: print the coverage per run and after N runs, expected
 #                      from the chances and counted over N seeds.
 export LC_ALL=C
@@ -33,7 +41,12 @@ seed=${SAMPLE_SEED:-$(git -C "$(dirname "$0")" rev-parse HEAD 2>/dev/null || ech
 listing=$("$build/gpm" study --store-rows) || { echo "verify_sample.sh: gpm study --store-rows failed" >&2; exit 2; }
 
 # Every candidate: file, program, args, level, weight ("-": the whole level), predicted s,
-# and of a heat unit the θ its rows hold ("-": all).
+# of a heat unit the θ its rows hold ("-": all), then the cheaper path's options ("-": none)
+# and its predicted s.
+# The seconds verify_store_full.sh measured per (file, level) by a path other than the own one
+# (its latest agreeing line), "file<TAB>level<TAB>seconds<TAB>path".
+measured=$(awk -F'\t' 'NR > 1 && $9 == "agree" && $13 != "own" { m[$2 "\t" $3] = $10 "\t" $13 }
+  END { for (k in m) print k "\t" m[k] }' "$store/verified.log" 2>/dev/null)
 candidates() {
   while IFS=$'\t' read -r _study file program args census coarse _slice; do
     [ -f "$store/$file.tsv" ] || continue  # (args stay "-" when empty: read merges two tabs)
@@ -43,23 +56,39 @@ candidates() {
     extra=$(census_options "$census")
     [ -n "$extra" ] && { [ "$args" = - ] && args=$extra || args="$args $extra"; }
     coarse=$(awk '{ for (i = 1; i < NF; i++) if ($i == "--levels") print $(i + 1) }' <<<"$coarse")
-    awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v coarse="$coarse" -v heat=$([ "$program" = thesis_heat ] && echo 1 || echo 0) '
+    # The cheaper path, as verify_store_full.sh --cheap takes it.
+    cheap=-
+    plain=$(grep -q '^# solver = ' "$store/$file.tsv" || echo 1)
+    if [ "$program" = thesis_table4_4 ] && [ -n "$plain" ]; then cheap="--solver tau"
+    elif [ "$program" = thesis_heat ]; then cheap="--propagator auto${plain:+ --solver tau}"; fi
+    { printf '%s\n' "$measured"; echo "==="; cat "$store/$file.tsv"; } |
+    awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v coarse="$coarse" -v cheap="$cheap" -v heat=$([ "$program" = thesis_heat ] && echo 1 || echo 0) '
       BEGIN { n = split(coarse, c, ","); for (i = 1; i <= n; i++) low[c[i]] = 1 }
+      !body { if ($0 == "===") body = 1; else if ($1 == file && $4 == cheap) by_path[$2] = $3; next }
       /^#/ { next }
       !h++ { for (i = 1; i <= NF; i++) col[$i] = i; t = ("seconds" in col) ? col["seconds"] : col["time_s"]; next }
       ($col["level"] in low) { next }
       { u = $col["level"] "\t" (heat ? $col["weight"] : "-")
-        if (!((u, $t) in seen)) { seen[u, $t] = 1; cost[u] += $t }
+        if (!((u, $t) in seen)) { seen[u, $t] = 1; cost[u] += $t; fast[u] += faster() }
+        if (!(($col["level"], u) in in_level)) { in_level[$col["level"], u] = 1; units[$col["level"]]++ }
         if (heat && !((u, $col["theta"]) in th)) { th[u, $col["theta"]] = 1; thetas[u] = thetas[u] (thetas[u] == "" ? "" : ",") $col["theta"] } }
-      END { for (u in cost) printf "%s\t%s\t%s\t%s\t%.3f\t%s\n", file, program, args, u, cost[u], heat ? thetas[u] : "-" }' "$store/$file.tsv"
+      function faster(   its) {
+        if (cheap == "-") return $t
+        if ("cg_iterations" in col) { its = $col["cg_iterations"]
+          return its > 15 ? $col["assembly_s"] + $col["solve_s"] * 15 / its : $t }
+        return $t }
+      END { for (u in cost) { split(u, lw, "\t")
+              if (lw[1] in by_path) fast[u] = by_path[lw[1]] / units[lw[1]]
+              printf "%s\t%s\t%s\t%s\t%.3f\t%s\t%s\t%.3f\n", file, program, args, u, cost[u], heat ? thetas[u] : "-", cheap, fast[u] } }'
   done <<<"$listing"
 }
 all=$(candidates)
 total=$(grep -c . <<<"$all")
 if [ -n "${SAMPLE_UNITS:-}" ]; then
   chosen=$(for u in $SAMPLE_UNITS; do
-    IFS=: read -r f l w <<<"$u"
-    awk -F'\t' -v f="$f" -v l="$l" -v w="${w:--}" '$1 == f && $4 == l && $5 == w' <<<"$all"
+    IFS=: read -r f l w how <<<"$u"
+    awk -F'\t' -v OFS='\t' -v f="$f" -v l="$l" -v w="${w:--}" -v how="${how:-}" '
+      $1 == f && $4 == l && $5 == w { p = how == "cheap" ? $8 : "-"; NF = 7; print $0, p }' <<<"$all"
   done)
   [ -n "$chosen" ] || { echo "verify_sample.sh: no stored unit matches SAMPLE_UNITS='$SAMPLE_UNITS'" >&2; exit 2; }
 elif [ -n "${SAMPLE_COVERAGE:-}" ]; then
@@ -74,7 +103,7 @@ else
   echo "sample of ${seed:0:12} among the $total units above the coarse levels: $drew"
 fi
 failed=0 start=$SECONDS n=0
-while IFS=$'\t' read -r file program args level weight cost thetas; do
+while IFS=$'\t' read -r file program args level weight cost thetas path; do
   [ -n "$file" ] || continue
   if [ -z "${SAMPLE_UNITS:-}" ] && [ $((SECONDS - start)) -ge $((3 * budget)) ]; then
     echo "sample cut at 3 x ${budget} s: $(($(grep -c . <<<"$chosen") - n)) drawn units not recomputed"; break
@@ -84,12 +113,14 @@ while IFS=$'\t' read -r file program args level weight cost thetas; do
   sel=(--levels "$level")
   [ "$weight" != - ] && sel+=(--weights "$weight")
   [ "$thetas" != - ] && sel+=(--thetas "$thetas")  # the θ the file holds (some units hold θ = 0 only)
+  [ "${path:--}" != - ] && read -ra more <<<"$path" && sel+=("${more[@]}")  # the cheaper path
   t0=$SECONDS
   # shellcheck disable=SC2086  # the registry's arguments are words
   out=$("$build/$program" $args "${sel[@]}" --profile paper --out "$store/$file.tsv" --verify 2>&1)
   rc=$?
   summary=$(grep -m1 '^\[store\] verify' <<<"$out" | sed 's/.*max relative/max relative/')
-  printf '  %-44s level %-3s %-30s stored %6.1f s, now %3d s: %s\n' "$file" "$level" "$weight" "$cost" $((SECONDS - t0)) "${summary:-exit $rc}"
+  printf '  %-44s level %-3s %-30s stored %6.1f s, now %3d s%s: %s\n' "$file" "$level" "$weight" "$cost" $((SECONDS - t0)) \
+    "$([ "${path:--}" != - ] && echo " by $path")" "${summary:-exit $rc}"
   if [ $rc -ne 0 ]; then failed=$((failed + 1)); grep '\[store\]   differs\|error' <<<"$out" | head -3 | sed 's/^/     /'; fi
 done <<<"$chosen"
 echo "sampled check: $n units recomputed in $((SECONDS - start)) s, $failed differ"
