@@ -114,114 +114,140 @@ void write_printed_pi3(const std::vector<std::pair<std::string, std::string>>& p
   t.save(path);
 }
 
-int body(int argc, char** argv) {
-  StudyRunner run(study_registry().study("imoto_fig5_table1"),
-                  "imoto Sec. 5: relative l-inf errors of the interpolant, gradient and Laplacian\n"
-                  "(weights Pi1-3, Grad1-3, Lap1-3; m = 1, 3, 5; v = sin(2pi(x+y)); V_i = |Omega_H|/N)\n"
-                  "per level, all nine weights in one fused pass per (level, m).  Data of Figure 5\n"
-                  "and Table 1.  Finished (level, m) units are cached in --out.");
-  Args& args = run.args();
-  args.opt("jitter", "0.25", "jitter amplitude in units of dx, in [0, 0.5); 0 = the plain grid,\n"
-                             "  whose error is the smoothing part without particle noise")
-      .output("printed-out", "", "optional TSV: (Pi3) with the printed constant 5/pi")
-      .opt("printed-max-level", "8", "finest level of the --printed-out check")
-      .opt("volumes", "lattice", "lattice: V_i = |Omega_H|/N as in imoto Sec. 5; cell: V_i = dx^2, the\n"
-                                 "  delta-free error (with uniform V every operator scales by |Omega_H|/(N dx^2))");
-  run.parse(argc, argv);
-  const Profile profile = run.profile();
-  const std::vector<int> levels = run.levels();
-  const uint64_t seed = run.seed();
-  const double jitter = args.num("jitter");
-  if (!(jitter >= 0 && jitter < 0.5))
-    throw InputError("--jitter: " + args.str("jitter") + " is not in [0, 0.5)");
-  // The default's header text is kept as it was, so stored rows stay comparable.
-  const std::string jitter_text =
-      jitter == 0.25 ? "|eta| < 1/4, counter-based hash of (seed,i,j), mirrored at the edge"
-      : jitter == 0  ? "none: the plain grid (iΔx, jΔx)"
-                     : "|eta| < " + fmt(jitter) + ", counter-based hash of (seed,i,j), mirrored at the edge";
-  const long long printed_max = args.integer("printed-max-level", 3, 13);
-  const PdeVolumes volumes = parse_pde_volumes(args.str("volumes"));
+// The program: the options read once; run() opens the cached data file, states the work to
+// do, computes every (level, m) unit it lacks and, if asked, the (Π3) constant check.
+class ImotoFig5 {
+ public:
+  ImotoFig5(int argc, char** argv)
+      : run_(study_registry().study("imoto_fig5_table1"),
+             "imoto Sec. 5: relative l-inf errors of the interpolant, gradient and Laplacian\n"
+             "(weights Pi1-3, Grad1-3, Lap1-3; m = 1, 3, 5; v = sin(2pi(x+y)); V_i = |Omega_H|/N)\n"
+             "per level, all nine weights in one fused pass per (level, m).  Data of Figure 5\n"
+             "and Table 1.  Finished (level, m) units are cached in --out.") {
+    Args& args = run_.args();
+    args.opt("jitter", "0.25", "jitter amplitude in units of dx, in [0, 0.5); 0 = the plain grid,\n"
+                               "  whose error is the smoothing part without particle noise")
+        .output("printed-out", "", "optional TSV: (Pi3) with the printed constant 5/pi")
+        .opt("printed-max-level", "8", "finest level of the --printed-out check")
+        .opt("volumes", "lattice", "lattice: V_i = |Omega_H|/N as in imoto Sec. 5; cell: V_i = dx^2, the\n"
+                                   "  delta-free error (with uniform V every operator scales by |Omega_H|/(N dx^2))");
+    run_.parse(argc, argv);
+    seed_ = run_.seed();
+    jitter_ = args.num("jitter");
+    if (!(jitter_ >= 0 && jitter_ < 0.5))
+      throw InputError("--jitter: " + args.str("jitter") + " is not in [0, 0.5)");
+    printed_max_ = args.integer("printed-max-level", 3, 13);
+    volumes_ = parse_pde_volumes(args.str("volumes"));
+  }
 
+  int run() {
+    open_data_file();
+    expect_work();
+    for (const StudyUnit& u : units_) unit(u);
+    if (!run_.finish()) return 0;
+    printed_check();
+    return 0;
+  }
+
+ private:
   // The data file's parameters: a stored row is reused only if all of these agree.
-  const Domain dom;
-  std::vector<std::pair<std::string, std::string>> params = {
-      {"program", "imoto_fig5_table1"},
-      {"document", "imoto-generalized-particle-method Sec. 5, Figure 5, Table 1"},
-      {"seed", fmt(static_cast<long long>(seed))},
-      {"function", "sin(2 pi (x+y))"},
-      // The default's header text is kept as it was, so stored rows stay comparable.
-      {"volumes", volumes == PdeVolumes::lattice ? "V_i = |Omega_H|/N" : "V_i = dx^2 (the delta-free reading)"},
-      {"h", "h_N = 2.6 * 2^(5/m-5) * dx^(1/m)"},
-      {"H", fmt(dom.H)},
-      {"jitter", jitter_text},
-      {"norm", "relative l-inf over particles in Omega; denominators: discrete maxima; "
-               "gradient: |.| the Euclidean length of the vector"},
-      {"Pi3_constant", "6/pi (printed 5/pi does not normalize)"},
-      {"time_s_note", "wall time of the whole (level, m) unit: particles, kernel, errors"},
-      {"smoothing_part", "interpolant only: (M2/4)*8pi^2*h^2, M2 = int |x|^2 w dx (no particles)"}};
-  UnitCache& cache = run.open(params, 2);
-  cache.table().set("profile", profile_name(profile));
+  void open_data_file() {
+    // The default's header text is kept as it was, so stored rows stay comparable.
+    const std::string jitter_text =
+        jitter_ == 0.25 ? "|eta| < 1/4, counter-based hash of (seed,i,j), mirrored at the edge"
+        : jitter_ == 0  ? "none: the plain grid (iΔx, jΔx)"
+                        : "|eta| < " + fmt(jitter_) + ", counter-based hash of (seed,i,j), mirrored at the edge";
+    params_ = {
+        {"program", "imoto_fig5_table1"},
+        {"document", "imoto-generalized-particle-method Sec. 5, Figure 5, Table 1"},
+        {"seed", fmt(static_cast<long long>(seed_))},
+        {"function", "sin(2 pi (x+y))"},
+        // The default's header text is kept as it was, so stored rows stay comparable.
+        {"volumes", volumes_ == PdeVolumes::lattice ? "V_i = |Omega_H|/N" : "V_i = dx^2 (the delta-free reading)"},
+        {"h", "h_N = 2.6 * 2^(5/m-5) * dx^(1/m)"},
+        {"H", fmt(dom_.H)},
+        {"jitter", jitter_text},
+        {"norm", "relative l-inf over particles in Omega; denominators: discrete maxima; "
+                 "gradient: |.| the Euclidean length of the vector"},
+        {"Pi3_constant", "6/pi (printed 5/pi does not normalize)"},
+        {"time_s_note", "wall time of the whole (level, m) unit: particles, kernel, errors"},
+        {"smoothing_part", "interpolant only: (M2/4)*8pi^2*h^2, M2 = int |x|^2 w dx (no particles)"}};
+    cache_ = &run_.open(params_, 2);
+    cache_->table().set("profile", profile_name(run_.profile()));
+  }
 
   // The units: the registry's, one per (level, m), level by level.  Work still to do, for
   // the overall ETA: the plan's pair estimate (cost_model.hpp).
-  const std::vector<StudyUnit> units = run.units();
-  const std::size_t nw = kStudy.weights.size();
-  double total = 0;
-  for (const StudyUnit& u : units)
-    if (!cache.has(u.key, nw)) total += predicted_pairs(std::ldexp(1.0, -u.level), u.h);
-  run.expect(total, "pairs");
+  void expect_work() {
+    units_ = run_.units();
+    double total = 0;
+    for (const StudyUnit& u : units_)
+      if (!cache_->has(u.key, kStudy.weights.size())) total += predicted_pairs(std::ldexp(1.0, -u.level), u.h);
+    run_.expect(total, "pairs");
+  }
 
-  const std::vector<ErrorRequest> requests = kStudy.requests();
-
-  // The loop over the units (on a cluster every rank takes a share of each): one particle
-  // set per level, made for its first unit still to do and shared by its m.
-  int built = 0;
-  Particles p;
-  std::vector<double> V;
-  for (const StudyUnit& u : units) {
-    if (cache.has(u.key, nw) || !run.claim_shared()) continue;
+  // One unit (on a cluster every rank takes a share of it): the level's particle set, made
+  // for its first unit still to do and shared by its m; all nine weights in one pass over
+  // the particle pairs within h_N.
+  void unit(const StudyUnit& u) {
+    const std::size_t nw = kStudy.weights.size();
+    if (cache_->has(u.key, nw) || !run_.claim_shared()) return;
     const int level = u.level;
     const double dx = std::ldexp(1.0, -level), m = parse_number(u.key[1], "m"), h = u.h;
-    if (built != level) {
-      p = jittered_grid(dx, seed, jitter, dom);
-      V = pde_volumes(volumes, p, dx, dom);
-      built = level;
+    if (built_ != level) {
+      p_ = jittered_grid(dx, seed_, jitter_, dom_);
+      V_ = pde_volumes(volumes_, p_, dx, dom_);
+      built_ = level;
     }
-    // All nine weights in one pass over the particle pairs within h_N.
+    const std::vector<ErrorRequest> requests = kStudy.requests();
     const Stopwatch wall;
-    const ErrorMaxima maxima = run.shared_pass("level" + fmt(level) + "_m" + fmt(m), [&](TargetShare s) {
-      return fused_error_maxima(p, V, h, requests, {kStudy.function}, true, s);
+    const ErrorMaxima maxima = run_.shared_pass("level" + fmt(level) + "_m" + fmt(m), [&](TargetShare s) {
+      return fused_error_maxima(p_, V_, h, requests, {kStudy.function}, true, s);
     });
     const FusedErrors e = relative_errors(maxima, requests, {kStudy.function});
-    const double secs =
-        wall.seconds();
+    const double secs = wall.seconds();
     for (std::size_t r = 0; r < nw; ++r) {
       const ImotoWeight& w = kStudy.weights[r];
-      TsvRow row = run.row();  // the catalog's columns (imoto_study().columns), by name
+      TsvRow row = run_.row();  // the catalog's columns (imoto_study().columns), by name
       row["level"] = fmt(level), row["m"] = fmt(m), row["operator"] = w.op_label;
-      row["weight"] = w.weight, row["dx"] = fmt(dx), row["h"] = fmt(h), row["N"] = fmt(p.size());
-      row["N_in_omega"] = fmt(p.count_in_omega()), row["pairs"] = fmt(e.pairs);
+      row["weight"] = w.weight, row["dx"] = fmt(dx), row["h"] = fmt(h), row["N"] = fmt(p_.size());
+      row["N_in_omega"] = fmt(p_.count_in_omega()), row["pairs"] = fmt(e.pairs);
       row["rel_error"] = fmt(e.errors[r].rel_error);
       // The smoothing part is known in closed form for the interpolant only.
       row["smoothing_part"] = w.op == Operator::interp ? fmt(interp_smoothing_error(w.weight, h)) : "NA";
       row["time_s"] = fmt(secs), row["kernel_s"] = fmt(e.kernel_seconds);
-      run.add(row);
+      run_.add(row);
     }
-    run.unit_done(predicted_pairs(dx, h),
-                  line_printf("level %d m=%g N=%zu h=%.4g pairs=%.3g %.2fs (%.3g pairs/s)  "
-                              "Pi1 %.3g Grad1 %.3g Lap1 %.3g",
-                              level, m, p.size(), h, e.pairs, secs, e.pairs / e.kernel_seconds,
-                              e.errors[0].rel_error, e.errors[3].rel_error,
-                              e.errors[6].rel_error));
+    run_.unit_done(predicted_pairs(dx, h),
+                   line_printf("level %d m=%g N=%zu h=%.4g pairs=%.3g %.2fs (%.3g pairs/s)  "
+                               "Pi1 %.3g Grad1 %.3g Lap1 %.3g",
+                               level, m, p_.size(), h, e.pairs, secs, e.pairs / e.kernel_seconds,
+                               e.errors[0].rel_error, e.errors[3].rel_error, e.errors[6].rel_error));
   }
-  if (!run.finish()) return 0;
 
   // Side report: the printed (Π3) constant.  (The paper profile's cost is the plan's.)
-  if (!args.str("printed-out").empty())
-    write_printed_pi3(params, profile, levels, printed_max, seed, jitter, dom,
-                      args.str("printed-out"));
-  return 0;
-}
+  void printed_check() {
+    const std::string path = run_.args().str("printed-out");
+    if (!path.empty())
+      write_printed_pi3(params_, run_.profile(), run_.levels(), printed_max_, seed_, jitter_, dom_, path);
+  }
+
+  StudyRunner run_;
+  uint64_t seed_ = 1;
+  double jitter_ = 0.25;
+  long long printed_max_ = 8;
+  PdeVolumes volumes_ = PdeVolumes::lattice;
+  const Domain dom_;
+  std::vector<std::pair<std::string, std::string>> params_;
+  UnitCache* cache_ = nullptr;
+  std::vector<StudyUnit> units_;
+  // The particle set of the level last computed, and its volumes.
+  int built_ = 0;
+  Particles p_;
+  std::vector<double> V_;
+};
+
+int body(int argc, char** argv) { return ImotoFig5(argc, argv).run(); }
 
 }  // namespace
 

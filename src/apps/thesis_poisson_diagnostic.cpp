@@ -34,6 +34,7 @@
 #include "gpm/solvers/poisson_probes.hpp"
 #include "gpm/studies/define/catalog.hpp"
 #include "gpm/studies/define/profile.hpp"
+#include "gpm/studies/define/registry.hpp"
 #include "gpm/studies/run/runner.hpp"
 #include "gpm/theory/smoothing.hpp"
 #include "gpm/weights/weights.hpp"
@@ -61,86 +62,117 @@ Consistency measured_consistency(const DiscreteLaplacian& L, const PoissonData& 
   return {num / den, tmax / lmax};
 }
 
-int body(int argc, char** argv) {
+// The program: the options read once; run() opens the cached data file and solves every
+// registered unit (level, particle set, reading of h, weight) it lacks, among the weights and
+// particle sets asked for.
+class PoissonDiagnostic {
+ public:
   // No --seed: the particle sets are the study's own variants (seeds 1-3, the plain grid).
-  StudyRunner run("thesis_poisson_diagnostic",
-                  "Table 4.4 diagnostics: the Poisson error per reading of h, weight, level and particle\n"
-                  "set (seeds 1-3, plain grid), where its maximum sits, and the error away from the boundary.",
-                  poisson_diagnostic().levels.help(), StudyRunner::Kind::units_without_seed);
-  Args& a = run.args();
-  a.opt("weights", join(pde_weights(), ","), "comma-separated registry weights")
-      .opt("variants", join(poisson_diagnostic().variant_names(), ","),
-           "comma-separated particle sets (seedN: jitter 1/4 dx; plain: none; _cell: V_i = dx^2)")
-      .opt("tol", "1e-10", "CG relative residual on the symmetric form");
-  run.parse(argc, argv);
-  const std::vector<int> levels = run.levels(poisson_diagnostic().levels.quick, poisson_diagnostic().levels.paper);
-  const double tol = a.tolerance("tol");
-  const auto weights = a.list("weights");
-  for (auto& w : weights) weight(w);  // InputError naming an unknown weight, before any work
-  // The particle sets (the catalog's, poisson_diagnostic()): an unknown name is refused here.
-  std::vector<ParticleSet> variants;
-  for (auto& name : a.list("variants")) variants.push_back(poisson_diagnostic().variant(name));
-
-  // --- The data file: one row per (reading of h, weight, level, particle set). -------------
-  UnitCache& cache = run.open(
-      {{"program", "thesis_poisson_diagnostic"}, {"profile", profile_name(run.profile())},
-       {"tol", fmt(tol)}, {"function", "sin2pi"}, {"volumes", "uniform |Omega_H|/N"},
-       {"h10", pde_h_formula(HRule::h10)}, {"h15", pde_h_formula(HRule::h15)},
-       {"variants", "seed1, seed2, seed3: jitter 1/4 dx; plain: jitter 0; "
-                    "_cell: V_i = dx^2 instead of |Omega_H|/N"},
-       {"rel_error_inner", "max over particles at least h from the boundary of Omega"},
-       {"volume_mismatch", "V_i/dx^2 - 1"},
-       {"eps_smoothing", "smoothing error eps(kh), k = 2 pi sqrt 2 (gpm smoothing)"},
-       {"tau_predicted", "(V_i/dx^2)(1 - eps) - 1"},
-       {"tau_fit", "sum tau_i lap_i / sum lap_i^2 over Omega, tau = lap_h u - lap u"},
-       {"tau_max", "max |tau_i| / max |lap u| over Omega"}},
-      poisson_diagnostic().columns, 4);
-  const TestFunction& u = test_function("sin2pi");
-  const Domain dom;
-  for (int k : levels) {
-    const double dx = std::ldexp(1.0, -k);
-    for (const auto& var : variants) {
-      // One particle set per (level, variant), shared by every reading and weight.
-      const Particles p = jittered_grid(dx, var.seed, var.jitter, dom);
-      const auto V = pde_volumes(var.volumes, p, dx, dom);
-      const double mismatch = V.front() / (dx * dx) - 1;
-      const PoissonData d = poisson_data(p, u);
-      for (HRule rule_id : pde_h_rules()) {
-        const double h = pde_h(rule_id, dx);
-        const std::string rule = h_rule_name(rule_id);  // the data file's h_rule
-        for (const auto& w : weights) {
-          if (cache.has({rule, w, fmt(k), var.name}) || !run.claim()) continue;
-          const auto t0 = std::chrono::steady_clock::now();
-          const DiscreteLaplacian L(p, V, weight(w), h, LaplacianStorage::automatic);
-          const Consistency tau = measured_consistency(L, d);
-          const double eps = laplacian_smoothing_error(weight(w), kSin2piWaveNumber * h);
-          const PoissonResult r = solve_poisson(p, L, d.f, d.g, tol);
-          const ErrorLocation e = locate_error(p, d.g, r.U, h);
-          const double secs =
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-          TsvRow row = run.row();
-          row["h_rule"] = rule, row["weight"] = w, row["level"] = fmt(k), row["variant"] = var.name;
-          row["dx"] = fmt(dx), row["h"] = fmt(h), row["h_over_H"] = fmt(h / dom.H);
-          row["N_omega"] = fmt(L.n_unknowns()), row["rel_error"] = fmt(e.rel_error);
-          row["max_x"] = fmt(e.x), row["max_y"] = fmt(e.y);
-          row["max_distance_over_h"] = fmt(e.distance_to_boundary / h);
-          row["rel_error_inner"] = fmt(e.rel_error_inner), row["volume_mismatch"] = fmt(mismatch);
-          row["eps_smoothing"] = fmt(eps), row["tau_predicted"] = fmt((1 + mismatch) * (1 - eps) - 1);
-          row["tau_fit"] = fmt(tau.fit), row["tau_max"] = fmt(tau.max);
-          row["cg_iterations"] = fmt(r.cg.iterations), row["seconds"] = fmt(secs);
-          run.add(row);
-          run.unit_done(0, line_printf("%s %-28s 2^-%d %-5s err=%.4e at (%.3f, %.3f) %.2f h from the "
-                                       "boundary; inner %.4e; tau fit %+.4e predicted %+.4e  %.1f s",
-                                       rule.c_str(), w.c_str(), k, var.name.c_str(), e.rel_error, e.x, e.y,
-                                       e.distance_to_boundary / h, e.rel_error_inner, tau.fit,
-                                       (1 + mismatch) * (1 - eps) - 1, secs));
-        }
-      }
-    }
+  PoissonDiagnostic(int argc, char** argv)
+      : run_(study_registry().study("thesis_poisson_diagnostic"),
+             "Table 4.4 diagnostics: the Poisson error per reading of h, weight, level and particle\n"
+             "set (seeds 1-3, plain grid), where its maximum sits, and the error away from the boundary.") {
+    Args& a = run_.args();
+    a.opt("weights", join(pde_weights(), ","), "comma-separated registry weights")
+        .opt("variants", join(poisson_diagnostic().variant_names(), ","),
+             "comma-separated particle sets (seedN: jitter 1/4 dx; plain: none; _cell: V_i = dx^2)")
+        .opt("tol", "1e-10", "CG relative residual on the symmetric form");
+    run_.parse(argc, argv);
+    tol_ = a.tolerance("tol");
+    weights_ = a.list("weights");
+    for (auto& w : weights_) weight(w);  // InputError naming an unknown weight, before any work
+    // The particle sets (the catalog's, poisson_diagnostic()): an unknown name is refused here.
+    for (auto& name : a.list("variants")) variants_.push_back(poisson_diagnostic().variant(name));
   }
-  run.finish();
-  return 0;
-}
+
+  int run() {
+    open_data_file();
+    for (const StudyUnit& unit : run_.units()) solve(unit);
+    run_.finish();
+    return 0;
+  }
+
+ private:
+  // The data file: one row per (reading of h, weight, level, particle set).
+  void open_data_file() {
+    cache_ = &run_.open(
+        {{"program", "thesis_poisson_diagnostic"}, {"profile", profile_name(run_.profile())},
+         {"tol", fmt(tol_)}, {"function", "sin2pi"}, {"volumes", "uniform |Omega_H|/N"},
+         {"h10", pde_h_formula(HRule::h10)}, {"h15", pde_h_formula(HRule::h15)},
+         {"variants", "seed1, seed2, seed3: jitter 1/4 dx; plain: jitter 0; "
+                      "_cell: V_i = dx^2 instead of |Omega_H|/N"},
+         {"rel_error_inner", "max over particles at least h from the boundary of Omega"},
+         {"volume_mismatch", "V_i/dx^2 - 1"},
+         {"eps_smoothing", "smoothing error eps(kh), k = 2 pi sqrt 2 (gpm smoothing)"},
+         {"tau_predicted", "(V_i/dx^2)(1 - eps) - 1"},
+         {"tau_fit", "sum tau_i lap_i / sum lap_i^2 over Omega, tau = lap_h u - lap u"},
+         {"tau_max", "max |tau_i| / max |lap u| over Omega"}},
+        4);
+  }
+
+  // A particle set per (level, variant), shared by every reading and weight, made for the
+  // first of its units still to compute.
+  void particle_set(int k, const ParticleSet& var) {
+    if (k == level_ && var.name == variant_) return;
+    const double dx = std::ldexp(1.0, -k);
+    p_ = jittered_grid(dx, var.seed, var.jitter, dom_);
+    V_ = pde_volumes(var.volumes, p_, dx, dom_);
+    d_ = poisson_data(p_, test_function("sin2pi"));
+    level_ = k, variant_ = var.name;
+  }
+
+  // One unit (the registry's key: h rule, weight, level, particle set): the Laplacian, its
+  // consistency on u, the CG solve and where the error sits.
+  void solve(const StudyUnit& unit) {
+    const std::string &rule = unit.key[0], &w = unit.key[1], &vname = unit.key[3];
+    if (std::find(weights_.begin(), weights_.end(), w) == weights_.end()) return;
+    const auto var = std::find_if(variants_.begin(), variants_.end(),
+                                  [&](const ParticleSet& v) { return v.name == vname; });
+    if (var == variants_.end() || cache_->has(unit.key) || !run_.claim()) return;
+    const int k = unit.level;
+    const double dx = std::ldexp(1.0, -k), h = unit.h;
+    particle_set(k, *var);
+    const double mismatch = V_.front() / (dx * dx) - 1;
+    const auto t0 = std::chrono::steady_clock::now();
+    const DiscreteLaplacian L(p_, V_, weight(w), h, LaplacianStorage::automatic);
+    const Consistency tau = measured_consistency(L, d_);
+    const double eps = laplacian_smoothing_error(weight(w), kSin2piWaveNumber * h);
+    const PoissonResult r = solve_poisson(p_, L, d_.f, d_.g, tol_);
+    const ErrorLocation e = locate_error(p_, d_.g, r.U, h);
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    TsvRow row = run_.row();
+    row["h_rule"] = rule, row["weight"] = w, row["level"] = fmt(k), row["variant"] = vname;
+    row["dx"] = fmt(dx), row["h"] = fmt(h), row["h_over_H"] = fmt(h / dom_.H);
+    row["N_omega"] = fmt(L.n_unknowns()), row["rel_error"] = fmt(e.rel_error);
+    row["max_x"] = fmt(e.x), row["max_y"] = fmt(e.y);
+    row["max_distance_over_h"] = fmt(e.distance_to_boundary / h);
+    row["rel_error_inner"] = fmt(e.rel_error_inner), row["volume_mismatch"] = fmt(mismatch);
+    row["eps_smoothing"] = fmt(eps), row["tau_predicted"] = fmt((1 + mismatch) * (1 - eps) - 1);
+    row["tau_fit"] = fmt(tau.fit), row["tau_max"] = fmt(tau.max);
+    row["cg_iterations"] = fmt(r.cg.iterations), row["seconds"] = fmt(secs);
+    run_.add(row);
+    run_.unit_done(0, line_printf("%s %-28s 2^-%d %-5s err=%.4e at (%.3f, %.3f) %.2f h from the "
+                                  "boundary; inner %.4e; tau fit %+.4e predicted %+.4e  %.1f s",
+                                  rule.c_str(), w.c_str(), k, vname.c_str(), e.rel_error, e.x, e.y,
+                                  e.distance_to_boundary / h, e.rel_error_inner, tau.fit,
+                                  (1 + mismatch) * (1 - eps) - 1, secs));
+  }
+
+  StudyRunner run_;
+  double tol_ = 0;
+  std::vector<std::string> weights_;
+  std::vector<ParticleSet> variants_;
+  const Domain dom_;
+  UnitCache* cache_ = nullptr;
+  // The particle set of the last unit computed (level, variant), its volumes and data.
+  int level_ = 0;
+  std::string variant_;
+  Particles p_;
+  std::vector<double> V_;
+  PoissonData d_;
+};
+
+int body(int argc, char** argv) { return PoissonDiagnostic(argc, argv).run(); }
 
 }  // namespace
 
