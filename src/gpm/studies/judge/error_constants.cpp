@@ -11,6 +11,7 @@
 #include "gpm/io/text_format.hpp"
 #include "gpm/studies/define/heat_tables.hpp"
 #include "gpm/studies/define/registry.hpp"
+#include "gpm/studies/judge/evidence.hpp"
 #include "gpm/studies/judge/heat_mode_model.hpp"
 #include "gpm/studies/judge/mode_constants.hpp"
 #include "gpm/studies/judge/rates.hpp"
@@ -115,8 +116,8 @@ void add_series(ErrorConstants& out, const Label& label, const Realized& reals) 
   const double p = theoretical_rate(label.theory_text);
   if (!std::isfinite(p) || !reals.count(1)) return;
   // Every point's constant, model constant and relative excess.
-  auto constant = [&](const Point& pt) { return pt.error / std::pow(pt.h, p); };
-  auto model = [&](const Point& pt) { return pt.predicted / std::pow(pt.h, p); };
+  auto constant = [&](const Point& pt) { return error_constant({pt.h, pt.error}, p); };
+  auto model = [&](const Point& pt) { return error_constant({pt.h, pt.predicted}, p); };
   auto excess = [&](const Point& pt) { return std::fabs(pt.error / pt.predicted - 1); };
   for (const auto& [seed, levels] : reals)
     for (const auto& [k, pt] : levels) {

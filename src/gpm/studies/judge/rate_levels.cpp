@@ -10,6 +10,7 @@
 #include "gpm/error.hpp"
 #include "gpm/io/text_format.hpp"
 #include "gpm/studies/define/heat_tables.hpp"
+#include "gpm/studies/judge/evidence.hpp"
 #include "gpm/studies/judge/rates.hpp"
 #include "gpm/studies/define/registry.hpp"
 #include "gpm/studies/judge/verdicts.hpp"  // seed_files
@@ -77,29 +78,6 @@ TrendFinding judge_trend(const std::vector<double>& rates, double theory, bool f
 
 namespace {
 
-// A series' finite errors by level: level → (h, error).
-using Series = std::map<int, std::pair<double, double>>;
-// A file's series by key: (weight, θ) for the heat tables, (h rule, weight) for Table 4.4.
-using SeriesMap = std::map<std::pair<std::string, std::string>, Series>;
-
-SeriesMap series_of(const TsvTable& t, const std::string& key1, const std::string& key2) {
-  SeriesMap out;
-  const int c1 = t.require_column(key1), c2 = t.require_column(key2), cl = t.require_column("level"),
-            ch = t.require_column("h"), ce = t.require_column("rel_error");
-  for (std::size_t i = 0; i < t.rows.size(); ++i) {
-    const double e = t.number(i, ce);
-    if (!std::isfinite(e) || e <= 0) continue;
-    out[{t.text(i, c1), t.text(i, c2)}][static_cast<int>(t.integer(i, cl))] = {t.number(i, ch), e};
-  }
-  return out;
-}
-
-double rate_between(const Series& s, int lo, int hi) {
-  const auto a = s.find(lo), b = s.find(hi);
-  if (a == s.end() || b == s.end()) return std::numeric_limits<double>::quiet_NaN();
-  return std::log(a->second.second / b->second.second) / std::log(a->second.first / b->second.first);
-}
-
 const TsvTable& stored_or_refuse(const StoreSnapshot& store, const std::string& name) {
   if (!store.has(name)) throw InputError("rate levels: the store has no " + store.path(name));
   return store.table(name, false);
@@ -107,14 +85,14 @@ const TsvTable& stored_or_refuse(const StoreSnapshot& store, const std::string& 
 
 // The series of a store file and of its stored jitter realizations (`<file>_seedN`).
 struct Realizations {
-  SeriesMap seed1;
-  std::vector<SeriesMap> others;
+  EvidenceSeriesMap seed1;
+  std::vector<EvidenceSeriesMap> others;
 };
 Realizations realizations(const StoreSnapshot& store, const RegisteredStudy& study, const StoreFile& file,
                           const std::string& key1, const std::string& key2) {
-  Realizations r{series_of(stored_or_refuse(store, file.name + ".tsv"), key1, key2), {}};
+  Realizations r{read_series(stored_or_refuse(store, file.name + ".tsv"), {key1, key2}), {}};
   for (const StoreFile* f : seed_files(study, file.slice))
-    if (store.has(f->name + ".tsv")) r.others.push_back(series_of(store.table(f->name + ".tsv", false), key1, key2));
+    if (store.has(f->name + ".tsv")) r.others.push_back(read_series(store.table(f->name + ".tsv", false), {key1, key2}));
   return r;
 }
 
@@ -129,10 +107,10 @@ struct SeriesLabel {
 // over the realizations holding both levels) and its finding.  `doc`: the documents' pair of
 // levels (documents_levels).
 void add_series(RateLevels& out, const SeriesLabel& label, const Realizations& reals,
-                const std::pair<std::string, std::string>& key, const std::pair<int, int>& doc) {
+                const std::vector<std::string>& key, const std::pair<int, int>& doc) {
   const auto it = reals.seed1.find(key);
   if (it == reals.seed1.end()) return;
-  const Series& s = it->second;
+  const EvidenceSeries& s = it->second;
   // The theory's rate, or none where the document gives a word ("unstable": Table 4.6's
   // explicit series, whose growth is the set-up fingerprint, not a rate).
   const double theory = theoretical_rate(label.theory_text);
@@ -143,14 +121,14 @@ void add_series(RateLevels& out, const SeriesLabel& label, const Realizations& r
   FinestBand band;
   for (std::size_t i = 0; i + 1 < levels.size(); ++i) {
     const int lo = levels[i], hi = levels[i + 1];
-    const double r = rate_between(s, lo, hi);
+    const double r = series_rate(s, lo, hi);
     rates.push_back(r);
     double blo = r, bhi = r;
     int seeds = 1;
     for (auto& o : reals.others) {
       const auto oi = o.find(key);
       if (oi == o.end()) continue;
-      const double ro = rate_between(oi->second, lo, hi);
+      const double ro = series_rate(oi->second, lo, hi);
       if (!std::isfinite(ro)) continue;
       blo = std::min(blo, ro), bhi = std::max(bhi, ro), ++seeds;
     }

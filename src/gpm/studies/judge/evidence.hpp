@@ -1,0 +1,40 @@
+// The store's numbers as typed evidence (issue 57, item 1; first part): a series is an error
+// against h per level, read once from a store table with its finite, positive errors, and
+// its rate between two levels and its error constant are defined here, once, for every
+// judge that takes a series.  Numbers stay numbers until a writer formats them.
+//
+// So far the rate-against-level judge (rate_levels.hpp) and the error constants
+// (error_constants.hpp) read their series and take their rates and constants here; the
+// published-rate join (rates.hpp), the checked reasons and the decisions still read cells.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gpm/io/tsv.hpp"
+
+namespace gpm {
+
+// One stored error: the influence radius and the relative error of its level.
+struct EvidencePoint {
+  double h = 0, error = 0;
+};
+// A series: level → point, only levels whose error is finite and positive.
+using EvidenceSeries = std::map<int, EvidencePoint>;
+// A table's series by the values of its key columns (in the order given).
+using EvidenceSeriesMap = std::map<std::vector<std::string>, EvidenceSeries>;
+
+// The series of `t` keyed by `keys` (InputError naming the file for a missing column or a
+// level or h that is no number); a row whose error is no finite positive number (NA: a
+// blown-up series) is left out.
+EvidenceSeriesMap read_series(const TsvTable& t, const std::vector<std::string>& keys,
+                              const std::string& error = "rel_error");
+
+// The rate log(e_lo/e_hi)/log(h_lo/h_hi) between two stored levels; NaN where the series
+// lacks either.
+double series_rate(const EvidenceSeries& s, int lo, int hi);
+
+// The error constant e/h^p of a point for the theory's rate p.
+double error_constant(const EvidencePoint& pt, double p);
+
+}  // namespace gpm
