@@ -3,9 +3,10 @@
 // its rate between two levels and its error constant are defined here, once, for every
 // judge that takes a series.  Numbers stay numbers until a writer formats them.
 //
-// So far the rate-against-level judge (rate_levels.hpp) and the error constants
-// (error_constants.hpp) read their series and take their rates and constants here; the
-// published-rate join (rates.hpp), the checked reasons and the decisions still read cells.
+// So far the rate-against-level judge (rate_levels.hpp), the set-up identification's
+// fingerprint rates (setup_identification.hpp) and the error constants (error_constants.hpp)
+// read their series and take their rates and constants here; the published-rate join
+// (rates.hpp), the checked reasons, the heat mode model and the decisions still read cells.
 #pragma once
 #include <map>
 #include <string>

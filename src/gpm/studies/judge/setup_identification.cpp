@@ -8,7 +8,7 @@
 #include <map>
 
 #include "gpm/error.hpp"
-#include "gpm/operators/norms.hpp"
+#include "gpm/studies/judge/evidence.hpp"
 #include "gpm/studies/judge/rates.hpp"
 #include "gpm/studies/judge/verdicts.hpp"  // kSeedBandDecides
 
@@ -31,17 +31,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // l2, NaN where a level is missing or an error is not a positive finite number.
 double setup_fingerprint_rate(const TsvTable& t, const std::pair<std::string, std::string>& fp, const std::string& weight,
                         int l1, int l2) {
-  double h[2] = {NAN, NAN}, e[2] = {NAN, NAN};
-  for (std::size_t i = 0; i < t.rows.size(); ++i) {
-    if (t.text(i, "weight") != weight || t.text(i, fp.first) != fp.second) continue;
-    const long long k = t.integer(i, t.require_column("level"));
-    const int slot = k == l1 ? 0 : k == l2 ? 1 : -1;
-    if (slot < 0 || t.text(i, "rel_error") == "NA") continue;
-    h[slot] = t.number(i, t.require_column("h"));
-    e[slot] = t.number(i, t.require_column("rel_error"));
-  }
-  if (!(e[0] > 0 && e[1] > 0 && std::isfinite(e[0]) && std::isfinite(e[1]))) return NAN;
-  return two_level_rate(h[0], e[0], h[1], e[1]);
+  const EvidenceSeriesMap series = read_series(t, {"weight", fp.first});
+  const auto s = series.find({weight, fp.second});
+  return s == series.end() ? NAN : series_rate(s->second, l1, l2);
 }
 
 // The mean over the weights of |ln(rate/published)| of one data file (inf: a rate missing or
