@@ -94,28 +94,40 @@ void print_summary(const gpm::TsvTable& props, const gpm::TsvTable& errata) {
                 e.printed_norm_2d, e.corrected_norm_2d);
 }
 
-int body(int argc, char** argv) {
-  gpm::Args args("core_weights",
-                 "Computes the properties of every reference weight function (normalization,\n"
-                 "order of Hypothesis 1.1, positivity, p0, regularity hypotheses) and lists\n"
-                 "the printed formulas that are wrong, with the computed evidence.");
-  args.output("out", "", "property table TSV, one row per registry weight (required)")
-      .output("errata", "", "errata TSV, one row per wrong printed formula (optional)")
-      .opt("profile", "quick", "run profile recorded in the header: quick or paper "
-                               "(the table is the same for both)");
-  args.parse(argc, argv);
-  args.required("out");
-  gpm::parse_profile(args.str("profile"));  // rejects unknown profiles
+// The program: the options read once; run() computes both tables, writes them and prints
+// the summary.
+class CoreWeights {
+ public:
+  CoreWeights(int argc, char** argv)
+      : args_("core_weights",
+              "Computes the properties of every reference weight function (normalization,\n"
+              "order of Hypothesis 1.1, positivity, p0, regularity hypotheses) and lists\n"
+              "the printed formulas that are wrong, with the computed evidence.") {
+    args_.output("out", "", "property table TSV, one row per registry weight (required)")
+        .output("errata", "", "errata TSV, one row per wrong printed formula (optional)")
+        .opt("profile", "quick", "run profile recorded in the header: quick or paper "
+                                 "(the table is the same for both)");
+    args_.parse(argc, argv);
+    args_.required("out");
+    gpm::parse_profile(args_.str("profile"));  // rejects unknown profiles
+  }
 
-  const auto props = property_table(args);
-  const auto errata = errata_table(args);
-  props.save(args.str("out"));
-  if (!args.str("errata").empty()) errata.save(args.str("errata"));
-  print_summary(props, errata);
-  std::printf("wrote %s%s%s\n", args.str("out").c_str(),
-              args.str("errata").empty() ? "" : " and ", args.str("errata").c_str());
-  return 0;
-}
+  int run() {
+    const auto props = property_table(args_);
+    const auto errata = errata_table(args_);
+    props.save(args_.str("out"));
+    if (!args_.str("errata").empty()) errata.save(args_.str("errata"));
+    print_summary(props, errata);
+    std::printf("wrote %s%s%s\n", args_.str("out").c_str(),
+                args_.str("errata").empty() ? "" : " and ", args_.str("errata").c_str());
+    return 0;
+  }
+
+ private:
+  gpm::Args args_;
+};
+
+int body(int argc, char** argv) { return CoreWeights(argc, argv).run(); }
 
 }  // namespace
 

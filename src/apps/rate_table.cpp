@@ -20,59 +20,80 @@ using namespace gpm;
 
 namespace {
 
-int body(int argc, char** argv) {
-  Args a("rate_table",
-         "Join a study's per-level errors with published rates: two-finest-level rate,\n"
-         "least-squares slope, difference, status and reason (TSV).");
-  a.opt("data", "", "the study's data file (rows: key columns, level, h, error)");
-  a.opt("published", "", "published values, long format, with the key columns");
-  a.opt("key", "", "comma-separated key columns shared by data and published files");
-  a.opt("where", "", "keep only the data rows with these cells, e.g. h_reading=printed,volumes=voronoi\n"
-                     "  (one reading of a study file); default: every row");
-  a.opt("level", "level", "level column of the data file (Δx = 2^-level)");
-  a.opt("x", "h", "abscissa of the rate (log e against log x)");
-  a.opt("y", "rel_error", "error column");
-  a.opt("value", "numerical", "published column holding the rate");
-  a.opt("levels", "", "the two levels the rate comes from, e.g. 10,11, or 'published' for the\n"
-                      "  published file's rate_levels (the document's); default: the two finest");
-  a.opt("tolerance", fmt(kRateTolerance), "|reproduced − published| that still counts as agreement, in (0, 1)");
-  a.output("out", "", "output TSV");
-  a.parse(argc, argv);
-  for (const char* req : {"data", "published", "key", "out"})
-    if (a.str(req).empty()) throw InputError(std::string("--") + req + " is required");
-  const double tol = a.tolerance("tolerance");
-  const auto keys = a.list("key");
-
-  std::vector<std::pair<std::string, std::string>> where;
-  for (const std::string& w : a.list("where")) {
-    const auto eq = w.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw InputError("--where '" + w + "' is not COLUMN=VALUE");
-    where.emplace_back(w.substr(0, eq), w.substr(eq + 1));
+// The program: the options read once; run() reads the data and the published file, joins
+// them and writes the table.
+class RateTable {
+ public:
+  RateTable(int argc, char** argv)
+      : a_("rate_table",
+           "Join a study's per-level errors with published rates: two-finest-level rate,\n"
+           "least-squares slope, difference, status and reason (TSV).") {
+    a_.opt("data", "", "the study's data file (rows: key columns, level, h, error)");
+    a_.opt("published", "", "published values, long format, with the key columns");
+    a_.opt("key", "", "comma-separated key columns shared by data and published files");
+    a_.opt("where", "", "keep only the data rows with these cells, e.g. h_reading=printed,volumes=voronoi\n"
+                        "  (one reading of a study file); default: every row");
+    a_.opt("level", "level", "level column of the data file (Δx = 2^-level)");
+    a_.opt("x", "h", "abscissa of the rate (log e against log x)");
+    a_.opt("y", "rel_error", "error column");
+    a_.opt("value", "numerical", "published column holding the rate");
+    a_.opt("levels", "", "the two levels the rate comes from, e.g. 10,11, or 'published' for the\n"
+                         "  published file's rate_levels (the document's); default: the two finest");
+    a_.opt("tolerance", fmt(kRateTolerance), "|reproduced − published| that still counts as agreement, in (0, 1)");
+    a_.output("out", "", "output TSV");
+    a_.parse(argc, argv);
+    for (const char* req : {"data", "published", "key", "out"})
+      if (a_.str(req).empty()) throw InputError(std::string("--") + req + " is required");
+    join_.tolerance = a_.tolerance("tolerance");
+    join_.keys = a_.list("key");
+    for (const std::string& w : a_.list("where")) {
+      const auto eq = w.find('=');
+      if (eq == std::string::npos || eq == 0)
+        throw InputError("--where '" + w + "' is not COLUMN=VALUE");
+      where_.emplace_back(w.substr(0, eq), w.substr(eq + 1));
+    }
+    join_.level = a_.str("level"), join_.x = a_.str("x"), join_.y = a_.str("y"), join_.value = a_.str("value");
+    join_.levels = a_.str("levels");
   }
-  const TsvTable data = rows_where(TsvTable::load(a.str("data")), where);
-  if (!where.empty() && data.rows.empty())
-    throw InputError("--where " + a.str("where") + ": no row of " + a.str("data") + " matches");
-  const TsvTable pub = TsvTable::load(a.str("published"));
-  RateJoin join;
-  join.keys = keys;
-  join.level = a.str("level"), join.x = a.str("x"), join.y = a.str("y"), join.value = a.str("value");
-  join.levels = a.str("levels");
-  join.tolerance = tol;
 
-  TsvTable out;
-  out.set("program", "rate_table");
-  for (auto& [k, v] : a.values()) out.set(k, v);
-  for (const char* k : {"profile", "git_revision", "seed", "program"})
-    if (auto v = data.get(k)) out.set(std::string("data_") + k, *v);
-  add_provenance(out);
-  const std::map<std::string, int> counts = join_rates(data, pub, join, out);
-  out.save(a.str("out"));
-  std::printf("rate_table: %s:", a.str("out").c_str());
-  for (auto& [s, n] : counts) std::printf(" %s %d", s.c_str(), n);
-  std::printf("\n");
-  return 0;
-}
+  int run() {
+    read_inputs();
+    join_and_write();
+    return 0;
+  }
+
+ private:
+  // The data (the rows --where keeps) and the published rates.
+  void read_inputs() {
+    data_ = rows_where(TsvTable::load(a_.str("data")), where_);
+    if (!where_.empty() && data_.rows.empty())
+      throw InputError("--where " + a_.str("where") + ": no row of " + a_.str("data") + " matches");
+    pub_ = TsvTable::load(a_.str("published"));
+  }
+
+  // The joined table, its header naming every option and the data's provenance, and a
+  // one-line count per status.
+  void join_and_write() {
+    TsvTable out;
+    out.set("program", "rate_table");
+    for (auto& [k, v] : a_.values()) out.set(k, v);
+    for (const char* k : {"profile", "git_revision", "seed", "program"})
+      if (auto v = data_.get(k)) out.set(std::string("data_") + k, *v);
+    add_provenance(out);
+    const std::map<std::string, int> counts = join_rates(data_, pub_, join_, out);
+    out.save(a_.str("out"));
+    std::printf("rate_table: %s:", a_.str("out").c_str());
+    for (auto& [s, n] : counts) std::printf(" %s %d", s.c_str(), n);
+    std::printf("\n");
+  }
+
+  Args a_;
+  RateJoin join_;
+  std::vector<std::pair<std::string, std::string>> where_;
+  TsvTable data_, pub_;
+};
+
+int body(int argc, char** argv) { return RateTable(argc, argv).run(); }
 
 }  // namespace
 

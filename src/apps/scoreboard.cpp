@@ -16,26 +16,41 @@ namespace {
 
 const char* kStatuses[] = {"agrees", "differs", "other-levels", "undefined", "not-computed"};
 
-int body(int argc, char** argv) {
-  Args a("scoreboard", "Count agrees / differs / other-levels / undefined / not-computed over\n"
-                       "the rate tables of one profile (TSV).");
-  a.opt("tables", "", "comma-separated rate-table files (rate_table outputs)");
-  a.opt("profile", "quick", "profile the tables come from (recorded only)");
-  a.output("out", "", "output TSV");
-  a.parse(argc, argv);
-  a.required("out");
-  const auto files = a.list("tables");
-  if (files.empty()) throw InputError("--tables names no file");
-  TsvTable out;
-  out.set("program", "scoreboard");
-  for (auto& [k, v] : a.values()) out.set(k, v);
-  add_provenance(out);
-  out.columns = {"table", "rows"};
-  for (auto s : kStatuses) out.columns.push_back(s);
-  out.columns.push_back("levels");
-  std::map<std::string, int> total;
-  int total_rows = 0;
-  for (auto& f : files) {
+// The program: the options read once; run() counts each rate table's statuses, adds the
+// total and writes the board.
+class Scoreboard {
+ public:
+  Scoreboard(int argc, char** argv)
+      : a_("scoreboard", "Count agrees / differs / other-levels / undefined / not-computed over\n"
+                         "the rate tables of one profile (TSV).") {
+    a_.opt("tables", "", "comma-separated rate-table files (rate_table outputs)");
+    a_.opt("profile", "quick", "profile the tables come from (recorded only)");
+    a_.output("out", "", "output TSV");
+    a_.parse(argc, argv);
+    a_.required("out");
+    files_ = a_.list("tables");
+    if (files_.empty()) throw InputError("--tables names no file");
+  }
+
+  int run() {
+    open_board();
+    for (auto& f : files_) count(f);
+    write_total();
+    return 0;
+  }
+
+ private:
+  void open_board() {
+    out_.set("program", "scoreboard");
+    for (auto& [k, v] : a_.values()) out_.set(k, v);
+    add_provenance(out_);
+    out_.columns = {"table", "rows"};
+    for (auto s : kStatuses) out_.columns.push_back(s);
+    out_.columns.push_back("levels");
+  }
+
+  // One rate table: its rows per status and the pairs of levels its rates come from.
+  void count(const std::string& f) {
     const TsvTable t = TsvTable::load(f);
     const int cs = t.column("status"), cl = t.column("levels");
     if (cs < 0) throw InputError(f + " has no status column (not a rate_table output)");
@@ -48,22 +63,32 @@ int body(int argc, char** argv) {
     std::string lv;
     for (auto& [l, c] : levels) lv += (lv.empty() ? "" : " ") + l;
     std::vector<std::string> row = {std::filesystem::path(f).stem().string(), fmt(t.rows.size())};
-    for (auto s : kStatuses) row.push_back(fmt(n[s])), total[s] += n[s];
+    for (auto s : kStatuses) row.push_back(fmt(n[s])), total_[s] += n[s];
     row.push_back(lv);
-    total_rows += static_cast<int>(t.rows.size());
-    out.add_row(row);
+    total_rows_ += static_cast<int>(t.rows.size());
+    out_.add_row(row);
   }
-  std::vector<std::string> row = {"total", fmt(total_rows)};
-  for (auto s : kStatuses) row.push_back(fmt(total[s]));
-  row.push_back("");
-  out.add_row(row);
-  out.save(a.str("out"));
-  std::printf("scoreboard: %d published rates: %d agree, %d differ, %d from other levels than "
-              "the document's (not judged), %d undefined, %d not computed\n",
-              total_rows, total["agrees"], total["differs"], total["other-levels"],
-              total["undefined"], total["not-computed"]);
-  return 0;
-}
+
+  void write_total() {
+    std::vector<std::string> row = {"total", fmt(total_rows_)};
+    for (auto s : kStatuses) row.push_back(fmt(total_[s]));
+    row.push_back("");
+    out_.add_row(row);
+    out_.save(a_.str("out"));
+    std::printf("scoreboard: %d published rates: %d agree, %d differ, %d from other levels than "
+                "the document's (not judged), %d undefined, %d not computed\n",
+                total_rows_, total_["agrees"], total_["differs"], total_["other-levels"],
+                total_["undefined"], total_["not-computed"]);
+  }
+
+  Args a_;
+  std::vector<std::string> files_;
+  TsvTable out_;
+  std::map<std::string, int> total_;
+  int total_rows_ = 0;
+};
+
+int body(int argc, char** argv) { return Scoreboard(argc, argv).run(); }
 
 }  // namespace
 

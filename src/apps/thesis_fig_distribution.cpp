@@ -19,37 +19,50 @@ namespace {
 // 2,070 with the cell edges at 2^-9; half as much again to spare.
 constexpr double kParticleBytes = 350, kCellBytes = 3000;
 
-int body(int argc, char** argv) {
-  Args a("thesis_fig_distribution",
-         "Jittered particle distribution on Omega_H and (optionally) its Voronoi cells.");
-  a.output("particles", "", "output TSV of particles (required)")
-      .output("cells", "", "optional output TSV of Voronoi cell edges")
-      .opt("dx", "2^-5", "grid spacing")
-      .opt("seed", "1", "jitter seed (non-negative integer)");
-  a.parse(argc, argv);
-  a.required("particles");
-  const double dx = a.positive("dx");
-  const uint64_t seed = a.seed();
-  require_grid_fits_memory(dx, a.str("cells").empty() ? kParticleBytes : kCellBytes, "--dx");
-  const Stopwatch wall;
-  const Domain dom;
-  const Particles p = jittered_grid(dx, seed, 0.25, dom);
-  auto header = [&](TsvTable& t) {
+// The program: the options read once; run() makes the particles, writes the Voronoi cells'
+// edges if asked, then the particles.
+class FigDistribution {
+ public:
+  FigDistribution(int argc, char** argv)
+      : a_("thesis_fig_distribution",
+           "Jittered particle distribution on Omega_H and (optionally) its Voronoi cells.") {
+    a_.output("particles", "", "output TSV of particles (required)")
+        .output("cells", "", "optional output TSV of Voronoi cell edges")
+        .opt("dx", "2^-5", "grid spacing")
+        .opt("seed", "1", "jitter seed (non-negative integer)");
+    a_.parse(argc, argv);
+    a_.required("particles");
+    dx_ = a_.positive("dx");
+    seed_ = a_.seed();
+    require_grid_fits_memory(dx_, a_.str("cells").empty() ? kParticleBytes : kCellBytes, "--dx");
+  }
+
+  int run() {
+    p_ = jittered_grid(dx_, seed_, 0.25, dom_);
+    if (!a_.str("cells").empty()) write_cells();
+    write_particles();
+    return 0;
+  }
+
+ private:
+  void header(TsvTable& t) const {
     t.set("program", "thesis_fig_distribution");
-    for (auto& [k, v] : a.values()) t.set(k, v);
-    t.set("N", fmt(p.size()));
-    t.set("N_omega", fmt(p.count_in_omega()));
-    t.set("H", dom.H);
+    for (auto& [k, v] : a_.values()) t.set(k, v);
+    t.set("N", fmt(p_.size()));
+    t.set("N_omega", fmt(p_.count_in_omega()));
+    t.set("H", dom_.H);
     add_provenance(t);
-  };
-  if (!a.str("cells").empty()) {
-    const VoronoiCells c = voronoi_cells(p, dom, true);
+  }
+
+  // Every cell's edges, one row each (the cell's polygon closed).
+  void write_cells() {
+    const VoronoiCells c = voronoi_cells(p_, dom_, true);
     TsvTable t;
     header(t);
     t.set("area_sum", c.area_sum);
     t.set("covering_radius", c.covering_radius);
     t.columns = {"cell", "x1", "y1", "x2", "y2"};
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t i = 0; i < p_.size(); ++i) {
       const auto b = c.offset[i], e = c.offset[i + 1];
       for (auto k = b; k < e; ++k) {
         const auto k2 = k + 1 < e ? k + 1 : b;
@@ -59,21 +72,32 @@ int body(int argc, char** argv) {
         t.add_row(row);
       }
     }
-    t.set("wall_time_s", wall.seconds());
-    t.save(a.str("cells"));
+    t.set("wall_time_s", wall_.seconds());
+    t.save(a_.str("cells"));
   }
-  TsvTable t;
-  header(t);
-  t.columns = {"x", "y", "in_omega"};
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    TsvRow row = t.named_row();
-    row["x"] = fmt(p.x[i]), row["y"] = fmt(p.y[i]), row["in_omega"] = fmt(static_cast<int>(p.in_omega[i]));
-    t.add_row(row);
+
+  void write_particles() {
+    TsvTable t;
+    header(t);
+    t.columns = {"x", "y", "in_omega"};
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      TsvRow row = t.named_row();
+      row["x"] = fmt(p_.x[i]), row["y"] = fmt(p_.y[i]), row["in_omega"] = fmt(static_cast<int>(p_.in_omega[i]));
+      t.add_row(row);
+    }
+    t.set("wall_time_s", wall_.seconds());
+    t.save(a_.str("particles"));
   }
-  t.set("wall_time_s", wall.seconds());
-  t.save(a.str("particles"));
-  return 0;
-}
+
+  Args a_;
+  double dx_ = 0;
+  uint64_t seed_ = 1;
+  const Stopwatch wall_;
+  const Domain dom_;
+  Particles p_;
+};
+
+int body(int argc, char** argv) { return FigDistribution(argc, argv).run(); }
 
 }  // namespace
 

@@ -19,33 +19,46 @@ const std::vector<std::string> kWeights = {
     "cubic_spike",        "quartic_polynomial",         "piecewise_cubic_polynomial",
     "piecewise_quintic_polynomial"};
 
-int body(int argc, char** argv) {
-  Args a("thesis_fig_weights", "w(r) samples of the thesis' Chapter-4 weights (Figures 4.2, 4.4).");
-  a.output("out", "", "output TSV (required)").opt("samples", "401", "samples on [0, 1.2]");
-  a.parse(argc, argv);
-  a.required("out");
-  const long long n = a.integer("samples", 2, 1000000);
-  const Stopwatch wall;
-  TsvTable t;
-  t.set("program", "thesis_fig_weights");
-  t.set("samples", fmt(n));
-  t.set("range", "r in [0, 1.2]");
-  t.columns = {"r"};
-  for (auto& w : kWeights) {
-    t.columns.push_back(w);
-    t.set("source_" + w, weight(w).source);
+// The program: the options read once; run() samples every weight and writes the table.
+class FigWeights {
+ public:
+  FigWeights(int argc, char** argv)
+      : a_("thesis_fig_weights", "w(r) samples of the thesis' Chapter-4 weights (Figures 4.2, 4.4).") {
+    a_.output("out", "", "output TSV (required)").opt("samples", "401", "samples on [0, 1.2]");
+    a_.parse(argc, argv);
+    a_.required("out");
+    n_ = a_.integer("samples", 2, 1000000);
   }
-  for (long long i = 0; i < n; ++i) {
-    const double r = 1.2 * static_cast<double>(i) / static_cast<double>(n - 1);
-    std::vector<std::string> row{fmt(r)};
-    for (auto& w : kWeights) row.push_back(fmt(weight(w).value(r)));
-    t.add_row(row);
+
+  int run() {
+    const Stopwatch wall;
+    TsvTable t;
+    t.set("program", "thesis_fig_weights");
+    t.set("samples", fmt(n_));
+    t.set("range", "r in [0, 1.2]");
+    t.columns = {"r"};
+    for (auto& w : kWeights) {
+      t.columns.push_back(w);
+      t.set("source_" + w, weight(w).source);
+    }
+    for (long long i = 0; i < n_; ++i) {
+      const double r = 1.2 * static_cast<double>(i) / static_cast<double>(n_ - 1);
+      std::vector<std::string> row{fmt(r)};
+      for (auto& w : kWeights) row.push_back(fmt(weight(w).value(r)));
+      t.add_row(row);
+    }
+    add_provenance(t);
+    t.set("wall_time_s", wall.seconds());
+    t.save(a_.str("out"));
+    return 0;
   }
-  add_provenance(t);
-  t.set("wall_time_s", wall.seconds());
-  t.save(a.str("out"));
-  return 0;
-}
+
+ private:
+  Args a_;
+  long long n_ = 0;
+};
+
+int body(int argc, char** argv) { return FigWeights(argc, argv).run(); }
 
 }  // namespace
 
