@@ -3,8 +3,9 @@
 # (verify_store.sh) recomputes only each file's cheapest levels, so an edited and re-sealed
 # row at a rate level would pass it: a seal is a tripwire for accidents, anyone can recompute
 # it.  This check recomputes, besides, a sample of the finer units — a unit is one level of
-# a store file (of a heat file: one level and weight, its θ together) — and fails on any
-# difference (--verify: numbers to 1e-9 relative).
+# a store file (of a heat file: one level and weight, its θ together; of Table 4.4's: one level,
+# h rule and weight) — and fails on any difference (--verify: numbers to 1e-9 relative; by a
+# cheaper path at that path's tolerance, below).
 #
 # Which units (tests/store/sample_draw.py, issue 61 item 6): every unit above the file's
 # coarse levels whose stored run took at most MAX_UNIT_S (the sum of its rows' distinct time
@@ -62,13 +63,14 @@ candidates() {
     if [ "$program" = thesis_table4_4 ] && [ -n "$plain" ]; then cheap="--solver tau"
     elif [ "$program" = thesis_heat ]; then cheap="--propagator auto${plain:+ --solver tau}"; fi
     { printf '%s\n' "$measured"; echo "==="; cat "$store/$file.tsv"; } |
-    awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v coarse="$coarse" -v cheap="$cheap" -v heat=$([ "$program" = thesis_heat ] && echo 1 || echo 0) '
+    awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v coarse="$coarse" -v cheap="$cheap" -v heat=$([ "$program" = thesis_heat ] && echo 1 || echo 0) \
+        -v poisson=$([ "$program" = thesis_table4_4 ] && [[ " $args " != *" --only "* ]] && echo 1 || echo 0) '
       BEGIN { n = split(coarse, c, ","); for (i = 1; i <= n; i++) low[c[i]] = 1 }
       !body { if ($0 == "===") body = 1; else if ($1 == file && $4 == cheap) by_path[$2] = $3; next }
       /^#/ { next }
       !h++ { for (i = 1; i <= NF; i++) col[$i] = i; t = ("seconds" in col) ? col["seconds"] : col["time_s"]; next }
       ($col["level"] in low) { next }
-      { u = $col["level"] "\t" (heat ? $col["weight"] : "-")
+      { u = $col["level"] "\t" (heat ? $col["weight"] : poisson ? $col["h_rule"] "," $col["weight"] : "-")
         if (!((u, $t) in seen)) { seen[u, $t] = 1; cost[u] += $t; fast[u] += faster() }
         if (!(($col["level"], u) in in_level)) { in_level[$col["level"], u] = 1; units[$col["level"]]++ }
         if (heat && !((u, $col["theta"]) in th)) { th[u, $col["theta"]] = 1; thetas[u] = thetas[u] (thetas[u] == "" ? "" : ",") $col["theta"] } }
@@ -111,7 +113,8 @@ while IFS=$'\t' read -r file program args level weight cost thetas path; do
   n=$((n + 1))
   [ "$args" = - ] && args=""
   sel=(--levels "$level")
-  [ "$weight" != - ] && sel+=(--weights "$weight")
+  # A heat unit is a level and weight; a Table 4.4 unit a level, h rule and weight (--only).
+  [ "$weight" != - ] && if [ "$program" = thesis_table4_4 ]; then sel+=(--only "$weight"); else sel+=(--weights "$weight"); fi
   [ "$thetas" != - ] && sel+=(--thetas "$thetas")  # the θ the file holds (some units hold θ = 0 only)
   [ "${path:--}" != - ] && read -ra more <<<"$path" && sel+=("${more[@]}")  # the cheaper path
   t0=$SECONDS
