@@ -3,8 +3,8 @@
 # (verify_store.sh) recomputes only each file's cheapest levels, so an edited and re-sealed
 # row at a rate level would pass it: a seal is a tripwire for accidents, anyone can recompute
 # it.  This check recomputes, besides, a sample of the finer units — a unit is one level of
-# a store file (of a heat file: one level and weight, its θ together; of Table 4.4's: one level,
-# h rule and weight) — and fails on any difference (--verify: numbers to 1e-9 relative; by a
+# a store file (of a heat file: one level and weight, its θ together; of Table 4.4's, 4.1-4.3's
+# and imoto's: one level and its key values, sub_key below) — and fails on any difference (--verify: numbers to 1e-9 relative; by a
 # cheaper path at that path's tolerance, below).
 #
 # Which units (tests/store/sample_draw.py, issue 61 item 6): every unit above the file's
@@ -44,6 +44,18 @@ listing=$("$build/gpm" study --store-rows) || { echo "verify_sample.sh: gpm stud
 # Every candidate: file, program, args, level, weight ("-": the whole level), predicted s,
 # of a heat unit the θ its rows hold ("-": all), then the cheaper path's options ("-": none)
 # and its predicted s.
+# The key columns besides the level that make one unit of a study whose units can be selected
+# one by one (--only: Table 4.4's h rule and weight, Tables 4.1-4.3's reading and volumes,
+# imoto's m), empty for a whole level (a file whose arguments select with --only already, and
+# the studies that name their particle sets themselves).
+sub_key() {
+  [[ " $2 " == *" --only "* ]] && return
+  case $1 in
+    thesis_table4_4) echo h_rule,weight ;;
+    thesis_table4_1|thesis_table4_2|thesis_table4_3) echo h_reading,volumes ;;
+    imoto_fig5_table1) echo m ;;
+  esac
+}
 # The seconds verify_store_full.sh measured per (file, level) by a path other than the own one
 # (its latest agreeing line), "file<TAB>level<TAB>seconds<TAB>path".
 measured=$(awk -F'\t' 'NR > 1 && $9 == "agree" && $13 != "own" { m[$2 "\t" $3] = $10 "\t" $13 }
@@ -64,13 +76,14 @@ candidates() {
     elif [ "$program" = thesis_heat ]; then cheap="--propagator auto${plain:+ --solver tau}"; fi
     { printf '%s\n' "$measured"; echo "==="; cat "$store/$file.tsv"; } |
     awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v coarse="$coarse" -v cheap="$cheap" -v heat=$([ "$program" = thesis_heat ] && echo 1 || echo 0) \
-        -v poisson=$([ "$program" = thesis_table4_4 ] && [[ " $args " != *" --only "* ]] && echo 1 || echo 0) '
-      BEGIN { n = split(coarse, c, ","); for (i = 1; i <= n; i++) low[c[i]] = 1 }
+        -v subkey="$(sub_key "$program" "$args")" '
+      BEGIN { n = split(coarse, c, ","); for (i = 1; i <= n; i++) low[c[i]] = 1; ns = split(subkey, sk, ",") }
       !body { if ($0 == "===") body = 1; else if ($1 == file && $4 == cheap) by_path[$2] = $3; next }
       /^#/ { next }
       !h++ { for (i = 1; i <= NF; i++) col[$i] = i; t = ("seconds" in col) ? col["seconds"] : col["time_s"]; next }
       ($col["level"] in low) { next }
-      { u = $col["level"] "\t" (heat ? $col["weight"] : poisson ? $col["h_rule"] "," $col["weight"] : "-")
+      { part = ""; for (i = 1; i <= ns; i++) part = part (i > 1 ? "," : "") $col[sk[i]]
+        u = $col["level"] "\t" (heat ? $col["weight"] : ns ? part : "-")
         if (!((u, $t) in seen)) { seen[u, $t] = 1; cost[u] += $t; fast[u] += faster() }
         if (!(($col["level"], u) in in_level)) { in_level[$col["level"], u] = 1; units[$col["level"]]++ }
         if (heat && !((u, $col["theta"]) in th)) { th[u, $col["theta"]] = 1; thetas[u] = thetas[u] (thetas[u] == "" ? "" : ",") $col["theta"] } }
@@ -113,8 +126,8 @@ while IFS=$'\t' read -r file program args level weight cost thetas path; do
   n=$((n + 1))
   [ "$args" = - ] && args=""
   sel=(--levels "$level")
-  # A heat unit is a level and weight; a Table 4.4 unit a level, h rule and weight (--only).
-  [ "$weight" != - ] && if [ "$program" = thesis_table4_4 ]; then sel+=(--only "$weight"); else sel+=(--weights "$weight"); fi
+  # A heat unit is a level and weight; another study's a level and its key values (--only).
+  [ "$weight" != - ] && if [ "$program" = thesis_heat ]; then sel+=(--weights "$weight"); else sel+=(--only "$weight"); fi
   [ "$thetas" != - ] && sel+=(--thetas "$thetas")  # the θ the file holds (some units hold θ = 0 only)
   [ "${path:--}" != - ] && read -ra more <<<"$path" && sel+=("${more[@]}")  # the cheaper path
   t0=$SECONDS
