@@ -42,92 +42,116 @@ namespace {
 // The study's levels per profile and columns are its registry entry's (registry.hpp, from
 // poisson_table()); the weights are pde_weights() (catalog.hpp).
 
-int body(int argc, char** argv) {
-  StudyRunner run(study_registry().study("thesis_table4_4"),
-                  "Discrete Poisson problem (thesis §4.2): relative l-infinity errors per weight,\n"
-                  "level and reading of h (Figure 4.8, Table 4.4).");
-  run.args()
-      .opt("tol", "1e-10", "CG relative residual on the symmetric form")
-      .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
-      .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB); above: matrix-free")
-      .opt("volumes", "lattice", "lattice: V_i = |Omega_H|/N (thesis (A.10)); cell: V_i = dx^2\n"
-                                 "  (the other reading of the volumes; the store's _cellvol file)")
-      .opt("solver", "cg", "cg: plain conjugate gradients (the reference; every stored row);\n"
-                           "  tau: preconditioned by the lattice's fast sine transform (tau_preconditioner.hpp)");
-  run.parse(argc, argv);
-  const PdeVolumes volumes = parse_pde_volumes(run.args().str("volumes"));
-  const std::string solver = run.args().str("solver");
-  if (solver != "cg" && solver != "tau")
-    throw InputError("--solver '" + solver + "' is not cg or tau");
-  const double tol = run.args().tolerance("tol");
-  const auto storage = parse_laplacian_storage(run.args().str("storage"));
-  const double max_bytes = run.args().positive("max-gb") * 1e9;
-  const std::vector<int> levels = run.levels();
-  require_pde_levels_fit_memory(levels, pde_h_rules(), storage, max_bytes);
+// The program: the options read once; run() opens the cached data file and solves every
+// registered unit (level, reading of h, weight) it lacks.
+class PoissonTable {
+ public:
+  PoissonTable(int argc, char** argv)
+      : run_(study_registry().study("thesis_table4_4"),
+             "Discrete Poisson problem (thesis §4.2): relative l-infinity errors per weight,\n"
+             "level and reading of h (Figure 4.8, Table 4.4).") {
+    run_.args()
+        .opt("tol", "1e-10", "CG relative residual on the symmetric form")
+        .opt("storage", "auto", "Laplacian storage: auto, assembled, matrix_free")
+        .opt("max-gb", "8", "memory budget of an assembled Laplacian (GB); above: matrix-free")
+        .opt("volumes", "lattice", "lattice: V_i = |Omega_H|/N (thesis (A.10)); cell: V_i = dx^2\n"
+                                   "  (the other reading of the volumes; the store's _cellvol file)")
+        .opt("solver", "cg", "cg: plain conjugate gradients (the reference; every stored row);\n"
+                             "  tau: preconditioned by the lattice's fast sine transform (tau_preconditioner.hpp)");
+    run_.parse(argc, argv);
+    volumes_ = parse_pde_volumes(run_.args().str("volumes"));
+    solver_ = run_.args().str("solver");
+    if (solver_ != "cg" && solver_ != "tau")
+      throw InputError("--solver '" + solver_ + "' is not cg or tau");
+    tol_ = run_.args().tolerance("tol");
+    storage_ = parse_laplacian_storage(run_.args().str("storage"));
+    max_bytes_ = run_.args().positive("max-gb") * 1e9;
+    require_pde_levels_fit_memory(run_.levels(), pde_h_rules(), storage_, max_bytes_);
+  }
 
-  // --- The data file: one row per (reading of h, weight, level). ---------------------------
-  // A preconditioned run names its solver in the header, so its rows (other iteration
-  // counts, the same errors to the tolerance) never mix with plain CG's in one file.
-  std::vector<std::pair<std::string, std::string>> params = {
-      {"program", "thesis_table4_4"}, {"profile", profile_name(run.profile())},
-      {"seed", fmt(static_cast<long long>(run.seed()))}, {"tol", fmt(tol)},
-      {"function", "sin2pi"}, {"volumes", pde_volumes_description(volumes)},
-      {"error", "max_Omega|u-U| / max_Omega|u|"},
-      {"h10", pde_h_formula(HRule::h10)}, {"h15", pde_h_formula(HRule::h15)}};
-  if (solver == "tau") params.emplace_back("solver", "CG preconditioned by the lattice's tau (DST-I) matrix");
-  UnitCache& cache = run.open(params, 3);
-  // --- The units: the registry's (one per level, reading of h and weight, in that order).
-  // A level's particles, volumes and data are shared by its units, made for the first one
-  // still to compute.
-  const TestFunction& u = test_function("sin2pi");
-  const Domain dom;
-  int level = 0;
-  Particles p;
-  std::vector<double> V;
-  PoissonData d;
-  for (const StudyUnit& unit : run.units()) {
+  int run() {
+    open_data_file();
+    for (const StudyUnit& unit : run_.units()) solve(unit);
+    run_.finish();
+    return 0;
+  }
+
+ private:
+  // The data file: one row per (reading of h, weight, level).  A preconditioned run names its
+  // solver in the header, so its rows (other iteration counts, the same errors to the
+  // tolerance) never mix with plain CG's in one file.
+  void open_data_file() {
+    std::vector<std::pair<std::string, std::string>> params = {
+        {"program", "thesis_table4_4"}, {"profile", profile_name(run_.profile())},
+        {"seed", fmt(static_cast<long long>(run_.seed()))}, {"tol", fmt(tol_)},
+        {"function", "sin2pi"}, {"volumes", pde_volumes_description(volumes_)},
+        {"error", "max_Omega|u-U| / max_Omega|u|"},
+        {"h10", pde_h_formula(HRule::h10)}, {"h15", pde_h_formula(HRule::h15)}};
+    if (solver_ == "tau") params.emplace_back("solver", "CG preconditioned by the lattice's tau (DST-I) matrix");
+    cache_ = &run_.open(params, 3);
+  }
+
+  // A level's particles, volumes and data, shared by its units, made for the first one still
+  // to compute.
+  void particle_set(int k) {
+    if (k == level_) return;
+    const double dx = std::ldexp(1.0, -k);
+    p_ = jittered_grid(dx, run_.seed());
+    V_ = pde_volumes(volumes_, p_, dx, dom_);
+    d_ = poisson_data(p_, test_function("sin2pi"));  // f = −Δu, g = u at every particle
+    level_ = k;
+  }
+
+  // One unit (the registry's: h rule, weight, level): assemble −Δ_h (or keep it matrix-free),
+  // solve by CG, measure the error in Ω.
+  void solve(const StudyUnit& unit) {
     const int k = unit.level;
     const double dx = std::ldexp(1.0, -k), h = unit.h;
     const std::string &rule = unit.key[0], &wname = unit.key[1];  // the data file's h_rule, weight
-    if (cache.has(unit.key) || !run.claim(poisson_unit_work(dx, h))) continue;
-    if (k != level) {
-      p = jittered_grid(dx, run.seed());
-      V = pde_volumes(volumes, p, dx, dom);
-      d = poisson_data(p, u);  // f = −Δu, g = u at every particle
-      level = k;
-    }
-    // Assemble −Δ_h (or keep it matrix-free), solve by CG, measure the error in Ω.
+    if (cache_->has(unit.key) || !run_.claim(poisson_unit_work(dx, h))) return;
+    particle_set(k);
     const auto t0 = std::chrono::steady_clock::now();
-    const DiscreteLaplacian L(p, V, weight(wname), h, storage, max_bytes);
+    const DiscreteLaplacian L(p_, V_, weight(wname), h, storage_, max_bytes_);
     std::unique_ptr<TauPreconditioner> pc;
-    if (solver == "tau") pc = std::make_unique<TauPreconditioner>(p, L, weight(wname), dx);
+    if (solver_ == "tau") pc = std::make_unique<TauPreconditioner>(p_, L, weight(wname), dx);
     const PoissonResult r = naming_unit(rule + ", " + wname + ", level " + fmt(k), [&] {
-      return solve_poisson(p, L, d.f, d.g, tol, 20000, true, pc.get());
+      return solve_poisson(p_, L, d_.f, d_.g, tol_, 20000, true, pc.get());
     });
     double err = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.in_omega[i]) err = std::max(err, std::fabs(d.g[i] - r.U[i]));
-    const double secs =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    TsvRow row = run.row();  // the entry's columns (poisson_table().columns), by name
+    for (std::size_t i = 0; i < p_.size(); ++i)
+      if (p_.in_omega[i]) err = std::max(err, std::fabs(d_.g[i] - r.U[i]));
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    TsvRow row = run_.row();  // the entry's columns (poisson_table().columns), by name
     row["h_rule"] = rule, row["weight"] = wname, row["level"] = fmt(k), row["dx"] = fmt(dx);
-    row["h"] = fmt(h), row["N"] = fmt(p.size()), row["N_omega"] = fmt(L.n_unknowns());
+    row["h"] = fmt(h), row["N"] = fmt(p_.size()), row["N_omega"] = fmt(L.n_unknowns());
     row["nnz"] = fmt(static_cast<long long>(L.nnz()));
     row["storage"] = L.assembled() ? "assembled" : "matrix_free";
-    row["rel_error"] = fmt(err / d.umax), row["cg_iterations"] = fmt(r.cg.iterations);
+    row["rel_error"] = fmt(err / d_.umax), row["cg_iterations"] = fmt(r.cg.iterations);
     row["rel_residual"] = fmt(r.cg.rel_residual), row["assembly_s"] = fmt(L.assembly_seconds());
     row["solve_s"] = fmt(r.solve_seconds), row["seconds"] = fmt(secs);
-    run.add(row);
-    run.unit_done(0, line_printf("%s %-28s dx=2^-%d h=%.4f N=%zu nnz=%.3g %s  err=%.4e  "
-                                 "CG %d it (res %.1e)  %.1f s",
-                                 rule.c_str(), wname.c_str(), k, h, p.size(),
-                                 static_cast<double>(L.nnz()),
-                                 L.assembled() ? "assembled" : "matrix-free", err / d.umax,
-                                 r.cg.iterations, r.cg.rel_residual, secs));
+    run_.add(row);
+    run_.unit_done(0, line_printf("%s %-28s dx=2^-%d h=%.4f N=%zu nnz=%.3g %s  err=%.4e  "
+                                  "CG %d it (res %.1e)  %.1f s",
+                                  rule.c_str(), wname.c_str(), k, h, p_.size(),
+                                  static_cast<double>(L.nnz()),
+                                  L.assembled() ? "assembled" : "matrix-free", err / d_.umax,
+                                  r.cg.iterations, r.cg.rel_residual, secs));
   }
-  run.finish();
-  return 0;
-}
+
+  StudyRunner run_;
+  PdeVolumes volumes_ = PdeVolumes::lattice;
+  std::string solver_;
+  double tol_ = 0, max_bytes_ = 0;
+  LaplacianStorage storage_ = LaplacianStorage::automatic;
+  const Domain dom_;
+  UnitCache* cache_ = nullptr;
+  int level_ = 0;  // the level whose particles, volumes and data are held
+  Particles p_;
+  std::vector<double> V_;
+  PoissonData d_;
+};
+
+int body(int argc, char** argv) { return PoissonTable(argc, argv).run(); }
 
 }  // namespace
 
