@@ -73,6 +73,7 @@ candidates() {
     cheap=-
     plain=$(grep -q '^# solver = ' "$store/$file.tsv" || echo 1)
     if [ "$program" = thesis_table4_4 ] && [ -n "$plain" ]; then cheap="--solver tau"
+    elif [ "$program" = thesis_heat ] && [[ $file == thesis_table4_7* ]] && [ -n "$plain" ]; then cheap="--solver tau"
     elif [ "$program" = thesis_heat ]; then cheap="--propagator auto${plain:+ --solver tau}"; fi
     { printf '%s\n' "$measured"; echo "==="; cat "$store/$file.tsv"; } |
     awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v coarse="$coarse" -v cheap="$cheap" -v heat=$([ "$program" = thesis_heat ] && echo 1 || echo 0) \
