@@ -28,3 +28,29 @@ census_read() {
 machine_line() {
   echo "$(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores"
 }
+
+# cheaper_path PROGRAM STEM FILE: the options of a store file's independent, cheaper
+# recomputation (issue 58 item 3), "-" where it has none: Table 4.4's plain-CG files by the
+# tau-preconditioned solver; Table 4.7's by their own stepping with that solver (2-3 implicit
+# steps: at 2^-9 the Krylov subspace `auto` chose took 298-748 s against 120-171 s stored,
+# measured 2026-12-06); the other heat files by the propagator with fewer predicted products,
+# their implicit steps, if stepped and plain, preconditioned.  verify_store_full.sh --cheap and
+# the store sample both take it from here.
+cheaper_path() {
+  local program=$1 stem=$2 file=$3 plain=
+  grep -q '^# solver = ' "$file" || plain=1
+  if [ "$program" = thesis_table4_4 ] && [ -n "$plain" ]; then echo "--solver tau"
+  elif [ "$program" = thesis_heat ] && [[ $stem == thesis_table4_7* ]] && [ -n "$plain" ]; then echo "--solver tau"
+  elif [ "$program" = thesis_heat ]; then echo "--propagator auto${plain:+ --solver tau}"
+  else echo -; fi
+}
+
+# An awk function for a store row's predicted seconds by the cheaper path: Table 4.4's assembly
+# plus its solve scaled by 15 iterations over its own count (the preconditioned solver's 11-13
+# at every level measured, results/bench/pcg_*), any other row its stored time `$t` (a heat
+# row's, an upper bound: its path is chosen only where it needs fewer products).  `col`: the
+# column map by name.
+cheaper_seconds_awk='function cheaper_s(col, t,   its) {
+  if ("cg_iterations" in col) { its = $col["cg_iterations"]
+    return its > 15 ? $col["assembly_s"] + $col["solve_s"] * 15 / its : $t }
+  return $t }'

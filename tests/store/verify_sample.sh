@@ -69,12 +69,7 @@ candidates() {
     extra=$(census_options "$census")
     [ -n "$extra" ] && { [ "$args" = - ] && args=$extra || args="$args $extra"; }
     coarse=$(awk '{ for (i = 1; i < NF; i++) if ($i == "--levels") print $(i + 1) }' <<<"$coarse")
-    # The cheaper path, as verify_store_full.sh --cheap takes it.
-    cheap=-
-    plain=$(grep -q '^# solver = ' "$store/$file.tsv" || echo 1)
-    if [ "$program" = thesis_table4_4 ] && [ -n "$plain" ]; then cheap="--solver tau"
-    elif [ "$program" = thesis_heat ] && [[ $file == thesis_table4_7* ]] && [ -n "$plain" ]; then cheap="--solver tau"
-    elif [ "$program" = thesis_heat ]; then cheap="--propagator auto${plain:+ --solver tau}"; fi
+    cheap=$(cheaper_path "$program" "$file" "$store/$file.tsv")  # as verify_store_full.sh --cheap
     { printf '%s\n' "$measured"; echo "==="; cat "$store/$file.tsv"; } |
     awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v coarse="$coarse" -v cheap="$cheap" -v heat=$([ "$program" = thesis_heat ] && echo 1 || echo 0) \
         -v subkey="$(sub_key "$program" "$args")" '
@@ -85,14 +80,10 @@ candidates() {
       ($col["level"] in low) { next }
       { part = ""; for (i = 1; i <= ns; i++) part = part (i > 1 ? "," : "") $col[sk[i]]
         u = $col["level"] "\t" (heat ? $col["weight"] : ns ? part : "-")
-        if (!((u, $t) in seen)) { seen[u, $t] = 1; cost[u] += $t; fast[u] += faster() }
+        if (!((u, $t) in seen)) { seen[u, $t] = 1; cost[u] += $t; fast[u] += (cheap == "-" ? $t : cheaper_s(col, t)) }
         if (!(($col["level"], u) in in_level)) { in_level[$col["level"], u] = 1; units[$col["level"]]++ }
         if (heat && !((u, $col["theta"]) in th)) { th[u, $col["theta"]] = 1; thetas[u] = thetas[u] (thetas[u] == "" ? "" : ",") $col["theta"] } }
-      function faster(   its) {
-        if (cheap == "-") return $t
-        if ("cg_iterations" in col) { its = $col["cg_iterations"]
-          return its > 15 ? $col["assembly_s"] + $col["solve_s"] * 15 / its : $t }
-        return $t }
+      '"$cheaper_seconds_awk"'
       END { for (u in cost) { split(u, lw, "\t")
               if (lw[1] in by_path) fast[u] = by_path[lw[1]] / units[lw[1]]
               printf "%s\t%s\t%s\t%s\t%.3f\t%s\t%s\t%.3f\n", file, program, args, u, cost[u], heat ? thetas[u] : "-", cheap, fast[u] } }'

@@ -85,27 +85,16 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
   [ "$args" = "-" ] && args=""
   args="${args}${args:+${extra:+ }}${extra}"
   [ -n "$args" ] || args="-"
-  path=own plain=0
-  grep -q '^# solver = ' "$f" || plain=1
-  if [ $cheap = 1 ] && [ "$prog" = thesis_table4_4 ] && [ $plain = 1 ]; then path="--solver tau"
-  elif [ $cheap = 1 ] && [ "$prog" = thesis_heat ] && [[ $file == thesis_table4_7* ]] && [ $plain = 1 ]; then
-    # Table 4.7 takes 2-3 implicit steps: its rows' own stepping with the preconditioned solver
-    # is the cheaper path (Krylov at 2^-9: 298-748 s against 120-171 s stored, measured
-    # 2026-12-06, where `auto` chose the subspace).
-    path="--solver tau"
-  elif [ $cheap = 1 ] && [ "$prog" = thesis_heat ]; then
-    path="--propagator auto$([ $plain = 1 ] && echo " --solver tau")"; fi
+  path=own
+  [ $cheap = 1 ] && path=$(cheaper_path "$prog" "$file" "$f")
+  [ "$path" = - ] && path=own
   awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v code="$code" -v path="$path" -v above="$above" '
     /^#/ { next }
     !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1
          t = ("seconds" in c) ? c["seconds"] : c["time_s"]; next }
     { k = $c["level"]; key = k SUBSEP $t
-      if (!(key in seen)) { seen[key] = 1; s[k] += $t; e[k] += cheap_s() } }
-    function cheap_s(   its) {
-      if (path == "own") return $t
-      if ("cg_iterations" in c) { its = $c["cg_iterations"]
-        return its > 15 ? $c["assembly_s"] + $c["solve_s"] * 15 / its : $t }
-      return $t }
+      if (!(key in seen)) { seen[key] = 1; s[k] += $t; e[k] += (path == "own" ? $t : cheaper_s(c, t)) } }
+    '"$cheaper_seconds_awk"'
     END { for (k in s) printf "%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%.1f\n", file, k, program, args, code, s[k],
                              (s[k] > above ? path : "own"), (s[k] > above ? e[k] : s[k]) }' "$f"
 done < <("$build/gpm" study --store-rows) | sort -t$'\t' -k8,8g > "$todo"
