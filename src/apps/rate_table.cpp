@@ -80,10 +80,11 @@ class RateTable {
     for (const char* k : {"profile", "git_revision", "seed", "program"})
       if (auto v = data_.get(k)) out.set(std::string("data_") + k, *v);
     add_provenance(out);
-    const std::map<std::string, int> counts = join_rates(data_, pub_, join_, out);
+    const JoinedRates joined = join_rates(data_, pub_, join_);
+    write_joined(joined, out);
     out.save(a_.str("out"));
     std::printf("rate_table: %s:", a_.str("out").c_str());
-    for (auto& [s, n] : counts) std::printf(" %s %d", s.c_str(), n);
+    for (auto& [s, n] : joined.counts) std::printf(" %s %d", s.c_str(), n);
     std::printf("\n");
   }
 

@@ -15,7 +15,8 @@ JudgedRate judged(const std::string& t, const std::string& s, const std::string&
                   const std::string& r, Verdict v = Verdict::not_counted, bool board = false, int n = 0,
                   double lo = 0, double hi = 0) {
   JudgedRate j;
-  j.rate.table = t, j.rate.slice = s, j.rate.key = k, j.rate.published = p, j.rate.reproduced = r;
+  j.rate.table = t, j.rate.slice = s, j.rate.key = k, j.rate.published = cell_number_or(p, NAN);
+  j.rate.reproduced = cell_number_or(r, NAN);
   j.rate.setup = s.find("seed") != std::string::npos ? kJitterSetup : kDocumentSetup;
   j.identified = board, j.verdict = v, j.verdict_identified = v;
   j.band_seeds = n, j.band_lo = lo, j.band_hi = hi;

@@ -20,7 +20,8 @@ namespace {
 StoreRate rate(const std::string& table, const std::string& slice, const std::string& key,
                const std::string& published, const std::string& reproduced, const std::string& status,
                const std::string& theoretical = "2") {
-  return {table, slice, slice_setup(table, slice), key, published, reproduced, "11,12",
+  return {table, slice, slice_setup(table, slice), key, cell_number_or(published, NAN), cell_number_or(reproduced, NAN),
+          "11,12",
           slice_setup(table, slice) == kDocumentSetup ? status : "no published value for this set-up",
           theoretical};
 }
@@ -159,9 +160,7 @@ TEST_CASE("verdicts: a heat series unstable at both rate levels", "[unit][verdic
   CHECK(finite.rows.size() == 4);  // the quartic theta = 0 series is gone, both its rows
   RateJoin join;
   join.keys = {"weight", "theta"}, join.levels = "published";
-  TsvTable joined;
-  join_rates(finite, pub, join, joined);
-  const auto j = judge(store_rates_of("thesis_table4_6", "h10", joined, join.keys, true), unstable);
+  const auto j = judge(store_rates_of("thesis_table4_6", "h10", join_rates(finite, pub, join), join.keys, true), unstable);
 
   const JudgedRate& blown = row(j, "thesis_table4_6", "h10", "quartic_polynomial 0");
   CHECK(blown.rate.status == "not-computed");

@@ -60,7 +60,7 @@ TsvTable heat_rates(const TsvTable& data, const TsvTable& published, const std::
   join.keys = {"weight", "theta"};
   join.levels = levels;
   TsvTable out;
-  join_rates(finite_series(data), published, join, out);
+  write_joined(join_rates(finite_series(data), published, join), out);
   return out;
 }
 

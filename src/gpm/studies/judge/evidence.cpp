@@ -1,12 +1,36 @@
 #include "gpm/studies/judge/evidence.hpp"
 
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 #include "gpm/operators/norms.hpp"  // two_level_rate
-#include "gpm/studies/judge/rates.hpp"  // cell_number
 
 namespace gpm {
+
+bool cell_number(const std::string& s, double& value) {
+  std::size_t i = !s.empty() && s[0] == '-' ? 1 : 0;
+  const std::size_t mantissa = i;
+  while (i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '.')) ++i;
+  if (i == mantissa) return false;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    const std::size_t digits = i;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+    if (i == digits) return false;
+  }
+  if (i != s.size()) return false;
+  value = std::strtod(s.c_str(), nullptr);
+  return std::isfinite(value);
+}
+
+double cell_number_or(const std::string& s, double otherwise) {
+  double v;
+  return cell_number(s, v) ? v : otherwise;
+}
+
 
 EvidenceSeriesMap read_series(const TsvTable& t, const std::vector<std::string>& keys, const std::string& error) {
   std::vector<int> ck;
@@ -22,6 +46,8 @@ EvidenceSeriesMap read_series(const TsvTable& t, const std::vector<std::string>&
   }
   return out;
 }
+
+std::string number_cell(double v) { return std::isnan(v) ? "NA" : fmt(v); }
 
 double series_rate(const EvidenceSeries& s, int lo, int hi) {
   const auto a = s.find(lo), b = s.find(hi);

@@ -16,6 +16,15 @@
 
 namespace gpm {
 
+// A cell read as a number, the one reader the judges share: a plain decimal (an optional
+// '-', digits and points, an optional exponent) and nothing else; false for NA, an empty
+// cell, nan, inf or a word (a document's "unstable").
+bool cell_number(const std::string& text, double& value);
+// The same, `otherwise` where the cell holds no number.
+double cell_number_or(const std::string& text, double otherwise);
+// A number for a writer: NA for NaN (what the judges read as no number), else fmt().
+std::string number_cell(double v);
+
 // One stored error: the influence radius and the relative error of its level.
 struct EvidencePoint {
   double h = 0, error = 0;

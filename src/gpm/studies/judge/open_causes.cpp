@@ -30,10 +30,10 @@ bool open_on_identified_board(const JudgedRate& j) {
 }
 
 OpenCause open_cause(const JudgedRate& open, const std::vector<JudgedRate>& judged, double tolerance) {
-  double published = 0, ours = 0;
-  const bool has_published = cell_number(open.rate.published, published);
-  std::string evidence = "published " + open.rate.published;
-  if (cell_number(open.rate.reproduced, ours)) evidence += ", ours " + two(ours);
+  const double published = open.rate.published, ours = open.rate.reproduced;
+  const bool has_published = std::isfinite(published);
+  std::string evidence = "published " + fmt(published);
+  if (std::isfinite(ours)) evidence += ", ours " + two(ours);
   if (open.band_seeds >= 2)
     evidence += ", band " + two(open.band_lo) + " to " + two(open.band_hi) + " (" + std::to_string(open.band_seeds) +
                 " seeds)";
@@ -42,8 +42,8 @@ OpenCause open_cause(const JudgedRate& open, const std::vector<JudgedRate>& judg
   std::string agreeing, nearest;
   double nearest_gap = INFINITY;
   for (const JudgedRate& j : judged) {
-    double rate;
-    if (!has_published || !other_reading(j, open) || !cell_number(j.rate.reproduced, rate)) continue;
+    const double rate = j.rate.reproduced;
+    if (!has_published || !other_reading(j, open) || !std::isfinite(rate)) continue;
     const double gap = std::fabs(rate - published);
     if (gap <= tolerance) agreeing += (agreeing.empty() ? "" : ", ") + j.rate.slice;
     if (gap < nearest_gap) nearest_gap = gap, nearest = j.rate.slice + " " + two(rate);

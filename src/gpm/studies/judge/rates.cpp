@@ -19,28 +19,6 @@ TsvTable load_published(const std::string& path, const std::string& who) {
   return TsvTable::load(path, false);
 }
 
-bool cell_number(const std::string& s, double& value) {
-  std::size_t i = !s.empty() && s[0] == '-' ? 1 : 0;
-  const std::size_t mantissa = i;
-  while (i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '.')) ++i;
-  if (i == mantissa) return false;
-  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-    ++i;
-    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-    const std::size_t digits = i;
-    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
-    if (i == digits) return false;
-  }
-  if (i != s.size()) return false;
-  value = std::strtod(s.c_str(), nullptr);
-  return std::isfinite(value);
-}
-
-double cell_number_or(const std::string& s, double otherwise) {
-  double v;
-  return cell_number(s, v) ? v : otherwise;
-}
-
 double theoretical_rate(const std::string& text) {
   return cell_number_or(text, std::numeric_limits<double>::quiet_NaN());
 }
@@ -55,7 +33,7 @@ std::string key_of(const TsvTable& t, std::size_t i, const std::vector<int>& col
 }
 
 // The two fixed levels of every rate, or none (the two finest of each series).
-std::vector<int> fixed_levels(const RateJoin& join, const TsvTable& pub, TsvTable& out) {
+std::vector<int> fixed_levels(const RateJoin& join, const TsvTable& pub, std::string& text) {
   std::vector<int> fixed;
   if (join.levels.empty()) return fixed;
   std::string lv = join.levels;
@@ -65,7 +43,7 @@ std::vector<int> fixed_levels(const RateJoin& join, const TsvTable& pub, TsvTabl
     fixed.push_back(static_cast<int>(parse_integer(item, "--levels", 0, 63)));
   if (fixed.size() != 2 || !(fixed[0] < fixed[1]))
     throw InputError("--levels: '" + lv + "' is not two increasing levels");
-  out.set("rate_levels", lv);
+  text = lv;
   return fixed;
 }
 
@@ -73,16 +51,11 @@ std::vector<int> fixed_levels(const RateJoin& join, const TsvTable& pub, TsvTabl
 // levels over which every two-level rate lies within the tolerance of the finest pair's.  A
 // least-squares line through a curved series measures its curvature, not a rate; through
 // this tail it measures the rate the series settles to.  Returns its first level.
-template <class Series>
-int transition_tail_start(const Series& s, double tolerance) {
+int transition_tail_start(const EvidenceSeries& s, double tolerance) {
   std::vector<int> lv;
   std::vector<double> rate;  // rate[i]: levels lv[i], lv[i+1]
   for (auto& [level, pt] : s) lv.push_back(level);
-  for (std::size_t i = 0; i + 1 < lv.size(); ++i) {
-    const auto& a = s.at(lv[i]);
-    const auto& b = s.at(lv[i + 1]);
-    rate.push_back(two_level_rate(a.x, a.y, b.x, b.y));
-  }
+  for (std::size_t i = 0; i + 1 < lv.size(); ++i) rate.push_back(series_rate(s, lv[i], lv[i + 1]));
   if (rate.empty() || !std::isfinite(rate.back())) return lv.empty() ? 0 : lv.back();
   std::size_t first = rate.size() - 1;
   while (first > 0 && std::isfinite(rate[first - 1]) && std::fabs(rate[first - 1] - rate.back()) <= tolerance)
@@ -109,8 +82,13 @@ std::string documents_levels_text(const TsvTable& published) {
   return std::to_string(a) + "," + std::to_string(b);
 }
 
-std::map<std::string, int> join_rates(const TsvTable& data, const TsvTable& pub,
-                                      const RateJoin& join, TsvTable& out) {
+const std::string& JoinedRates::key(const JoinedRate& r, const std::string& name) const {
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    if (keys[k] == name) return r.key[k];
+  throw InputError("joined rates: no key column '" + name + "'");
+}
+
+JoinedRates join_rates(const TsvTable& data, const TsvTable& pub, const RateJoin& join) {
   std::vector<int> dk, pk;
   for (auto& k : join.keys) dk.push_back(data.require_column(k));
   for (auto& k : join.keys) pk.push_back(pub.require_column(k));
@@ -123,92 +101,95 @@ std::map<std::string, int> join_rates(const TsvTable& data, const TsvTable& pub,
   // The document's two levels, where the published file names them.
   const std::string doc_levels = pub.get("rate_levels").value_or("");
 
-  // Per key: (level, x, y) sorted by level; where each came from, for a duplicate's message.
-  struct Point {
-    double x, y;
-    std::size_t row;
-  };
-  std::map<std::string, std::map<int, Point>> series;
+  // Per key: level → (h, error), every stored row (a rate of an error ≤ 0 is undefined, not
+  // left out); the data row of each level, for a duplicate's message.
+  std::map<std::string, EvidenceSeries> series;
+  std::map<std::string, std::map<int, std::size_t>> row_of;
   for (std::size_t i = 0; i < data.rows.size(); ++i) {
     const std::string key = key_of(data, i, dk);
-    const long long level = data.integer(i, cl);
-    const auto [it, fresh] = series[key].emplace(
-        static_cast<int>(level), Point{data.number(i, cx), data.number(i, cy), i});
+    const int level = static_cast<int>(data.integer(i, cl));
+    const auto [it, fresh] = row_of[key].emplace(level, i);
     if (!fresh)
       throw InputError(data.source + ": key '" + key + "' has two rows at level " +
-                       std::to_string(level) + " (data rows " + std::to_string(it->second.row + 1) +
+                       std::to_string(level) + " (data rows " + std::to_string(it->second + 1) +
                        " and " + std::to_string(i + 1) + ")");
+    series[key][level] = {data.number(i, cx), data.number(i, cy)};
   }
 
-  out.columns.insert(out.columns.end(), join.keys.begin(), join.keys.end());
-  for (const char* c : {"published", "theoretical", "reproduced", "difference", "lsq_slope",
-                        "lsq_half95", "lsq_points", "lsq_from", "levels", "h_ratio", "rate_before",
-                        "rate_after", "status", "reason"})
-    out.columns.push_back(c);
-  const std::vector<int> fixed = fixed_levels(join, pub, out);
-  std::map<std::string, int> counts;
+  JoinedRates out;
+  out.keys = join.keys;
+  const std::vector<int> fixed = fixed_levels(join, pub, out.fixed_levels);
   for (std::size_t i = 0; i < pub.rows.size(); ++i) {
-    const std::string key = key_of(pub, i, pk);
-    const double published = pub.number(i, cv);
-    std::string rep = "NA", diff = "NA", lsq = "NA", half = "NA", points = "0", from = "NA", levels = "",
-                ratio = "NA", before = "NA", after = "NA", status = "not-computed", why = "";
-    auto it = series.find(key);
+    JoinedRate r;
+    for (int c : pk) r.key.push_back(pub.text(i, c));
+    r.published = pub.number(i, cv);
+    if (ct >= 0) r.theoretical = pub.text(i, ct);
+    auto it = series.find(key_of(pub, i, pk));
     const bool have = it != series.end() &&
                       (fixed.empty() ? it->second.size() >= 2
                                      : it->second.count(fixed[0]) && it->second.count(fixed[1]));
     if (have) {
-      auto last = fixed.empty() ? std::prev(it->second.end()) : it->second.find(fixed[1]);
-      auto prev = fixed.empty() ? std::prev(last) : it->second.find(fixed[0]);
-      const double rate = two_level_rate(prev->second.x, prev->second.y, last->second.x,
-                                         last->second.y);
+      const EvidenceSeries& s = it->second;
+      r.computed = true;
+      r.level_hi = fixed.empty() ? std::prev(s.end())->first : fixed[1];
+      r.level_lo = fixed.empty() ? std::prev(s.end(), 2)->first : fixed[0];
+      r.reproduced = series_rate(s, r.level_lo, r.level_hi);
       // The least-squares slope over the levels past the transition only (three at least).
-      const int tail = transition_tail_start(it->second, join.tolerance);
+      r.lsq_from = transition_tail_start(s, join.tolerance);
       std::vector<double> xs, ys;
-      for (auto& [lv, pt] : it->second)
-        if (lv >= tail) xs.push_back(pt.x), ys.push_back(pt.y);
-      rep = fmt(rate);
-      from = std::to_string(tail);
-      points = fmt(static_cast<long long>(xs.size()));
+      for (auto& [lv, pt] : s)
+        if (lv >= r.lsq_from) xs.push_back(pt.h), ys.push_back(pt.error);
+      r.lsq_points = static_cast<long long>(xs.size());
       if (xs.size() >= 3) {
         const RateFit fit = least_squares_fit(xs, ys);
-        lsq = fmt(fit.slope), half = fmt(fit.half95), points = fmt(static_cast<long long>(fit.points));
+        r.fitted = true, r.lsq_slope = fit.slope, r.lsq_half95 = fit.half95;
+        r.lsq_points = static_cast<long long>(fit.points);
       }
-      levels = std::to_string(prev->first) + "," + std::to_string(last->first);
       // The pair's ratio of h, and our rate one level coarser and one finer: how far it moves
       // around the pair (the verdicts' "pre-asymptotic") and what a rate difference is as an
       // error ratio per level (their "near miss").
-      ratio = fmt(prev->second.x / last->second.x);
-      if (prev != it->second.begin()) {
-        const auto b = std::prev(prev);
-        if (b->first == prev->first - 1)
-          before = fmt(two_level_rate(b->second.x, b->second.y, prev->second.x, prev->second.y));
-      }
-      if (const auto a = std::next(last); a != it->second.end() && a->first == last->first + 1)
-        after = fmt(two_level_rate(last->second.x, last->second.y, a->second.x, a->second.y));
+      r.h_ratio = s.at(r.level_lo).h / s.at(r.level_hi).h;
+      r.rate_before = series_rate(s, r.level_lo - 1, r.level_lo);
+      r.rate_after = series_rate(s, r.level_hi, r.level_hi + 1);
       // NaN fails every comparison: tested first, or it would fall through to a reason.
-      if (!std::isfinite(rate) || !std::isfinite(published)) {
-        status = "undefined";
+      const std::string levels = std::to_string(r.level_lo) + "," + std::to_string(r.level_hi);
+      if (!std::isfinite(r.reproduced) || !std::isfinite(r.published)) {
+        r.status = "undefined";
       } else {
-        diff = fmt(rate - published);
+        r.difference = r.reproduced - r.published;
         if (!doc_levels.empty() && levels != doc_levels) {
-          status = "other-levels";
-          why = "rate from levels " + levels + "; the document's are " + doc_levels;
+          r.status = "other-levels";
+          r.reason = "rate from levels " + levels + "; the document's are " + doc_levels;
         } else {
-          status = std::fabs(rate - published) <= join.tolerance ? "agrees" : "differs";
+          r.status = std::fabs(r.difference) <= join.tolerance ? "agrees" : "differs";
         }
       }
     }
-    ++counts[status];
-    std::vector<std::string> row;
-    for (int c : pk) row.push_back(pub.text(i, c));
-    for (auto& s : {fmt(published), ct >= 0 ? pub.text(i, ct) : std::string("NA"), rep, diff, lsq,
-                    half, points, from, levels, ratio, before, after, status, why})
+    ++out.counts[r.status];
+    out.rows.push_back(std::move(r));
+  }
+  return out;
+}
+
+void write_joined(const JoinedRates& joined, TsvTable& out) {
+  out.columns.insert(out.columns.end(), joined.keys.begin(), joined.keys.end());
+  for (const char* c : {"published", "theoretical", "reproduced", "difference", "lsq_slope",
+                        "lsq_half95", "lsq_points", "lsq_from", "levels", "h_ratio", "rate_before",
+                        "rate_after", "status", "reason"})
+    out.columns.push_back(c);
+  if (!joined.fixed_levels.empty()) out.set("rate_levels", joined.fixed_levels);
+  for (const JoinedRate& r : joined.rows) {
+    std::vector<std::string> row = r.key;
+    const bool c = r.computed;
+    for (auto& s : {fmt(r.published), r.theoretical, c ? fmt(r.reproduced) : "NA", number_cell(r.difference),
+                    r.fitted ? fmt(r.lsq_slope) : "NA", r.fitted ? fmt(r.lsq_half95) : "NA",
+                    fmt(r.lsq_points), c ? std::to_string(r.lsq_from) : "NA",
+                    c ? std::to_string(r.level_lo) + "," + std::to_string(r.level_hi) : "",
+                    c ? fmt(r.h_ratio) : "NA", number_cell(r.rate_before), number_cell(r.rate_after), r.status, r.reason})
       row.push_back(s);
     out.add_row(row);
   }
-  for (auto& [s, n] : counts) out.set("count_" + s, fmt(n));
-  return counts;
+  for (auto& [s, n] : joined.counts) out.set("count_" + s, fmt(n));
 }
-
 
 }  // namespace gpm

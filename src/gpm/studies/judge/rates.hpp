@@ -19,12 +19,14 @@
 //                  levels): no agreement can be claimed
 //   not-computed   the data have fewer than two levels for this setting.
 #pragma once
+#include <cmath>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "gpm/io/tsv.hpp"
+#include "gpm/studies/judge/evidence.hpp"  // cell_number, EvidenceSeries
 
 namespace gpm {
 
@@ -43,13 +45,6 @@ std::string documents_levels_text(const TsvTable& published);  // "8,9"
 // "<who>: no published file PATH" where it is absent.
 TsvTable load_published(const std::string& path, const std::string& who);
 
-// A cell read as a number, the one reader the judges share (issue 57): a plain decimal (an
-// optional '-', digits and points, an optional exponent) and nothing else; false for NA, an
-// empty cell, nan, inf or a word (a document's "unstable").
-bool cell_number(const std::string& text, double& value);
-// The same, `otherwise` where the cell holds no number.
-double cell_number_or(const std::string& text, double otherwise);
-
 // A published `theoretical` cell as a rate; NaN where the document gives a word ("unstable":
 // Table 4.6's explicit series) or nothing.
 double theoretical_rate(const std::string& text);
@@ -67,14 +62,43 @@ struct RateJoin {
 };
 
 
-// Appends to `out` the columns (the keys, then published, theoretical, reproduced,
+// One published row joined with its stored series.  Numbers stay numbers: NaN (or -1 for a
+// level) where rate_table writes NA; only write_joined formats them.
+struct JoinedRate {
+  std::vector<std::string> key;  // the published row's cells in RateJoin::keys' order
+  double published = NAN;
+  std::string theoretical = "NA";  // as printed: a rate, NA or a word ("unstable")
+  bool computed = false;           // the series holds both levels of the pair
+  int level_lo = -1, level_hi = -1;
+  double reproduced = NAN, difference = NAN;  // difference: only where both rates are numbers
+  // The least-squares slope over the levels past the transition (fitted: three levels at
+  // least), the levels it had and the first of them.
+  bool fitted = false;
+  double lsq_slope = NAN, lsq_half95 = NAN;
+  long long lsq_points = 0;
+  int lsq_from = -1;
+  double h_ratio = NAN, rate_before = NAN, rate_after = NAN;  // before/after: NaN where no level
+  std::string status = "not-computed", reason = {};
+};
+
+struct JoinedRates {
+  std::vector<std::string> keys;  // RateJoin::keys
+  std::string fixed_levels;       // "A,B" where the join fixed them; empty: each series' finest
+  std::vector<JoinedRate> rows;   // one per published row, in the published file's order
+  std::map<std::string, int> counts;  // rows per status
+  // The cell of key column `name` of a row (InputError where the join has no such key).
+  const std::string& key(const JoinedRate& r, const std::string& name) const;
+};
+
+// The join: InputError (naming the file, by TsvTable::source) for a missing column, a cell
+// that is no number, two data rows with the same key and level, or levels that are not two
+// increasing ones.
+JoinedRates join_rates(const TsvTable& data, const TsvTable& published, const RateJoin& join);
+
+// The writer: appends to `out` the columns (the keys, then published, theoretical, reproduced,
 // difference, lsq_slope, lsq_half95, lsq_points, lsq_from, levels, h_ratio, rate_before,
-// rate_after, status, reason) and one row per published row, in the
-// published file's order; sets `out`'s rate_levels (fixed levels) and count_<status> lines.
-// Returns the rows per status.  InputError (naming the file, by TsvTable::source) for a
-// missing column, a cell that is no number, two data rows with the same key and level, or
-// levels that are not two increasing ones.
-std::map<std::string, int> join_rates(const TsvTable& data, const TsvTable& published,
-                                      const RateJoin& join, TsvTable& out);
+// rate_after, status, reason), one row per joined row, its rate_levels line (fixed levels)
+// and count_<status> lines.
+void write_joined(const JoinedRates& joined, TsvTable& out);
 
 }  // namespace gpm

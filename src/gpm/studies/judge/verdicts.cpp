@@ -114,8 +114,8 @@ RateKey band_key(const StoreRate& r) {
 std::map<RateKey, SeedBand> seed_bands(const std::vector<StoreRate>& rates) {
   std::map<RateKey, SeedBand> bands;
   for (const StoreRate& r : rates) {
-    double rate;
-    if ((r.setup != kDocumentSetup && r.setup != kJitterSetup) || !cell_number(r.reproduced, rate)) continue;
+    const double rate = r.reproduced;
+    if ((r.setup != kDocumentSetup && r.setup != kJitterSetup) || !std::isfinite(rate)) continue;
     SeedBand& b = bands[band_key(r)];
     b.lo = b.seeds == 0 ? rate : std::min(b.lo, rate);
     b.hi = b.seeds == 0 ? rate : std::max(b.hi, rate);
@@ -132,8 +132,8 @@ std::map<RateKey, SeedBand> seed_bands(const std::vector<StoreRate>& rates) {
 // published rate, so the pair is not comparable at the tolerance; else a gross difference,
 // unexplained.  Each reason states the tolerance at this pair as an error ratio.
 std::pair<Verdict, std::string> miss_of(const StoreRate& r, double tolerance) {
-  double ours = 0, published = 0;
-  if (!cell_number(r.reproduced, ours) || !cell_number(r.published, published) || !(r.h_ratio > 1))
+  const double ours = r.reproduced, published = r.published;
+  if (!std::isfinite(ours) || !std::isfinite(published) || !(r.h_ratio > 1))
     return {Verdict::unexplained, ""};
   const double tol_ratio = std::pow(r.h_ratio, tolerance) - 1;
   const double gap = std::pow(r.h_ratio, std::fabs(ours - published)) - 1;
@@ -161,7 +161,6 @@ std::pair<Verdict, std::string> verdict_of(const StoreRate& r, const SeedBand* b
   const RateKey place{r.table, r.slice, r.key};
   const auto blown = unstable.find(place);
   const bool differs = r.status.rfind("differs", 0) == 0;
-  double reproduced = 0, published = 0;
   if (r.status == "agrees") {
     // One realization agreeing decides nothing when the realizations spread wider than the
     // tolerance: seed 1 could as well have missed (the same rule as for a differing rate, and
@@ -179,13 +178,13 @@ std::pair<Verdict, std::string> verdict_of(const StoreRate& r, const SeedBand* b
   // the set-up decides: Table 4.6's h10 reading grows by -37 where the document prints -281).
   // Only the sign agrees, so it is not counted as reproduced.
   if (differs && r.theoretical == "unstable" && blown != unstable.end() &&
-      cell_number(r.reproduced, reproduced) && reproduced < 0 && cell_number_or(r.published, 0) < 0)
+      std::isfinite(r.reproduced) && r.reproduced < 0 && std::isfinite(r.published) && r.published < 0)
     return {Verdict::sign_only, "both unstable (" + blown->second + "), rate < 0 on both sides: sign only"};
   if (differs) {
     // Inside the band of the jitter realizations: a verdict only with enough of them and a
     // band no wider than the tolerance; otherwise the seeds cannot decide (more seeds only
     // widen a band already too wide).
-    if (band && cell_number(r.published, published) && published >= band->lo && published <= band->hi) {
+    if (band && std::isfinite(r.published) && r.published >= band->lo && r.published <= band->hi) {
       const double width = band->hi - band->lo;
       if (band->seeds >= kSeedBandDecides && width <= tolerance) return {Verdict::in_seed_band, ""};
       return {Verdict::indeterminate,
@@ -247,47 +246,39 @@ std::string slice_setup(const std::string& table, const std::string& slice) {
 }
 
 namespace {
-// A joined row's number cell; NaN where the column is absent or holds no number (NA: the
-// series has too few levels).
-double number_or_nan(const TsvTable& joined, std::size_t i, const char* name) {
-  const int c = joined.column(name);
-  return c >= 0 ? cell_number_or(joined.text(i, c), NAN) : NAN;
-}
-// A joined row's least-squares slope as StoreRate::lsq writes it.
-std::string lsq_text(const TsvTable& joined, std::size_t i) {
-  const double slope = number_or_nan(joined, i, "lsq_slope"), half = number_or_nan(joined, i, "lsq_half95");
-  const double points = number_or_nan(joined, i, "lsq_points"), from = number_or_nan(joined, i, "lsq_from");
-  if (!std::isfinite(slope)) return "";
+// A joined row's least-squares slope as the store's rate table shows it.
+std::string lsq_text(const JoinedRate& r) {
+  if (!r.fitted || !std::isfinite(r.lsq_slope)) return "";
+  const double points = static_cast<double>(r.lsq_points), from = r.lsq_from;
   char buf[80];
-  if (std::isfinite(half) && std::isfinite(from))
-    std::snprintf(buf, sizeof buf, "%.2f \u00b1 %.2f (levels %.0f-%.0f)", slope, half, from, from + points - 1);
+  if (std::isfinite(r.lsq_half95))
+    std::snprintf(buf, sizeof buf, "%.2f \u00b1 %.2f (levels %.0f-%.0f)", r.lsq_slope, r.lsq_half95, from,
+                  from + points - 1);
   else
-    std::snprintf(buf, sizeof buf, "%.2f (%.0f levels)", slope, points);
+    std::snprintf(buf, sizeof buf, "%.2f (%.0f levels)", r.lsq_slope, points);
   return buf;
 }
 }  // namespace
 
 std::vector<StoreRate> store_rates_of(const std::string& table, const std::string& slice,
-                                      const TsvTable& joined, const std::vector<std::string>& keys,
+                                      const JoinedRates& joined, const std::vector<std::string>& keys,
                                       bool claims_theoretical, const std::string& split_by) {
   const std::string setup = slice_setup(table, slice);
   std::vector<StoreRate> out;
-  for (std::size_t i = 0; i < joined.rows.size(); ++i) {
+  for (const JoinedRate& j : joined.rows) {
     StoreRate r;
     r.table = table, r.slice = slice, r.setup = setup;
-    for (auto& k : keys) r.key += (r.key.empty() ? "" : " ") + joined.text(i, k);
-    if (!split_by.empty()) r.slice = joined.text(i, split_by) + (slice == "all" ? "" : "_" + slice);
-    r.published = joined.text(i, "published");
-    r.reproduced = joined.text(i, "reproduced");
-    r.levels = joined.text(i, "levels");
-    r.lsq = lsq_text(joined, i);
-    r.h_ratio = number_or_nan(joined, i, "h_ratio");
-    r.rate_before = number_or_nan(joined, i, "rate_before");
-    r.rate_after = number_or_nan(joined, i, "rate_after");
-    r.status = setup == kDocumentSetup ? joined.text(i, "status") : "no published value for this set-up";
+    for (auto& k : keys) r.key += (r.key.empty() ? "" : " ") + joined.key(j, k);
+    if (!split_by.empty()) r.slice = joined.key(j, split_by) + (slice == "all" ? "" : "_" + slice);
+    r.published = j.published;
+    r.reproduced = j.computed ? j.reproduced : NAN;
+    r.levels = j.computed ? std::to_string(j.level_lo) + "," + std::to_string(j.level_hi) : "";
+    r.lsq = lsq_text(j);
+    r.h_ratio = j.h_ratio, r.rate_before = j.rate_before, r.rate_after = j.rate_after;
+    r.status = setup == kDocumentSetup ? j.status : "no published value for this set-up";
     // Only a printed NA means "no convergence claimed" (rate_table writes NA where the
     // published file has no theoretical column).
-    r.theoretical = claims_theoretical ? joined.text(i, "theoretical") : "";
+    r.theoretical = claims_theoretical ? j.theoretical : "";
     out.push_back(r);
   }
   return out;
@@ -400,7 +391,7 @@ TsvTable rates_table(const std::vector<JudgedRate>& rates) {
   for (const JudgedRate& j : rates) {
     TsvRow row = t.named_row();
     row["table"] = j.rate.table, row["slice"] = j.rate.slice, row["setup"] = j.rate.setup;
-    row["key"] = j.rate.key, row["published"] = j.rate.published, row["reproduced"] = j.rate.reproduced;
+    row["key"] = j.rate.key, row["published"] = fmt(j.rate.published), row["reproduced"] = number_cell(j.rate.reproduced);
     row["levels"] = j.rate.levels, row["lsq"] = j.rate.lsq, row["status"] = j.rate.status, row["seed_band"] = j.seed_band;
     row["verdict"] = verdict_name(j.verdict), row["reason"] = j.reason;
     row["printed"] = j.printed ? "yes" : "no", row["identified"] = j.identified ? "yes" : "no";
@@ -472,9 +463,8 @@ std::vector<Tally> slice_tallies(const std::vector<JudgedRate>& rates) {
     ++s->counts[j.identified ? j.verdict_identified : j.verdict];
     s->printed = s->printed || j.printed;
     s->identified = s->identified || j.identified;
-    double reproduced, published;
-    if (cell_number(r.reproduced, reproduced) && cell_number(r.published, published)) {
-      s->sum_difference += std::fabs(reproduced - published);
+    if (std::isfinite(r.reproduced) && std::isfinite(r.published)) {
+      s->sum_difference += std::fabs(r.reproduced - r.published);
       ++s->differences;
     }
   }
@@ -565,8 +555,7 @@ std::vector<StoreRate> store_rates(const StoreSnapshot& store, const std::string
     for (StoreSlice& slice : stored_slices(s, store)) {
       RateJoin join;
       join.keys = p.key, join.levels = "published", join.tolerance = tolerance;
-      TsvTable joined;
-      join_rates(p.finite_series ? finite_series(slice.data) : slice.data, pub, join, joined);
+      const JoinedRates joined = join_rates(p.finite_series ? finite_series(slice.data) : slice.data, pub, join);
       // A slice's name stays unique: a second one would replace the first, as a file would.
       slices[p.table + "." + slice.slice + ".tsv"] =
           store_rates_of(p.table, slice.slice, joined, p.rate_key(), pub.column("theoretical") >= 0, p.split_by);

@@ -69,6 +69,7 @@
 #include "gpm/io/tsv.hpp"
 #include "gpm/studies/define/heat_tables.hpp"
 #include "gpm/studies/define/registry.hpp"
+#include "gpm/studies/judge/rates.hpp"
 #include "gpm/studies/judge/snapshot.hpp"
 
 namespace gpm {
@@ -119,7 +120,9 @@ using RateKey = std::tuple<std::string, std::string, std::string>;
 // One published rate of one stored slice, as rates.hpp joined it (cells as rate_table writes
 // them).
 struct StoreRate {
-  std::string table, slice, setup, key, published, reproduced, levels;
+  std::string table, slice, setup, key;
+  double published = NAN, reproduced = NAN;  // reproduced: NaN where not computed (NA)
+  std::string levels;
   std::string status;       // rate_table's; for a set-up beyond the documents' "no published value …"
   std::string theoretical;  // the published theoretical rate; empty where the file has none
   // The least-squares slope over the levels past the transition (rates.hpp) with its 95 %
@@ -162,13 +165,13 @@ using CheckedReasons = std::map<RateKey, CheckedReason>;
 
 // The setup of a slice of `table` (see above).
 std::string slice_setup(const std::string& table, const std::string& slice);
-// The rows of `joined` (join_rates' output for `table`'s slice `slice`) as StoreRates keyed
+// The rows of `joined` (join_rates for `table`'s slice `slice`) as StoreRates keyed
 // by the columns `keys` (PublishedRates::rate_key()); `claims_theoretical`: the published
 // file has a theoretical column.  With `split_by` (PublishedRates::split_by: Table 4.4 prints
 // one rate per weight for both readings of h), a row's slice is led by that column's value
 // (h10, h15_seed2, h10_cell, …).
 std::vector<StoreRate> store_rates_of(const std::string& table, const std::string& slice,
-                                      const TsvTable& joined, const std::vector<std::string>& keys,
+                                      const JoinedRates& joined, const std::vector<std::string>& keys,
                                       bool claims_theoretical, const std::string& split_by = "");
 // The rows of the heat series (weight, theta) that never blew up: what a rate can come from.
 TsvTable finite_series(const TsvTable& heat);
