@@ -16,14 +16,33 @@ using namespace gpm;
 
 namespace {
 
-// A rate as rate_table would join it, its setup named after its slice.
+// The identity a registry file would give a fixture's slice (the fixtures name their slices
+// as the store does: "seed3" or "…_seed3" a realization, "plain", "cellvol", "…uniform…").
+SliceIdentity identity(const std::string& table, const std::string& slice) {
+  StoreFile f;
+  SliceIdentity id{slice, "", slice, 1};
+  if (const auto at = slice.rfind("seed"); at != std::string::npos) {
+    id.seed = std::stoi(slice.substr(at + 4));
+    id.band = at == 0 ? "all" : slice.substr(0, at - 1);
+    f.args = {"--seed", std::to_string(id.seed)};
+  }
+  if (slice == "plain") f.args = {"--jitter", "0"};
+  if (slice == "cellvol") f.args = {"--volumes", "cell"};
+  TsvTable rows;
+  if (slice.find("uniform") != std::string::npos) rows.columns = {"volumes"}, rows.add_row({"uniform"});
+  id.setup = slice_setup(table, f, rows);
+  return id;
+}
+
+// A rate as rate_table would join it, its setup and band those of its slice.
 StoreRate rate(const std::string& table, const std::string& slice, const std::string& key,
                const std::string& published, const std::string& reproduced, const std::string& status,
                const std::string& theoretical = "2") {
-  return {table, slice, slice_setup(table, slice), key, cell_number_or(published, NAN), cell_number_or(reproduced, NAN),
-          "11,12",
-          slice_setup(table, slice) == kDocumentSetup ? status : "no published value for this set-up",
-          theoretical};
+  const SliceIdentity id = identity(table, slice);
+  StoreRate r{table, slice, id.setup, key, cell_number_or(published, NAN), cell_number_or(reproduced, NAN),
+              "11,12", id.seed, id.band, id.setup == kDocumentSetup ? status : "no published value for this set-up",
+              theoretical};
+  return r;
 }
 
 // The judged row of (table, slice, key).
@@ -69,11 +88,19 @@ TEST_CASE("verdicts: one name and one score column per verdict", "[unit][verdict
   CHECK(verdict_column(Verdict::sign_only) == "sign_only");
   CHECK(scored_verdicts().front() == Verdict::agrees);
   CHECK(scored_verdicts().back() == Verdict::indeterminate);
-  CHECK(slice_setup("imoto_table1", "seed4") == kJitterSetup);
-  CHECK(slice_setup("thesis_table4_1", "printed_voronoi_seed2") == kJitterSetup);
-  CHECK(slice_setup("thesis_table4_1", "printed_uniform_seed2") == "beyond the document (uniform volumes)");
-  CHECK(slice_setup("imoto_table1", "cellvol") == "delta-free volumes (V_i = dx^2)");
-  CHECK(slice_setup("thesis_table4_4", "cellvol") == kDocumentSetup);
+  // The set-up from the file's arguments and the slice's rows, whatever the names say.
+  const StoreFile seed4{.name = "any", .slice = "all", .args = {"--seed", "4"}};
+  const StoreFile cell{.name = "seed7", .slice = "seed7", .args = {"--volumes", "cell"}};
+  const StoreFile plain{.name = "x", .slice = "y", .args = {"--jitter", "0"}};
+  TsvTable voronoi, uniform;
+  voronoi.columns = uniform.columns = {"volumes"};
+  voronoi.add_row({"voronoi"}), uniform.add_row({"uniform"});
+  CHECK(slice_setup("imoto_table1", seed4, {}) == kJitterSetup);
+  CHECK(slice_setup("thesis_table4_1", seed4, voronoi) == kJitterSetup);
+  CHECK(slice_setup("thesis_table4_1", seed4, uniform) == "beyond the document (uniform volumes)");
+  CHECK(slice_setup("imoto_table1", cell, {}) == "delta-free volumes (V_i = dx^2)");
+  CHECK(slice_setup("imoto_table1", plain, {}) == "plain grid (no jitter)");
+  CHECK(slice_setup("thesis_table4_4", cell, {}) == kDocumentSetup);
 }
 
 TEST_CASE("verdicts: the seed band decides only with 5 realizations within the tolerance", "[unit][verdicts]") {
@@ -160,7 +187,9 @@ TEST_CASE("verdicts: a heat series unstable at both rate levels", "[unit][verdic
   CHECK(finite.rows.size() == 4);  // the quartic theta = 0 series is gone, both its rows
   RateJoin join;
   join.keys = {"weight", "theta"}, join.levels = "published";
-  const auto j = judge(store_rates_of("thesis_table4_6", "h10", join_rates(finite, pub, join), join.keys, true), unstable);
+  const auto j = judge(store_rates_of("thesis_table4_6", identity("thesis_table4_6", "h10"), join_rates(finite, pub, join),
+                                      join.keys, true),
+                       unstable);
 
   const JudgedRate& blown = row(j, "thesis_table4_6", "h10", "quartic_polynomial 0");
   CHECK(blown.rate.status == "not-computed");
@@ -301,8 +330,8 @@ TEST_CASE("verdicts: a non-convergence is judged by the seed band like any agree
   // rate, the other realizations spread 0.4 wide: the realizations cannot decide.
   std::vector<StoreRate> wide = {rate("imoto_table1", "all", "Pi2 1", "-0.1", "-0.05", "agrees", "NA")};
   for (const char* other : {"0.2", "-0.2", "0.1"}) wide.push_back(rate("imoto_table1", "seed2", "Pi2 1", "-0.1", other, "differs", "NA"));
-  wide[2].slice = "seed3", wide[2].setup = slice_setup("imoto_table1", "seed3");
-  wide[3].slice = "seed4", wide[3].setup = slice_setup("imoto_table1", "seed4");
+  wide[2] = rate("imoto_table1", "seed3", "Pi2 1", "-0.1", "-0.2", "differs", "NA");
+  wide[3] = rate("imoto_table1", "seed4", "Pi2 1", "-0.1", "0.1", "differs", "NA");
   CHECK(row(judge(wide), "imoto_table1", "all", "Pi2 1").verdict == Verdict::indeterminate);
   // Alone (or with a narrow band) it is a reproduced non-convergence.
   CHECK(row(judge({wide[0]}), "imoto_table1", "all", "Pi2 1").verdict == Verdict::non_convergence);

@@ -15,7 +15,7 @@
 #include "gpm/studies/judge/heat_mode_model.hpp"
 #include "gpm/studies/judge/mode_constants.hpp"
 #include "gpm/studies/judge/rates.hpp"
-#include "gpm/studies/judge/verdicts.hpp"  // seed_files, published_file
+#include "gpm/studies/judge/verdicts.hpp"  // published_file
 
 namespace gpm {
 
@@ -36,22 +36,16 @@ using Realized = std::map<int, std::map<int, Point>>;
 using Key = std::pair<std::string, std::string>;
 using SeriesPoints = std::map<Key, Realized>;
 
-// The realization a store file holds: its registered arguments' --seed (what its program ran
-// with), 1 where they name none; not decoded from the slice's name.
-int seed_of(const StoreFile& f) {
-  for (std::size_t i = 0; i + 1 < f.args.size(); ++i)
-    if (f.args[i] == "--seed") return static_cast<int>(parse_integer(f.args[i + 1], f.name + " --seed", 1, 1 << 30));
-  return 1;
-}
-
 // The store files of a slice, its realizations and (Table 4.4) its τ-PCG companions, plain
 // CG's first: a level both hold is read from plain CG (the reference).
 std::vector<const StoreFile*> slice_files(const RegisteredStudy& study, const StoreFile& main) {
   std::vector<const StoreFile*> out = {&main};
-  for (const StoreFile* f : seed_files(study, main.slice)) out.push_back(f);
+  for (const StoreFile* f : realizations_of(study, main)) out.push_back(f);
   for (const StoreFile& f : study.store_files)
-    if (f.slice == main.slice + "_tau") out.push_back(&f);
-  for (const StoreFile* f : seed_files(study, main.slice + "_tau")) out.push_back(f);
+    if (file_seed(f) == file_seed(main) && file_solver(f) != file_solver(main) && setup_args(f) == setup_args(main)) {
+      out.push_back(&f);
+      for (const StoreFile* g : realizations_of(study, f)) out.push_back(g);
+    }
   return out;
 }
 
@@ -71,7 +65,7 @@ SeriesPoints poisson_points(const StoreSnapshot& store, const RegisteredStudy& s
     for (std::size_t i = 0; i < t.rows.size(); ++i) {
       const double e = t.number(i, ce), h = t.number(i, ch);
       if (!std::isfinite(e) || e <= 0) continue;
-      add_point(s, {t.text(i, cr), t.text(i, cw)}, seed_of(*f), static_cast<int>(t.integer(i, cl)),
+      add_point(s, {t.text(i, cr), t.text(i, cw)}, file_seed(*f), static_cast<int>(t.integer(i, cl)),
                 {h, e, poisson_mode_error(weight(t.text(i, cw)), h, 0.0), solver});
     }
   }
@@ -85,7 +79,7 @@ SeriesPoints heat_points(const StoreSnapshot& store, const RegisteredStudy& stud
     if (!store.has(f->name + ".tsv")) continue;
     for (const ModeRow& r : mode_model(store.table(f->name + ".tsv", false)))
       if (std::isfinite(r.measured) && r.measured > 0)
-        add_point(s, {r.weight, r.theta}, seed_of(*f), r.level, {r.h, r.measured, r.predicted, "cg"});
+        add_point(s, {r.weight, r.theta}, file_seed(*f), r.level, {r.h, r.measured, r.predicted, "cg"});
   }
   return s;
 }

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "gpm/io/args.hpp"  // parse_integer
 #include "gpm/operators/norms.hpp"  // two_level_rate
 
 namespace gpm {
@@ -45,6 +46,46 @@ EvidenceSeriesMap read_series(const TsvTable& t, const std::vector<std::string>&
     out[key][static_cast<int>(t.integer(i, cl))] = {t.number(i, ch), e};
   }
   return out;
+}
+
+namespace {
+// The value of option `name` in a file's arguments; none where they do not name it.
+const std::string* arg_value(const StoreFile& f, const std::string& name) {
+  for (std::size_t i = 0; i + 1 < f.args.size(); i += 2)
+    if (f.args[i] == name) return &f.args[i + 1];
+  return nullptr;
+}
+}  // namespace
+
+int file_seed(const StoreFile& f) {
+  const std::string* v = arg_value(f, "--seed");
+  return v ? static_cast<int>(parse_integer(*v, f.name + " --seed", 1, 1 << 30)) : 1;
+}
+
+std::vector<std::string> setup_args(const StoreFile& f) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i + 1 < f.args.size(); i += 2)
+    if (f.args[i] != "--seed" && f.args[i] != "--solver") out.insert(out.end(), {f.args[i], f.args[i + 1]});
+  return out;
+}
+
+std::string file_solver(const StoreFile& f) {
+  const std::string* v = arg_value(f, "--solver");
+  return v ? *v : "";
+}
+
+std::vector<const StoreFile*> realizations_of(const RegisteredStudy& study, const StoreFile& f) {
+  std::vector<const StoreFile*> out;
+  for (const StoreFile& g : study.store_files)
+    if (&g != &f && file_seed(g) != file_seed(f) && file_solver(g) == file_solver(f) && setup_args(g) == setup_args(f))
+      out.push_back(&g);
+  return out;
+}
+
+const StoreFile* seed_one_of(const RegisteredStudy& study, const StoreFile& f) {
+  for (const StoreFile& g : study.store_files)
+    if (file_seed(g) == 1 && file_solver(g) == file_solver(f) && setup_args(g) == setup_args(f)) return &g;
+  return nullptr;
 }
 
 std::string number_cell(double v) { return std::isnan(v) ? "NA" : fmt(v); }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "gpm/io/tsv.hpp"
+#include "gpm/studies/define/registry.hpp"
 
 namespace gpm {
 
@@ -24,6 +25,22 @@ bool cell_number(const std::string& text, double& value);
 double cell_number_or(const std::string& text, double otherwise);
 // A number for a writer: NA for NaN (what the judges read as no number), else fmt().
 std::string number_cell(double v);
+
+// A store file's identity, from its registered arguments (what its program ran with), never
+// from its name or its slice's.
+// The jitter realization: --seed, 1 where the arguments name none.
+int file_seed(const StoreFile& f);
+// The arguments that fix its numbers' set-up: its own, less --seed (the realization) and
+// --solver (a path to the same numbers, kStoreSolverPathRelTol apart).
+std::vector<std::string> setup_args(const StoreFile& f);
+// The solver its rows were computed by: --solver, "" where the arguments name none (plain CG).
+std::string file_solver(const StoreFile& f);
+// The other jitter realizations of `f`'s set-up and solver: the study's files with f's
+// set-up arguments and solver and another seed than f's, in the registry's order.
+std::vector<const StoreFile*> realizations_of(const RegisteredStudy& study, const StoreFile& f);
+// The file of `f`'s set-up and solver at seed 1 (f itself there); none where the study keeps
+// no such file.
+const StoreFile* seed_one_of(const RegisteredStudy& study, const StoreFile& f);
 
 // One stored error: the influence radius and the relative error of its level.
 struct EvidencePoint {

@@ -20,7 +20,7 @@ std::string two(double v) {
 // reading (those make the band) and not the open rate's own slice.
 bool other_reading(const JudgedRate& j, const JudgedRate& open) {
   return j.rate.table == open.rate.table && j.rate.key == open.rate.key && j.rate.slice != open.rate.slice &&
-         j.rate.setup != kJitterSetup && j.rate.slice.find("seed") == std::string::npos;
+         j.rate.setup != kJitterSetup && j.rate.seed == 1;
 }
 
 }  // namespace

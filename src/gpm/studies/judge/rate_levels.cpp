@@ -13,7 +13,7 @@
 #include "gpm/studies/judge/evidence.hpp"
 #include "gpm/studies/judge/rates.hpp"
 #include "gpm/studies/define/registry.hpp"
-#include "gpm/studies/judge/verdicts.hpp"  // seed_files
+#include "gpm/studies/judge/verdicts.hpp"
 
 namespace gpm {
 
@@ -83,7 +83,7 @@ const TsvTable& stored_or_refuse(const StoreSnapshot& store, const std::string& 
   return store.table(name, false);
 }
 
-// The series of a store file and of its stored jitter realizations (`<file>_seedN`).
+// The series of a store file and of its stored jitter realizations (realizations_of).
 struct Realizations {
   EvidenceSeriesMap seed1;
   std::vector<EvidenceSeriesMap> others;
@@ -91,7 +91,7 @@ struct Realizations {
 Realizations realizations(const StoreSnapshot& store, const RegisteredStudy& study, const StoreFile& file,
                           const std::string& key1, const std::string& key2) {
   Realizations r{read_series(stored_or_refuse(store, file.name + ".tsv"), {key1, key2}), {}};
-  for (const StoreFile* f : seed_files(study, file.slice))
+  for (const StoreFile* f : realizations_of(study, file))
     if (store.has(f->name + ".tsv")) r.others.push_back(read_series(store.table(f->name + ".tsv", false), {key1, key2}));
   return r;
 }

@@ -51,7 +51,7 @@ double setup_fingerprint_distance(const TsvTable& data, const std::pair<std::str
 }
 
 // The distances of a reading over its stored jitter realizations: seed 1 (its main file) and
-// every store file of the study whose slice is "<reading>_seed<N>" and is in the store.
+// every stored file of another realization of the reading's file (realizations_of).
 struct DistanceBand {
   int seeds = 0;
   double lo = kInf, hi = -kInf;
@@ -62,7 +62,8 @@ DistanceBand distance_band(const StoreSnapshot& store, const RegisteredStudy& st
                            const std::map<std::string, double>& published, int l1, int l2) {
   DistanceBand b;
   b.add(seed1);
-  for (const StoreFile* f : seed_files(study, reading))
+  const StoreFile* file = study.find_store_file_of(reading);
+  for (const StoreFile* f : file ? realizations_of(study, *file) : std::vector<const StoreFile*>{})
     if (store.has(f->name + ".tsv")) b.add(setup_fingerprint_distance(store.table(f->name + ".tsv"), fp, published, l1, l2));
   return b;
 }

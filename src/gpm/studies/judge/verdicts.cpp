@@ -89,28 +89,14 @@ const std::string& cell_or_empty(const TsvTable& t, std::size_t row, int col) {
 }
 
 // The seed band of a rate: the reproduced rates of its seed-1 slice and of the same slice of
-// the other seeds (slice_seedN; imoto: seedN beside "all").
+// the other seeds (the same band: realizations_of).
 struct SeedBand {
   int seeds = 0;
   double lo = 0, hi = 0;
 };
-// The realization a slice's name ends in: "seed2" of "printed_voronoi_seed2" (imoto: "seed2"
-// beside "all"), or "" for seed 1.
-std::string seed_of(const std::string& slice) {
-  const auto at = slice.rfind("seed");
-  if (at == std::string::npos || at + 4 == slice.size()) return "";
-  for (std::size_t i = at + 4; i < slice.size(); ++i)
-    if (!std::isdigit(static_cast<unsigned char>(slice[i]))) return "";
-  return slice.substr(at);
-}
-RateKey band_key(const StoreRate& r) {
-  std::string s = r.slice;
-  const std::string seed = seed_of(s);
-  s.erase(s.size() - seed.size());
-  if (!seed.empty() && !s.empty() && s.back() == '_') s.pop_back();
-  if (s.empty() && r.table == "imoto_table1") s = "all";
-  return {r.table, s, r.key};
-}
+// A rate's band: the same rate of its slice at seed 1 and of that slice's other realizations
+// (StoreRate::band, from the files' arguments).
+RateKey band_key(const StoreRate& r) { return {r.table, r.band, r.key}; }
 std::map<RateKey, SeedBand> seed_bands(const std::vector<StoreRate>& rates) {
   std::map<RateKey, SeedBand> bands;
   for (const StoreRate& r : rates) {
@@ -237,11 +223,20 @@ const std::vector<Verdict>& scored_verdicts() {
   return v;
 }
 
-std::string slice_setup(const std::string& table, const std::string& slice) {
-  if (slice.find("uniform") != std::string::npos) return "beyond the document (uniform volumes)";
-  if (!seed_of(slice).empty()) return kJitterSetup;
-  if (slice == "plain") return "plain grid (no jitter)";
-  if (table == "imoto_table1" && slice == "cellvol") return "delta-free volumes (V_i = dx^2)";
+std::string slice_setup(const std::string& table, const StoreFile& file, const TsvTable& rows) {
+  const int cv = rows.column("volumes");
+  bool uniform = cv >= 0 && !rows.rows.empty();
+  for (std::size_t i = 0; uniform && i < rows.rows.size(); ++i) uniform = rows.text(i, cv) == "uniform";
+  if (uniform) return "beyond the document (uniform volumes)";
+  if (file_seed(file) != 1) return kJitterSetup;
+  const std::vector<std::string> args = setup_args(file);
+  auto names = [&](const char* option, const char* value) {
+    for (std::size_t i = 0; i + 1 < args.size(); i += 2)
+      if (args[i] == option && args[i + 1] == value) return true;
+    return false;
+  };
+  if (names("--jitter", "0")) return "plain grid (no jitter)";
+  if (table == "imoto_table1" && names("--volumes", "cell")) return "delta-free volumes (V_i = dx^2)";
   return kDocumentSetup;
 }
 
@@ -260,16 +255,18 @@ std::string lsq_text(const JoinedRate& r) {
 }
 }  // namespace
 
-std::vector<StoreRate> store_rates_of(const std::string& table, const std::string& slice,
+std::vector<StoreRate> store_rates_of(const std::string& table, const SliceIdentity& id,
                                       const JoinedRates& joined, const std::vector<std::string>& keys,
                                       bool claims_theoretical, const std::string& split_by) {
-  const std::string setup = slice_setup(table, slice);
+  const std::string& slice = id.slice;
+  const std::string& setup = id.setup;
   std::vector<StoreRate> out;
   for (const JoinedRate& j : joined.rows) {
     StoreRate r;
-    r.table = table, r.slice = slice, r.setup = setup;
+    r.table = table, r.slice = slice, r.setup = setup, r.seed = id.seed, r.band = id.band;
     for (auto& k : keys) r.key += (r.key.empty() ? "" : " ") + joined.key(j, k);
-    if (!split_by.empty()) r.slice = joined.key(j, split_by) + (slice == "all" ? "" : "_" + slice);
+    auto led = [&](const std::string& x) { return joined.key(j, split_by) + (x == "all" ? "" : "_" + x); };
+    if (!split_by.empty()) r.slice = led(slice), r.band = led(id.band);
     r.published = j.published;
     r.reproduced = j.computed ? j.reproduced : NAN;
     r.levels = j.computed ? std::to_string(j.level_lo) + "," + std::to_string(j.level_hi) : "";
@@ -417,16 +414,6 @@ std::optional<std::string> reading_file(const RegisteredStudy& study, const std:
   return std::nullopt;
 }
 
-std::vector<const StoreFile*> seed_files(const RegisteredStudy& study, const std::string& reading) {
-  std::vector<const StoreFile*> out;
-  const std::string prefix = reading + "_seed";
-  for (const StoreFile& f : study.store_files)
-    if (f.slice.size() > prefix.size() && f.slice.rfind(prefix, 0) == 0 &&
-        f.slice.find_first_not_of("0123456789", prefix.size()) == std::string::npos)
-      out.push_back(&f);
-  return out;
-}
-
 std::string published_file(const std::string& published_dir, const std::string& table,
                            const StudyRegistry& registry) {
   for (auto& s : registry)
@@ -530,15 +517,30 @@ TsvTable score_table(const std::vector<JudgedRate>& rates, const std::string& pu
   return t;
 }
 
-std::vector<StoreSlice> stored_slices(const RegisteredStudy& s, const StoreSnapshot& store) {
-  std::vector<StoreSlice> out;
+std::vector<IdentifiedSlice> stored_slices(const RegisteredStudy& s, const StoreSnapshot& store) {
+  std::vector<IdentifiedSlice> out;
+  const PublishedRates* p = s.published ? &*s.published : nullptr;
   for (const StoreFile& f : s.store_files) {
     if (!store.has(f.name + ".tsv")) continue;
     const TsvTable& data = store.table(f.name + ".tsv");
-    if (s.published && s.published->cut) {
-      for (StoreSlice& slice : s.published->cut(f, data)) out.push_back(std::move(slice));
+    // The band's name: the slice the seed-1 file of the same set-up gives for the same rows.
+    const StoreFile* one = seed_one_of(s, f);
+    std::vector<StoreSlice> slices, bands;
+    if (p && p->cut) {
+      slices = p->cut(f, data);
+      if (one) bands = p->cut(*one, data);
     } else {
-      out.push_back({f.slice, data});
+      slices = {{f.slice, data}};
+      if (one) bands = {{one->slice, {}}};
+    }
+    for (std::size_t k = 0; k < slices.size(); ++k) {
+      IdentifiedSlice is;
+      is.id.slice = slices[k].slice;
+      is.id.setup = slice_setup(p ? p->table : s.name, f, slices[k].data);
+      is.id.seed = file_seed(f);
+      is.id.band = k < bands.size() ? bands[k].slice : slices[k].slice;
+      is.data = std::move(slices[k].data);
+      out.push_back(std::move(is));
     }
   }
   return out;
@@ -552,13 +554,13 @@ std::vector<StoreRate> store_rates(const StoreSnapshot& store, const std::string
     if (!s.published) continue;
     const PublishedRates& p = *s.published;
     const TsvTable pub = TsvTable::load(published_dir + "/" + p.file);
-    for (StoreSlice& slice : stored_slices(s, store)) {
+    for (IdentifiedSlice& slice : stored_slices(s, store)) {
       RateJoin join;
       join.keys = p.key, join.levels = "published", join.tolerance = tolerance;
       const JoinedRates joined = join_rates(p.finite_series ? finite_series(slice.data) : slice.data, pub, join);
       // A slice's name stays unique: a second one would replace the first, as a file would.
-      slices[p.table + "." + slice.slice + ".tsv"] =
-          store_rates_of(p.table, slice.slice, joined, p.rate_key(), pub.column("theoretical") >= 0, p.split_by);
+      slices[p.table + "." + slice.id.slice + ".tsv"] =
+          store_rates_of(p.table, slice.id, joined, p.rate_key(), pub.column("theoretical") >= 0, p.split_by);
     }
   }
   std::vector<StoreRate> out;
@@ -573,9 +575,9 @@ UnstableSeries store_unstable_series(const StoreSnapshot& store, const std::stri
   for (auto& s : registry) {
     if (!s.published || !s.published->finite_series) continue;
     std::optional<std::string> levels;
-    for (StoreSlice& slice : stored_slices(s, store)) {
+    for (IdentifiedSlice& slice : stored_slices(s, store)) {
       if (!levels) levels = documents_levels_text(TsvTable::load(published_dir + "/" + s.published->file));
-      add_unstable_series(s.published->table, slice.slice, slice.data, *levels, out);
+      add_unstable_series(s.published->table, slice.id.slice, slice.data, *levels, out);
     }
   }
   return out;

@@ -123,6 +123,8 @@ struct StoreRate {
   std::string table, slice, setup, key;
   double published = NAN, reproduced = NAN;  // reproduced: NaN where not computed (NA)
   std::string levels;
+  int seed = 1;        // the jitter realization of its file (file_seed)
+  std::string band;    // the slice of its seed band: its own slice at seed 1 (seed_one_of)
   std::string status;       // rate_table's; for a set-up beyond the documents' "no published value …"
   std::string theoretical;  // the published theoretical rate; empty where the file has none
   // The least-squares slope over the levels past the transition (rates.hpp) with its 95 %
@@ -163,14 +165,25 @@ using CheckedReasons = std::map<RateKey, CheckedReason>;
 
 // --- The pieces, on tables in memory ---------------------------------------------------------
 
-// The setup of a slice of `table` (see above).
-std::string slice_setup(const std::string& table, const std::string& slice);
+// The setup of a slice of `table` (see above), from its file's registered arguments and its
+// rows (Tables 4.1-4.3 cut uniform volumes by the rows' `volumes`), never from a name.
+std::string slice_setup(const std::string& table, const StoreFile& file, const TsvTable& rows);
+// Who a stored slice is: its name, set-up, realization and the slice of its realization at
+// seed 1 (its seed band's name), all from its file's registered arguments.
+struct SliceIdentity {
+  std::string slice, setup, band;
+  int seed = 1;
+};
+struct IdentifiedSlice {
+  SliceIdentity id;
+  TsvTable data;
+};
 // The rows of `joined` (join_rates for `table`'s slice `slice`) as StoreRates keyed
 // by the columns `keys` (PublishedRates::rate_key()); `claims_theoretical`: the published
 // file has a theoretical column.  With `split_by` (PublishedRates::split_by: Table 4.4 prints
 // one rate per weight for both readings of h), a row's slice is led by that column's value
 // (h10, h15_seed2, h10_cell, …).
-std::vector<StoreRate> store_rates_of(const std::string& table, const std::string& slice,
+std::vector<StoreRate> store_rates_of(const std::string& table, const SliceIdentity& slice,
                                       const JoinedRates& joined, const std::vector<std::string>& keys,
                                       bool claims_theoretical, const std::string& split_by = "");
 // The rows of the heat series (weight, theta) that never blew up: what a rate can come from.
@@ -211,14 +224,11 @@ std::string stored_file(const std::string& study, const std::string& slice = "",
 // The store file (NAME.tsv) of a set-up reading (RegisteredStudy::store_file_of), none where
 // the study keeps no file of it.
 std::optional<std::string> reading_file(const RegisteredStudy& study, const std::string& reading);
-// The store files of a reading's other jitter realizations: the study's slices
-// "<reading>_seed<N>", in the registry's order.
-std::vector<const StoreFile*> seed_files(const RegisteredStudy& study, const std::string& reading);
 std::string published_file(const std::string& published_dir, const std::string& table,
                            const StudyRegistry& registry = study_registry());
 // The slices of a study's files in the store (its store_files that are there, each cut by
 // its published rates' cut, else one slice).
-std::vector<StoreSlice> stored_slices(const RegisteredStudy& study, const StoreSnapshot& store);
+std::vector<IdentifiedSlice> stored_slices(const RegisteredStudy& study, const StoreSnapshot& store);
 // Every slice of every stored study file of the registry's studies with published rates
 // (stored_slices, then store_rates_of), in the order of their names "table.slice".
 std::vector<StoreRate> store_rates(const StoreSnapshot& store, const std::string& published_dir,
