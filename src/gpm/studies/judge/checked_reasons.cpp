@@ -13,7 +13,6 @@
 
 #include "gpm/error.hpp"
 #include "gpm/io/text_format.hpp"
-#include "gpm/operators/norms.hpp"
 #include "gpm/operators/testfunctions.hpp"
 #include "gpm/studies/judge/rates.hpp"
 #include "gpm/studies/judge/verdicts.hpp"
@@ -103,10 +102,10 @@ void add_volume_mismatch_reasons(const TsvTable& pub, const TsvTable& diag, doub
       continue;
     }
     auto num = [&](std::optional<std::size_t> row, int col) { return diag.number(*row, col); };
-    const double rl = two_level_rate(num(a1, c_h), num(a1, c_err), num(a2, c_h), num(a2, c_err));
-    const double rp =
-        two_level_rate(num(a1, c_h), std::fabs(num(a1, c_tau)), num(a2, c_h), std::fabs(num(a2, c_tau)));
-    const double rc = two_level_rate(num(c1, c_h), num(c1, c_err), num(c2, c_h), num(c2, c_err));
+    auto point = [&](std::optional<std::size_t> row, double value) { return EvidencePoint{num(row, c_h), value}; };
+    const double rl = point_rate(point(a1, num(a1, c_err)), point(a2, num(a2, c_err)));
+    const double rp = point_rate(point(a1, std::fabs(num(a1, c_tau))), point(a2, std::fabs(num(a2, c_tau))));
+    const double rc = point_rate(point(c1, num(c1, c_err)), point(c2, num(c2, c_err)));
     const double p = pub.number(i, c_pub);
     const bool restores = std::fabs(rc - p) <= tol;
     add(out, "thesis_table4_4", r, w,
@@ -136,8 +135,8 @@ void add_gradient_smoothing_reasons(const TsvTable& pub, const TsvTable& data, c
                                  });
   for (auto& [w, v] : rows) {
     const double q1 = v[0].error / v[0].smoothing, q2 = v[1].error / v[1].smoothing;
-    const double rr = two_level_rate(v[0].h, v[0].error, v[1].h, v[1].error);
-    const double re = two_level_rate(v[0].h, v[0].smoothing, v[1].h, v[1].smoothing);
+    const double rr = point_rate(v[0], v[1], &SmoothingPoint::error);
+    const double re = point_rate(v[0], v[1], &SmoothingPoint::smoothing);
     const double p = cell_number_or(published.at(w), NAN);
     const bool own = std::fabs(q1 - 1) <= kGradientSmoothingShare && std::fabs(q2 - 1) <= kGradientSmoothingShare;
     const bool out_of_reach = std::fabs(p - re) > tol;
@@ -162,8 +161,8 @@ void add_interpolant_smoothing_reasons(const TsvTable& pub, const TsvTable& data
                                  });
   for (auto& [w, v] : rows) {
     const double q1 = v[0].smoothing / v[0].error, q2 = v[1].smoothing / v[1].error;
-    const double rr = two_level_rate(v[0].h, v[0].error, v[1].h, v[1].error);
-    const double rs = two_level_rate(v[0].h, v[0].smoothing, v[1].h, v[1].smoothing);
+    const double rr = point_rate(v[0], v[1], &SmoothingPoint::error);
+    const double rs = point_rate(v[0], v[1], &SmoothingPoint::smoothing);
     const double p = cell_number_or(published.at(w), NAN);
     // Checked when the smoothing part is a small share of the error at both levels and the
     // published rate is the smoothing part's own (what an error made of it alone would give).

@@ -13,7 +13,6 @@
 #include "gpm/error.hpp"
 #include "gpm/io/text_format.hpp"
 #include "gpm/geometry/domain.hpp"
-#include "gpm/operators/norms.hpp"
 #include "gpm/operators/testfunctions.hpp"
 #include "gpm/studies/judge/rates.hpp"
 #include "gpm/studies/judge/verdicts.hpp"
@@ -197,8 +196,9 @@ void poisson_volume_question(const StoreSnapshot& store, const std::string& pub_
       for (const char* v : {"seed1", "plain", "seed1_cell", "plain_cell"}) {
         auto e8 = err.find({r, w, "8", v}), e9 = err.find({r, w, "9", v});
         if (e8 == err.end() || e9 == err.end()) continue;
-        line += format_text(" %s %.2f", v, two_level_rate(at(h, std::pair<std::string, std::string>{r, "8"}), e8->second,
-                                                     at(h, std::pair<std::string, std::string>{r, "9"}), e9->second));
+        line += format_text(" %s %.2f", v,
+                            point_rate(EvidencePoint{at(h, std::pair<std::string, std::string>{r, "8"}), e8->second},
+                                       EvidencePoint{at(h, std::pair<std::string, std::string>{r, "9"}), e9->second}));
       }
       if (line.empty()) continue;
       auto p = published.find({r, w});
@@ -269,13 +269,13 @@ void imoto_smoothing_question(const StoreSnapshot& store, const std::string& pub
                    shown("plain", "not computed").c_str(), pred[l], eps[l], delta, shown("seed1", "-").c_str(),
                    shown("seed2", "-").c_str(), shown("seed3", "-").c_str());
     }
+    auto rate_11_12 = [&](double e11, double e12) { return point_rate(EvidencePoint{h[11], e11}, EvidencePoint{h[12], e12}); };
     std::string r = " rates 2^-11/2^-12:";
     for (const char* v : {"seed1", "seed2", "seed3", "plain"})
-      if (cell(11, v) && cell(12, v)) r += format_text(" %s %.2f", v, two_level_rate(h[11], *cell(11, v), h[12], *cell(12, v)));
+      if (cell(11, v) && cell(12, v)) r += format_text(" %s %.2f", v, rate_11_12(*cell(11, v), *cell(12, v)));
     if (h.count(11) && h.count(12))
-      r += format_text(", predicted (plain) %.2f, eps alone %.2f (published %s).",
-                  two_level_rate(h[11], pred[11], h[12], pred[12]), two_level_rate(h[11], eps[11], h[12], eps[12]),
-                  pubrate.c_str());
+      r += format_text(", predicted (plain) %.2f, eps alone %.2f (published %s).", rate_11_12(pred[11], pred[12]),
+                       rate_11_12(eps[11], eps[12]), pubrate.c_str());
     add_question(out, "Imoto Table 1, " + w + " at m = 5: smoothing, volume mismatch and particles", ev + r,
                  "the plain-grid error is the consistency error |(1 + delta)(1 - eps) - 1| of the operator (no "
                  "particle part); the jittered seeds add the particle part, which shrinks fastest between 2^-11 and "

@@ -90,10 +90,12 @@ const StoreFile* seed_one_of(const RegisteredStudy& study, const StoreFile& f) {
 
 std::string number_cell(double v) { return std::isnan(v) ? "NA" : fmt(v); }
 
+double point_rate(const EvidencePoint& a, const EvidencePoint& b) { return two_level_rate(a.h, a.error, b.h, b.error); }
+
 double series_rate(const EvidenceSeries& s, int lo, int hi) {
   const auto a = s.find(lo), b = s.find(hi);
   if (a == s.end() || b == s.end()) return std::numeric_limits<double>::quiet_NaN();
-  return two_level_rate(a->second.h, a->second.error, b->second.h, b->second.error);
+  return point_rate(a->second, b->second);
 }
 
 double error_constant(const EvidencePoint& pt, double p) { return pt.error / std::pow(pt.h, p); }

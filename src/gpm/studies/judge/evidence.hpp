@@ -8,6 +8,7 @@
 // read their series and take their rates and constants here; the published-rate join
 // (rates.hpp), the checked reasons, the heat mode model and the decisions still read cells.
 #pragma once
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -56,6 +57,16 @@ using EvidenceSeriesMap = std::map<std::vector<std::string>, EvidenceSeries>;
 // blown-up series) is left out.
 EvidenceSeriesMap read_series(const TsvTable& t, const std::vector<std::string>& keys,
                               const std::string& error = "rel_error");
+
+// The rate between two points, log(e_a/e_b)/log(h_a/h_b): the judges' one rate formula (every
+// rate a judge states comes through here).
+double point_rate(const EvidencePoint& a, const EvidencePoint& b);
+// The same for any quantity of two points that carry h (a member pointer or a function of the
+// point): the rate of an error, of its smoothing part, of a prediction.
+template <class Point, class Quantity>
+double point_rate(const Point& a, const Point& b, Quantity q) {
+  return point_rate(EvidencePoint{a.h, std::invoke(q, a)}, EvidencePoint{b.h, std::invoke(q, b)});
+}
 
 // The rate log(e_lo/e_hi)/log(h_lo/h_hi) between two stored levels; NaN where the series
 // lacks either.

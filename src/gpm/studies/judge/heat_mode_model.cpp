@@ -8,7 +8,7 @@
 #include "gpm/error.hpp"
 #include "gpm/geometry/domain.hpp"
 #include "gpm/geometry/volumes.hpp"
-#include "gpm/operators/norms.hpp"
+#include "gpm/studies/judge/evidence.hpp"  // point_rate
 #include "gpm/theory/smoothing.hpp"
 #include "gpm/weights/weights.hpp"
 
@@ -75,12 +75,13 @@ std::vector<ModeRate> mode_rates(const HeatTable& t, const std::vector<ModeRow>&
     const ModeRow& f = *m.at({key.first, lf});
     ModeRate r;
     r.key = key.first;
-    r.reproduced = two_level_rate(c->h, c->measured, f.h, f.measured);
-    r.predicted = two_level_rate(c->h, c->predicted, f.h, f.predicted);
-    r.no_mismatch = two_level_rate(c->h, c->no_mismatch, f.h, f.no_mismatch);
+    r.reproduced = point_rate(*c, f, &ModeRow::measured);
+    r.predicted = point_rate(*c, f, &ModeRow::predicted);
+    r.no_mismatch = point_rate(*c, f, &ModeRow::no_mismatch);
     // The V_i = Δx² run's rate against the data's own h: the same particles' radii.
     if (mc.count({key.first, lc}) && mc.count({key.first, lf}))
-      r.cell = two_level_rate(c->h, mc.at({key.first, lc})->measured, f.h, mc.at({key.first, lf})->measured);
+      r.cell = point_rate(EvidencePoint{c->h, mc.at({key.first, lc})->measured},
+                          EvidencePoint{f.h, mc.at({key.first, lf})->measured});
     r.ratio_coarse = c->measured / c->predicted;
     r.ratio_fine = f.measured / f.predicted;
     r.mismatch_coarse = c->mismatch;
