@@ -305,7 +305,7 @@ int cmd_store_add_columns(int argc, char** argv) {
 
 // The rate-against-level view as written: the rates per pair of levels and (second) the
 // finding per series, each with the header lines that say how they were computed.
-std::pair<TsvTable, TsvTable> rate_levels_tables(const StoreSnapshot& store, const std::string& published) {
+std::pair<TsvTable, TsvTable> rate_levels_tables(const StoreSnapshot& store, const PublishedTables& published) {
   const RateLevels r = rate_levels(store, published);
   const Lines lines = {{"tolerance", fmt(kRateTolerance)},
                        {"rate", "log(e1/e2)/log(h1/h2) of rel_error (4.2) between consecutive stored levels"},
@@ -323,7 +323,7 @@ std::pair<TsvTable, TsvTable> rate_levels_tables(const StoreSnapshot& store, con
 }
 
 // The open set-up questions as written (decisions.hpp), `score` the boards' counts.
-TsvTable decisions_table(const StoreSnapshot& store, const std::string& published, const std::string& diagnostics,
+TsvTable decisions_table(const StoreSnapshot& store, const PublishedTables& published, const std::string& diagnostics,
                          const std::optional<TsvTable>& score) {
   TsvTable table = decisions(store, published, diagnostics, score);
   table.meta = verdicts_header("gpm decisions", store.dir(), false, {{"store", store.dir()}}).meta;
@@ -406,19 +406,20 @@ int cmd_store_rates(int argc, char** argv) {
   require_directories({{"store", a.str("store")}, {"published", pub}});
   // One read of the store: every judgement below reads its files from this snapshot.
   const StoreSnapshot store(a.str("store"), StoreChecks::store);  // the store's door (snapshot.hpp)
+  const PublishedTables published(pub);  // and one read of each published file
   // The checked reasons, computed from the same store in this pass (one read of the store
   // judges every rate; the reasons' files are outputs).
   const bool computed = !a.has("no-reasons");
   if (!computed && (!a.str("reasons").empty() || !a.str("reasons-by-mechanism").empty()))
     throw InputError("--reasons and --reasons-by-mechanism write the reasons computed here: not with --no-reasons");
-  const TsvTable reasons = computed ? checked_reasons(store, pub, kRateTolerance) : TsvTable{};
+  const TsvTable reasons = computed ? checked_reasons(store, published, kRateTolerance) : TsvTable{};
   const CheckedReasons checked = a.has("no-reasons") ? CheckedReasons{} : passed_reasons(reasons);
 
   // The reading of Chapter 4 that Table 4.6's theta = 0 rates identify (paper/04-setup-rule.md).
   const RegisteredStudy& fp = setup_fingerprint_study(study_registry());
-  SetupIdentification ident = identify_setup(store, fp, TsvTable::load(published_file(pub, fp.published->table)));
-  const std::vector<JudgedRate> judged = judge_rates(store_rates(store, pub, kRateTolerance),
-                                                     store_unstable_series(store, pub), checked,
+  SetupIdentification ident = identify_setup(store, fp, published.file(fp.published->file));
+  const std::vector<JudgedRate> judged = judge_rates(store_rates(store, published, kRateTolerance),
+                                                     store_unstable_series(store, published), checked,
                                                      kRateTolerance, ident.identified);
   auto with_header = [&](TsvTable t, const std::string& program, const Lines& lines) {
     return headed(std::move(t), verdicts_header(program, store.dir(), /*store_rows=*/true, lines));
@@ -440,7 +441,7 @@ int cmd_store_rates(int argc, char** argv) {
         with_header(store_summary(store), "gpm store-rates (summary)",
                     {{"store", store.dir()},
                      {"current", "rows whose code column is the fingerprint of this build's program (gpm fingerprint)"}}));
-  const TsvTable score = score_table(judged, pub);
+  const TsvTable score = score_table(judged, published);
   if (!a.str("score").empty())
     outputs.emplace_back(
         a.str("score"),
@@ -480,14 +481,14 @@ int cmd_store_rates(int argc, char** argv) {
     outputs.emplace_back(a.str("ident"), ident.table);
   }
   if (!a.str("decisions").empty())
-    outputs.emplace_back(a.str("decisions"), decisions_table(store, pub, a.str("diagnostics"), score));
+    outputs.emplace_back(a.str("decisions"), decisions_table(store, published, a.str("diagnostics"), score));
   if (!a.str("rate-levels").empty() || !a.str("findings").empty()) {
-    auto [rates, findings] = rate_levels_tables(store, pub);
+    auto [rates, findings] = rate_levels_tables(store, published);
     if (!a.str("rate-levels").empty()) outputs.emplace_back(a.str("rate-levels"), std::move(rates));
     if (!a.str("findings").empty()) outputs.emplace_back(a.str("findings"), std::move(findings));
   }
   if (!a.str("constants").empty() || !a.str("constant-findings").empty()) {
-    ErrorConstants ec = error_constants(store, pub, a.str("diagnostics"));
+    ErrorConstants ec = error_constants(store, published, a.str("diagnostics"));
     const Lines lines = {{"constant", "rel_error / h^p, p the theory's rate"},
                          {"model", "the one-mode prediction / h^p (Table 4.4: R eps/((1-eps)), R = max|u - phi| = " +
                                        fmt(poisson_boundary_factor()) + "; heat: thesis_heat_mode_model)"},

@@ -34,3 +34,16 @@ TEST_CASE("store snapshot: each file read once, at its first ask", "[unit][store
   CHECK_THROWS_WITH(TsvTable::load(store.path("a.tsv")), Catch::Contains("a.tsv line 2: 1 cells for 2 columns"));
   CHECK(store.files_read() == 2);
 }
+
+TEST_CASE("published tables: each file read once for a judging pass", "[unit][store]") {
+  TempDir tmp("gpm_published_");
+  std::ofstream(tmp.dir / "t_long.tsv") << "# rate_levels = 8,9\nweight\tnumerical\nquartic\t2\n";
+  const PublishedTables pub(tmp.dir.string());
+  CHECK(pub.files_read() == 0);
+  const TsvTable& t = pub.file("t_long.tsv");
+  CHECK(t.get("rate_levels") == "8,9");
+  CHECK(&pub.file("t_long.tsv") == &t);
+  CHECK(pub.files_read() == 1);
+  CHECK_THROWS_WITH(pub.file("u_long.tsv"), Catch::Contains("no published file") && Catch::Contains("u_long.tsv"));
+  CHECK(pub.files_read() == 1);
+}

@@ -277,7 +277,7 @@ TEST_CASE("verdicts: the printed and identified boards, with the fingerprint row
   int others = 0;
   for (const char* t : {"imoto_table1", "thesis_table4_1", "thesis_table4_2", "thesis_table4_3", "thesis_table4_4",
                         "thesis_table4_5", "thesis_table4_7"})
-    others += static_cast<int>(TsvTable::load(published_file(published_dir, t)).rows.size());
+    others += static_cast<int>(published_table(published_dir, t).rows.size());
   CHECK(score_cell(score, "total", "as printed", "rates") == fmt(2 + others));
   CHECK(score_cell(score, "total", "as printed", "agrees") == "1");
   CHECK(score_cell(score, "total", "as printed", "unexplained") == "1");

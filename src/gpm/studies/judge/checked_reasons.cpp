@@ -206,12 +206,12 @@ void add_heat_mode_reasons(const std::string& table, const std::string& slice, c
   }
 }
 
-TsvTable checked_reasons(const StoreSnapshot& store, const std::string& published_dir, double tol) {
+TsvTable checked_reasons(const StoreSnapshot& store, const PublishedTables& published_tables, double tol) {
   TsvTable out;
   out.columns = checked_reason_columns();
   auto stored = [&](const std::string& name) { return store.has(name); };
   auto load = [&](const std::string& name) -> const TsvTable& { return store.table(name); };
-  auto published = [&](const std::string& table) { return TsvTable::load(published_file(published_dir, table)); };
+  auto published = [&](const std::string& table) -> const TsvTable& { return published_table(published_tables, table); };
 
   if (const std::string diagnostic = stored_file("thesis_poisson_diagnostic"); stored(diagnostic)) {
     const TsvTable& diag = load(diagnostic);

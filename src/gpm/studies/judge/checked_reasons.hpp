@@ -95,7 +95,7 @@ void add_heat_mode_reasons(const std::string& table, const std::string& slice, c
 // Table 4.4 where the diagnostic has tau_predicted, Tables 4.3 and 4.2 in the printed then the
 // scaled reading, then the heat tables 4.5-4.7 in the readings h10 and h10_exact (each with
 // the V_i = dx^2 run of the same time-step rule, where stored).  Files not stored give no rows.
-TsvTable checked_reasons(const StoreSnapshot& store, const std::string& published_dir, double tolerance);
+TsvTable checked_reasons(const StoreSnapshot& store, const PublishedTables& published, double tolerance);
 
 // The reasons collapsed to one row per mechanism, in the order they first occur (columns
 // mechanism, rows, checked, passed, restores): `rows` lists every "table slice" the mechanism

@@ -85,7 +85,7 @@ double mean_distance(const TsvTable& r) {
   return s / static_cast<double>(r.rows.size());
 }
 
-void time_step_question(const StoreSnapshot& store, const std::string& pub_dir, TsvTable& out) {
+void time_step_question(const StoreSnapshot& store, const PublishedTables& pub, TsvTable& out) {
   const RegisteredStudy& table47 = study_registry().study("thesis_table4_7");
   auto reading = [&](const std::string& name) {
     const std::optional<std::string> file = reading_file(table47, name);
@@ -96,7 +96,7 @@ void time_step_question(const StoreSnapshot& store, const std::string& pub_dir, 
     add_question(out, "Table 4.7 (dt = 0.5h, T = 0.1): dt = T/K or dt = dt0", "not yet in the store", "open");
     return;
   }
-  const TsvTable published = TsvTable::load(published_file(pub_dir, "thesis_table4_7"));
+  const TsvTable& published = published_table(pub, "thesis_table4_7");
   std::string ev, verdict;
   for (const auto& [levels, shown] : {std::pair<std::string, std::string>{"7,8", "7/8"}, {"8,9", "8/9"}}) {
     const TsvTable f = heat_rates(*fit, published, levels), e = heat_rates(*ex, published, levels);
@@ -140,13 +140,13 @@ void time_step_question(const StoreSnapshot& store, const std::string& pub_dir, 
 // ------------------------------------------------------------------------------------------
 // Table 4.4: what sets the error.
 
-void poisson_volume_question(const StoreSnapshot& store, const std::string& pub_dir, TsvTable& out) {
+void poisson_volume_question(const StoreSnapshot& store, const PublishedTables& tables, TsvTable& out) {
   const TsvTable* diag = stored_if(store, stored_file("thesis_poisson_diagnostic"));
   if (!diag || diag->column("tau_predicted") < 0) {
     add_question(out, "Table 4.4: the volumes of (A.10)", "not yet in the store", "open");
     return;
   }
-  const TsvTable pub = TsvTable::load(published_file(pub_dir, "thesis_table4_4"));
+  const TsvTable& pub = published_table(tables, "thesis_table4_4");
   std::map<std::pair<std::string, std::string>, std::string> published;  // (h rule, weight)
   for (std::size_t i = 0; i < pub.rows.size(); ++i)
     published[{pub.text(i, "h_rule"), pub.text(i, "weight")}] = pub.text(i, "numerical");
@@ -226,11 +226,11 @@ std::vector<std::pair<std::string, const TsvTable*>> imoto_realizations(const St
   return files;
 }
 
-void imoto_smoothing_question(const StoreSnapshot& store, const std::string& pub_dir, TsvTable& out) {
+void imoto_smoothing_question(const StoreSnapshot& store, const PublishedTables& published, TsvTable& out) {
   if (!store.has(stored_file("imoto_fig5_table1", "plain"))) return;
   const auto files = imoto_realizations(store);
   const double area_H = Domain{}.area_H();
-  const TsvTable pub = TsvTable::load(published_file(pub_dir, "imoto_table1"));
+  const TsvTable& pub = published_table(published, "imoto_table1");
   for (const std::string w : {"Lap1", "Lap2"}) {
     // Per level: each realization's error, and h, N, dx (the last file's row of the level).
     std::map<std::pair<int, std::string>, double> e;
@@ -422,13 +422,13 @@ void omega_h_question(TsvTable& out) {
 
 }  // namespace
 
-TsvTable decisions(const StoreSnapshot& store, const std::string& published_dir, const std::string& diagnostics,
+TsvTable decisions(const StoreSnapshot& store, const PublishedTables& published, const std::string& diagnostics,
                    const std::optional<TsvTable>& score) {
   TsvTable out;
   out.columns = {"question", "evidence", "decision"};
-  time_step_question(store, published_dir, out);
-  poisson_volume_question(store, published_dir, out);
-  imoto_smoothing_question(store, published_dir, out);
+  time_step_question(store, published, out);
+  poisson_volume_question(store, published, out);
+  imoto_smoothing_question(store, published, out);
   imoto_where_question(store, diagnostics, out);
   if (score) readings_question(*score, out);
   omega_h_question(out);

@@ -35,7 +35,7 @@ namespace gpm {
 // The rows for the store `store`, published values from `published_dir`; `score` adds the
 // readings' rows (none when absent).  InputError for a store file that cannot be read or
 // lacks a column a question needs.
-TsvTable decisions(const StoreSnapshot& store, const std::string& published_dir, const std::string& diagnostics,
+TsvTable decisions(const StoreSnapshot& store, const PublishedTables& published, const std::string& diagnostics,
                    const std::optional<TsvTable>& score);
 
 }  // namespace gpm

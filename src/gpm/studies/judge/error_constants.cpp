@@ -15,7 +15,7 @@
 #include "gpm/studies/judge/heat_mode_model.hpp"
 #include "gpm/studies/judge/mode_constants.hpp"
 #include "gpm/studies/judge/rates.hpp"
-#include "gpm/studies/judge/verdicts.hpp"  // published_file
+#include "gpm/studies/judge/verdicts.hpp"
 
 namespace gpm {
 
@@ -183,7 +183,7 @@ TrendFinding judge_constant(double q_before, double q_finest) {
   return {Trend::not_decided, said + ": off the model but still shrinking"};
 }
 
-ErrorConstants error_constants(const StoreSnapshot& store, const std::string& published,
+ErrorConstants error_constants(const StoreSnapshot& store, const PublishedTables& published,
                                const std::string& diagnostics) {
   ErrorConstants out;
   out.constants.columns = {"table", "reading", "weight", "theta", "seed", "level", "h", "rel_error", "solver",
@@ -194,7 +194,7 @@ ErrorConstants error_constants(const StoreSnapshot& store, const std::string& pu
   const StudyRegistry& reg = study_registry();
   {  // Table 4.4, V_i = Δx² (the identified volumes), both h rules
     const RegisteredStudy& study = reg.study("thesis_table4_4");
-    const TsvTable pub = load_published(published_file(published, study.published->table), "error constants");
+    const TsvTable& pub = published.file(study.published->file);
     const SeriesPoints pts = poisson_points(store, study);
     const std::map<std::string, Projected> projected = {
         {"h10", projected_excess(diagnostics, "mode_excess_poisson_h10_cell.tsv")},
@@ -211,7 +211,7 @@ ErrorConstants error_constants(const StoreSnapshot& store, const std::string& pu
   const Projected heat_projected = projected_excess(diagnostics, "mode_excess_heat_h15_cell.tsv");
   for (const HeatTable& hp : heat_tables()) {
     const RegisteredStudy& study = reg.study(heat_study_name(hp));
-    const TsvTable pub = load_published(published_file(published, study.published->table), "error constants");
+    const TsvTable& pub = published.file(study.published->file);
     for (const std::string reading : {"h10", "h15_cell_exact"}) {
       const SeriesPoints pts = heat_points(store, study, reading);
       for (std::size_t i = 0; i < pub.rows.size(); ++i) {

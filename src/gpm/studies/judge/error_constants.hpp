@@ -42,7 +42,7 @@ TrendFinding judge_constant(double q_before, double q_finest);
 struct ErrorConstants {
   TsvTable constants, findings;
 };
-ErrorConstants error_constants(const StoreSnapshot& store, const std::string& published,
+ErrorConstants error_constants(const StoreSnapshot& store, const PublishedTables& published,
                                const std::string& diagnostics = "");
 
 }  // namespace gpm

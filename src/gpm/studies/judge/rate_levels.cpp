@@ -158,11 +158,11 @@ void add_series(RateLevels& out, const SeriesLabel& label, const Realizations& r
 }
 
 // Tables 4.5–4.7 under the printed reading (h10) and the identified one (h15_cell_exact).
-void heat_rate_levels(RateLevels& out, const StoreSnapshot& store, const std::string& published) {
+void heat_rate_levels(RateLevels& out, const StoreSnapshot& store, const PublishedTables& published) {
   const StudyRegistry& reg = study_registry();
   for (const HeatTable& hp : heat_tables()) {
     const RegisteredStudy& study = reg.study(heat_study_name(hp));
-    const TsvTable pub = load_published(published_file(published, study.published->table), "rate levels");
+    const TsvTable& pub = published.file(study.published->file);
     const auto doc_levels = documents_levels(pub);
     for (const std::string reading : {"h10", "h15_cell_exact"}) {
       const Realizations reals = realizations(store, study, study.store_file_of(reading), "weight", "theta");
@@ -178,9 +178,9 @@ void heat_rate_levels(RateLevels& out, const StoreSnapshot& store, const std::st
 
 // Table 4.4 (the Poisson problem, no θ) under both h rules with V_i = Δx², the volumes the
 // set-up rule identifies: one file holds both rules (readings h10_cell and h15_cell).
-void poisson_rate_levels(RateLevels& out, const StoreSnapshot& store, const std::string& published) {
+void poisson_rate_levels(RateLevels& out, const StoreSnapshot& store, const PublishedTables& published) {
   const RegisteredStudy& study = study_registry().study("thesis_table4_4");
-  const TsvTable pub = load_published(published_file(published, study.published->table), "rate levels");
+  const TsvTable& pub = published.file(study.published->file);
   const auto doc_levels = documents_levels(pub);
   const Realizations reals = realizations(store, study, study.store_file_of("h15_cell"), "h_rule", "weight");
   for (std::size_t p = 0; p < pub.rows.size(); ++p) {
@@ -193,7 +193,7 @@ void poisson_rate_levels(RateLevels& out, const StoreSnapshot& store, const std:
 
 }  // namespace
 
-RateLevels rate_levels(const StoreSnapshot& store, const std::string& published) {
+RateLevels rate_levels(const StoreSnapshot& store, const PublishedTables& published) {
   RateLevels out;
   out.rates.columns = {"table", "reading", "weight", "theta", "level_lo", "level_hi", "pair", "rate", "band_lo",
                        "band_hi", "seeds", "published", "theoretical", "where"};

@@ -51,6 +51,6 @@ TrendFinding judge_trend(const std::vector<double>& rates, double theory, bool f
 struct RateLevels {
   TsvTable rates, findings;
 };
-RateLevels rate_levels(const StoreSnapshot& store, const std::string& published);
+RateLevels rate_levels(const StoreSnapshot& store, const PublishedTables& published);
 
 }  // namespace gpm

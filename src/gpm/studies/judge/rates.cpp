@@ -14,11 +14,6 @@
 
 namespace gpm {
 
-TsvTable load_published(const std::string& path, const std::string& who) {
-  if (!std::filesystem::exists(path)) throw InputError(who + ": no published file " + path);
-  return TsvTable::load(path, false);
-}
-
 double theoretical_rate(const std::string& text) {
   return cell_number_or(text, std::numeric_limits<double>::quiet_NaN());
 }

@@ -41,9 +41,6 @@ inline constexpr double kRateTolerance = 0.15;
 std::pair<int, int> documents_levels(const TsvTable& published);
 std::string documents_levels_text(const TsvTable& published);  // "8,9"
 
-// A study's published file read for a judge (`who` leads the message): InputError
-// "<who>: no published file PATH" where it is absent.
-TsvTable load_published(const std::string& path, const std::string& who);
 
 // A published `theoretical` cell as a rate; NaN where the document gives a word ("unstable":
 // Table 4.6's explicit series) or nothing.

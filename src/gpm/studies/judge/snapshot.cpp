@@ -94,6 +94,16 @@ const TsvTable& StoreSnapshot::table(const std::string& name, bool whole_rows) c
   return it->second;
 }
 
+const TsvTable& PublishedTables::file(const std::string& name) const {
+  auto it = tables_.find(name);
+  if (it == tables_.end()) {
+    const std::string path = dir_ + "/" + name;
+    if (!std::filesystem::exists(path)) throw InputError("no published file " + path);
+    it = tables_.emplace(name, TsvTable::load(path)).first;
+  }
+  return it->second;
+}
+
 std::vector<std::string> StoreSnapshot::data_files() const {
   std::vector<std::string> files;
   for (const auto& e : std::filesystem::directory_iterator(dir_)) {

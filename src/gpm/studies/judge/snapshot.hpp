@@ -25,6 +25,25 @@ namespace gpm {
 
 enum class StoreChecks { none, store };
 
+// The documents' published rates (tables/published) for a judging pass: each file read once,
+// on the first ask, as the store's are.  A judge called with a folder's name reads through a
+// snapshot of its own (the conversion is implicit on purpose: the unit tests' fixtures).
+class PublishedTables {
+ public:
+  PublishedTables(std::string dir) : dir_(std::move(dir)) {}  // NOLINT(google-explicit-constructor)
+  PublishedTables(const char* dir) : dir_(dir) {}             // NOLINT(google-explicit-constructor)
+  const std::string& dir() const { return dir_; }
+  // The published file `name` (imoto_table1.tsv, thesis_table4_4_long.tsv); InputError
+  // "no published file PATH" where it is absent.
+  const TsvTable& file(const std::string& name) const;
+  // How many files this snapshot has read from disk.
+  std::size_t files_read() const { return tables_.size(); }
+
+ private:
+  std::string dir_;
+  mutable std::map<std::string, TsvTable> tables_;
+};
+
 class StoreSnapshot {
  public:
   // The store folder `dir` (not read until a file is asked for).

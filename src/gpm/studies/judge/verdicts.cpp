@@ -414,10 +414,10 @@ std::optional<std::string> reading_file(const RegisteredStudy& study, const std:
   return std::nullopt;
 }
 
-std::string published_file(const std::string& published_dir, const std::string& table,
-                           const StudyRegistry& registry) {
+const TsvTable& published_table(const PublishedTables& published, const std::string& table,
+                                const StudyRegistry& registry) {
   for (auto& s : registry)
-    if (s.published && s.published->table == table) return published_dir + "/" + s.published->file;
+    if (s.published && s.published->table == table) return published.file(s.published->file);
   throw InputError("no registered study has the published table '" + table + "'");
 }
 
@@ -462,7 +462,7 @@ std::vector<Tally> slice_tallies(const std::vector<JudgedRate>& rates) {
 // board has no stored rows of counts its published rates not computed: as many as the printed
 // board counts (Table 4.4's file lists each weight once per reading of h), else the rows of
 // its published file.
-Tally board_tally(const std::vector<JudgedRate>& rates, bool identified, const std::string& published_dir,
+Tally board_tally(const std::vector<JudgedRate>& rates, bool identified, const PublishedTables& published,
                   const StudyRegistry& registry) {
   Tally total;
   total.table = "total", total.slice = identified ? "as identified" : "as printed", total.setup = kDocumentSetup;
@@ -479,7 +479,7 @@ Tally board_tally(const std::vector<JudgedRate>& rates, bool identified, const s
     if (!tables.count(table))
       total.counts[Verdict::not_computed] +=
           printed_rows.count(table) ? printed_rows[table]
-                                    : static_cast<int>(TsvTable::load(published_file(published_dir, table, registry)).rows.size());
+                                    : static_cast<int>(published_table(published, table, registry).rows.size());
   for (Verdict v : scored_verdicts()) total.rows += total.counts[v];
   return total;
 }
@@ -502,7 +502,7 @@ void add_score_row(TsvTable& t, Tally& tally) {
 
 }  // namespace
 
-TsvTable score_table(const std::vector<JudgedRate>& rates, const std::string& published_dir,
+TsvTable score_table(const std::vector<JudgedRate>& rates, const PublishedTables& published,
                      const StudyRegistry& registry) {
   TsvTable t;
   t.columns = {"table", "slice", "setup", "printed", "identified", "counted", "rates"};
@@ -511,7 +511,7 @@ TsvTable score_table(const std::vector<JudgedRate>& rates, const std::string& pu
   t.columns.push_back("mean_abs_diff");
   for (Tally& s : slice_tallies(rates)) add_score_row(t, s);
   for (bool identified : {false, true}) {
-    Tally total = board_tally(rates, identified, published_dir, registry);
+    Tally total = board_tally(rates, identified, published, registry);
     add_score_row(t, total);
   }
   return t;
@@ -546,14 +546,14 @@ std::vector<IdentifiedSlice> stored_slices(const RegisteredStudy& s, const Store
   return out;
 }
 
-std::vector<StoreRate> store_rates(const StoreSnapshot& store, const std::string& published_dir,
+std::vector<StoreRate> store_rates(const StoreSnapshot& store, const PublishedTables& published,
                                    double tolerance, const StudyRegistry& registry) {
   // Per slice, named "table.slice": its rows (the slices in the order of their names).
   std::map<std::string, std::vector<StoreRate>> slices;
   for (auto& s : registry) {
     if (!s.published) continue;
     const PublishedRates& p = *s.published;
-    const TsvTable pub = TsvTable::load(published_dir + "/" + p.file);
+    const TsvTable& pub = published.file(p.file);
     for (IdentifiedSlice& slice : stored_slices(s, store)) {
       RateJoin join;
       join.keys = p.key, join.levels = "published", join.tolerance = tolerance;
@@ -568,7 +568,7 @@ std::vector<StoreRate> store_rates(const StoreSnapshot& store, const std::string
   return out;
 }
 
-UnstableSeries store_unstable_series(const StoreSnapshot& store, const std::string& published_dir,
+UnstableSeries store_unstable_series(const StoreSnapshot& store, const PublishedTables& published,
                                      const StudyRegistry& registry) {
   UnstableSeries out;
   // The studies whose rates come from the series that never blew up (the heat tables).
@@ -576,7 +576,7 @@ UnstableSeries store_unstable_series(const StoreSnapshot& store, const std::stri
     if (!s.published || !s.published->finite_series) continue;
     std::optional<std::string> levels;
     for (IdentifiedSlice& slice : stored_slices(s, store)) {
-      if (!levels) levels = documents_levels_text(TsvTable::load(published_dir + "/" + s.published->file));
+      if (!levels) levels = documents_levels_text(published.file(s.published->file));
       add_unstable_series(s.published->table, slice.id.slice, slice.data, *levels, out);
     }
   }

@@ -210,7 +210,7 @@ TsvTable rates_table(const std::vector<JudgedRate>& rates);
 // |reproduced - published|; then one total row per board.  A board without rows of a table
 // counts its published rates (the printed board's rows of it, else the rows of its published
 // file in `published_dir`) not computed.
-TsvTable score_table(const std::vector<JudgedRate>& rates, const std::string& published_dir,
+TsvTable score_table(const std::vector<JudgedRate>& rates, const PublishedTables& published,
                      const StudyRegistry& registry = study_registry());
 
 // --- From the store ----------------------------------------------------------------------------
@@ -224,17 +224,17 @@ std::string stored_file(const std::string& study, const std::string& slice = "",
 // The store file (NAME.tsv) of a set-up reading (RegisteredStudy::store_file_of), none where
 // the study keeps no file of it.
 std::optional<std::string> reading_file(const RegisteredStudy& study, const std::string& reading);
-std::string published_file(const std::string& published_dir, const std::string& table,
-                           const StudyRegistry& registry = study_registry());
+const TsvTable& published_table(const PublishedTables& published, const std::string& table,
+                                const StudyRegistry& registry = study_registry());
 // The slices of a study's files in the store (its store_files that are there, each cut by
 // its published rates' cut, else one slice).
 std::vector<IdentifiedSlice> stored_slices(const RegisteredStudy& study, const StoreSnapshot& store);
 // Every slice of every stored study file of the registry's studies with published rates
 // (stored_slices, then store_rates_of), in the order of their names "table.slice".
-std::vector<StoreRate> store_rates(const StoreSnapshot& store, const std::string& published_dir,
+std::vector<StoreRate> store_rates(const StoreSnapshot& store, const PublishedTables& published,
                                    double tolerance, const StudyRegistry& registry = study_registry());
 // The unstable series of every stored reading of the studies judged on finite series (heat).
-UnstableSeries store_unstable_series(const StoreSnapshot& store, const std::string& published_dir,
+UnstableSeries store_unstable_series(const StoreSnapshot& store, const PublishedTables& published,
                                      const StudyRegistry& registry = study_registry());
 // Where the stored rows come from, file by file: rows, levels, and how many the current code
 // made (the code column is this build's fingerprint of the file's program), how many a
