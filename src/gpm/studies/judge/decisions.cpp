@@ -53,35 +53,35 @@ void add_question(TsvTable& out, const std::string& question, const std::string&
 // Table 4.7: dt = T/K or dt = dt0.
 
 // The two-level rates at `levels` ("7,8") of a heat file's series that never blew up, joined
-// with the published Table 4.7 rates (as rate_table --key weight,theta writes them).
-TsvTable heat_rates(const TsvTable& data, const TsvTable& published, const std::string& levels) {
+// with the published Table 4.7 rates (keys weight, theta).
+JoinedRates heat_rates(const TsvTable& data, const TsvTable& published, const std::string& levels) {
   RateJoin join;
   join.keys = {"weight", "theta"};
   join.levels = levels;
-  TsvTable out;
-  write_joined(join_rates(finite_series(data), published, join), out);
-  return out;
+  return join_rates(finite_series(data), published, join);
 }
 
-// "lo to hi" of column `col` over the computed rows at θ = theta; "none" without one.
-std::string span(const TsvTable& r, const std::string& col, double theta) {
-  const int cc = r.require_column(col), ct = r.require_column("theta"), cs = r.require_column("status");
+// A rate of a joined row as the sums below take it: 0 where it is no number (not computed).
+double or_zero(double v) { return std::isfinite(v) ? v : 0; }
+
+// "lo to hi" of `rate` (reproduced or published) over the computed rows at θ = theta; "none"
+// without one.
+std::string span(const JoinedRates& r, double JoinedRate::*rate, double theta) {
   int n = 0;
   double lo = 0, hi = 0;
-  for (std::size_t i = 0; i < r.rows.size(); ++i) {
-    if (num(r.text(i, ct)) != theta || r.text(i, cs) == "not-computed") continue;
-    const double v = num(r.text(i, cc));
+  for (const JoinedRate& j : r.rows) {
+    if (num(r.key(j, "theta")) != theta || j.status == "not-computed") continue;
+    const double v = or_zero(j.*rate);
     if (n++ == 0 || v < lo) lo = v;
     if (n == 1 || v > hi) hi = v;
   }
   return n ? format_text("%.2f to %.2f", lo, hi) : "none";
 }
 
-// Mean |reproduced − published| over every row of a joined table.
-double mean_distance(const TsvTable& r) {
-  const int cr = r.require_column("reproduced"), cp = r.require_column("published");
+// Mean |reproduced − published| over every joined row (a rate not computed counts 0).
+double mean_distance(const JoinedRates& r) {
   double s = 0;
-  for (std::size_t i = 0; i < r.rows.size(); ++i) s += std::fabs(num(r.text(i, cr)) - num(r.text(i, cp)));
+  for (const JoinedRate& j : r.rows) s += std::fabs(or_zero(j.reproduced) - or_zero(j.published));
   return s / static_cast<double>(r.rows.size());
 }
 
@@ -99,15 +99,15 @@ void time_step_question(const StoreSnapshot& store, const PublishedTables& pub, 
   const TsvTable& published = published_table(pub, "thesis_table4_7");
   std::string ev, verdict;
   for (const auto& [levels, shown] : {std::pair<std::string, std::string>{"7,8", "7/8"}, {"8,9", "8/9"}}) {
-    const TsvTable f = heat_rates(*fit, published, levels), e = heat_rates(*ex, published, levels);
-    const std::string f1 = span(f, "reproduced", 1), e1 = span(e, "reproduced", 1);
+    const JoinedRates f = heat_rates(*fit, published, levels), e = heat_rates(*ex, published, levels);
+    const std::string f1 = span(f, &JoinedRate::reproduced, 1), e1 = span(e, &JoinedRate::reproduced, 1);
     if (f1 == "none" || e1 == "none") {
       ev += " levels " + shown + ": not yet computed under both readings.";
       continue;
     }
     ev += " levels " + shown + ": theta=1 rates " + f1 + " with dt = T/K, " + e1 + " with dt = dt0 (published " +
-          span(f, "published", 1) + "); theta=1/2 " + span(f, "reproduced", 0.5) + " and " +
-          span(e, "reproduced", 0.5) + " (published " + span(f, "published", 0.5) + ").";
+          span(f, &JoinedRate::published, 1) + "); theta=1/2 " + span(f, &JoinedRate::reproduced, 0.5) + " and " +
+          span(e, &JoinedRate::reproduced, 0.5) + " (published " + span(f, &JoinedRate::published, 0.5) + ").";
     const double a = mean_distance(f), b = mean_distance(e);
     verdict = format_text("at levels %s the closer reading is %s (mean |rate - published| %.2f against %.2f)",
                      shown.c_str(), b < a ? "dt = dt0" : "dt = T/K", b < a ? b : a, b < a ? a : b);
@@ -117,9 +117,9 @@ void time_step_question(const StoreSnapshot& store, const PublishedTables& pub, 
                                    {"h10_cell_exact", "dt = dt0"}}) {
     const TsvTable* file = reading(name);
     if (!file) continue;
-    const TsvTable c = heat_rates(*file, published, "8,9");
-    ev += " With V_i = dx^2 (" + rule + "), levels 8/9: theta=1 " + span(c, "reproduced", 1) + ", theta=1/2 " +
-          span(c, "reproduced", 0.5) + ".";
+    const JoinedRates c = heat_rates(*file, published, "8,9");
+    ev += " With V_i = dx^2 (" + rule + "), levels 8/9: theta=1 " + span(c, &JoinedRate::reproduced, 1) +
+          ", theta=1/2 " + span(c, &JoinedRate::reproduced, 0.5) + ".";
   }
   // The steps K of dt = T/K per level (the last row of a level names it).
   const TsvTable& t = *fit;

@@ -76,7 +76,7 @@ TsvTable open_causes(const std::vector<JudgedRate>& judged, double tolerance) {
     auto it = group_of.find(place);
     if (it == group_of.end()) {
       it = group_of.emplace(place, groups.size()).first;
-      groups.push_back({j.rate.table, c.cause});
+      groups.push_back(Group{.table = j.rate.table, .cause = c.cause});
     }
     Group& g = groups[it->second];
     ++g.rates;
