@@ -63,9 +63,9 @@ TsvTable open_causes(const std::vector<JudgedRate>& judged, double tolerance) {
   // One group per (table, cause): its rates counted and its keys and evidence gathered while
   // they are numbers and lists, written as cells once at the end.
   struct Group {
-    std::string table, cause;
+    std::string table = {}, cause = {};
     int rates = 0;
-    std::string keys, evidence;
+    std::string keys = {}, evidence = {};
   };
   std::vector<Group> groups;
   std::map<std::pair<std::string, std::string>, std::size_t> group_of;
