@@ -32,7 +32,6 @@ double cell_number_or(const std::string& s, double otherwise) {
   return cell_number(s, v) ? v : otherwise;
 }
 
-
 EvidenceSeriesMap read_series(const TsvTable& t, const std::vector<std::string>& keys, const std::string& error) {
   std::vector<int> ck;
   for (auto& k : keys) ck.push_back(t.require_column(k));
@@ -48,18 +47,15 @@ EvidenceSeriesMap read_series(const TsvTable& t, const std::vector<std::string>&
   return out;
 }
 
-namespace {
-// The value of option `name` in a file's arguments; none where they do not name it.
-const std::string* arg_value(const StoreFile& f, const std::string& name) {
+std::string file_arg(const StoreFile& f, const std::string& option) {
   for (std::size_t i = 0; i + 1 < f.args.size(); i += 2)
-    if (f.args[i] == name) return &f.args[i + 1];
-  return nullptr;
+    if (f.args[i] == option) return f.args[i + 1];
+  return "";
 }
-}  // namespace
 
 int file_seed(const StoreFile& f) {
-  const std::string* v = arg_value(f, "--seed");
-  return v ? static_cast<int>(parse_integer(*v, f.name + " --seed", 1, 1 << 30)) : 1;
+  const std::string v = file_arg(f, "--seed");
+  return v.empty() ? 1 : static_cast<int>(parse_integer(v, f.name + " --seed", 1, 1 << 30));
 }
 
 std::vector<std::string> setup_args(const StoreFile& f) {
@@ -69,10 +65,7 @@ std::vector<std::string> setup_args(const StoreFile& f) {
   return out;
 }
 
-std::string file_solver(const StoreFile& f) {
-  const std::string* v = arg_value(f, "--solver");
-  return v ? *v : "";
-}
+std::string file_solver(const StoreFile& f) { return file_arg(f, "--solver"); }
 
 std::vector<const StoreFile*> realizations_of(const RegisteredStudy& study, const StoreFile& f) {
   std::vector<const StoreFile*> out;

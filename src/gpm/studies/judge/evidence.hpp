@@ -29,6 +29,8 @@ std::string number_cell(double v);
 
 // A store file's identity, from its registered arguments (what its program ran with), never
 // from its name or its slice's.
+// The value of an option in its arguments ("--jitter" → "0"); "" where they do not name it.
+std::string file_arg(const StoreFile& f, const std::string& option);
 // The jitter realization: --seed, 1 where the arguments name none.
 int file_seed(const StoreFile& f);
 // The arguments that fix its numbers' set-up: its own, less --seed (the realization) and

@@ -229,14 +229,8 @@ std::string slice_setup(const std::string& table, const StoreFile& file, const T
   for (std::size_t i = 0; uniform && i < rows.rows.size(); ++i) uniform = rows.text(i, cv) == "uniform";
   if (uniform) return "beyond the document (uniform volumes)";
   if (file_seed(file) != 1) return kJitterSetup;
-  const std::vector<std::string> args = setup_args(file);
-  auto names = [&](const char* option, const char* value) {
-    for (std::size_t i = 0; i + 1 < args.size(); i += 2)
-      if (args[i] == option && args[i + 1] == value) return true;
-    return false;
-  };
-  if (names("--jitter", "0")) return "plain grid (no jitter)";
-  if (table == "imoto_table1" && names("--volumes", "cell")) return "delta-free volumes (V_i = dx^2)";
+  if (file_arg(file, "--jitter") == "0") return "plain grid (no jitter)";
+  if (table == "imoto_table1" && file_arg(file, "--volumes") == "cell") return "delta-free volumes (V_i = dx^2)";
   return kDocumentSetup;
 }
 
