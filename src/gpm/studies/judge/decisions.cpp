@@ -14,6 +14,7 @@
 #include "gpm/io/text_format.hpp"
 #include "gpm/geometry/domain.hpp"
 #include "gpm/operators/testfunctions.hpp"
+#include "gpm/studies/define/catalog.hpp"
 #include "gpm/studies/judge/rates.hpp"
 #include "gpm/studies/judge/verdicts.hpp"
 #include "gpm/theory/smoothing.hpp"
@@ -166,13 +167,13 @@ void poisson_volume_question(const StoreSnapshot& store, const PublishedTables& 
     const double e = num(d.text(i, ce)), q = e / std::fabs(num(d.text(i, ct)));
     rules.insert(r);
     if (std::find(weights.begin(), weights.end(), w) == weights.end()) weights.push_back(w);
-    const std::pair<std::string, std::string> g{r, v.rfind("plain", 0) == 0 ? "plain grid" : "jittered grids"};
+    const ParticleSet& set = poisson_diagnostic().variant(v);  // the variant's registered jitter and volumes
+    const std::pair<std::string, std::string> g{r, set.jitter == 0 ? "plain grid" : "jittered grids"};
     if (!qlo.count(g) || q < qlo[g]) qlo[g] = q;
     if (!qhi.count(g) || q > qhi[g]) qhi[g] = q;
     err[{r, w, l, v}] = e;
     h[{r, l}] = num(d.text(i, ch));
-    const bool cell = v.size() >= 5 && v.compare(v.size() - 5, 5, "_cell") == 0;
-    mismatch[{l, cell}] = num(d.text(i, cm));
+    mismatch[{l, set.volumes == PdeVolumes::cell}] = num(d.text(i, cm));
   }
   auto at = [](const auto& m, const auto& k) {
     auto it = m.find(k);
