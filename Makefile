@@ -40,10 +40,10 @@ store_out = $(1)
 store_link =
 endif
 
-# Debian packages the project needs (compilers, libraries, plotting, report).
+# Debian packages the project needs (compilers and their cache, libraries, plotting, report).
 PACKAGES := build-essential cmake git pkg-config libeigen3-dev libcgal-dev libgmp-dev \
             libmpfr-dev libboost-dev libgsl-dev libglpk-dev libfftw3-dev glpk-utils catch2 gnuplot-nox pandoc \
-            chromium poppler-utils python3
+            chromium poppler-utils python3 ccache
 
 .PHONY: all report pdf test test-paper bench plan deps build data figures figures-all tables clean help
 
