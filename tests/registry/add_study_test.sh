@@ -127,7 +127,10 @@ echo "add_study_test: the copy built (gpm, plan, $name) in $(( $(date +%s) - t0 
 b=$tree/build
 
 # --- the catalog lists it, make gets its rules ------------------------------------------------
-"$b/gpm" study --list | grep -q "^$name\b" || fail "gpm study --list does not list $name"
+# (outputs go to files before grep -q reads them: under pipefail a grep that stops early would
+# fail the pipeline with the writer's SIGPIPE)
+"$b/gpm" study --list >"$work/list.tsv"
+grep -q "^$name\b" "$work/list.tsv" || fail "gpm study --list does not list $name"
 "$b/gpm" study --make "$b/studies.mk"
 grep -qF "\$(DATA)/$name.tsv: \$(BUILD)/$name" "$b/studies.mk" || fail "build/studies.mk has no data rule for $name"
 grep -qE "^STUDIES_scratch := $name\$" "$b/studies.mk" || fail "build/studies.mk has no group list STUDIES_scratch"
@@ -137,7 +140,8 @@ make -C "$tree" BUILD=build "data/quick/$name.tsv" >"$work/make.log" 2>&1 || { t
 data=$tree/data/quick/$name.tsv
 [ "$(grep -vc '^#' "$data")" -eq 3 ] || fail "data/quick/$name.tsv: not a header and the quick profile's 2 levels"
 for k in program seed git_revision; do grep -q "^# $k = " "$data" || fail "data/quick/$name.tsv: no '# $k' line"; done
-"$b/$name" --profile quick --out "$data" 2>&1 | grep -q 'reusing 2 stored rows' || fail "a rerun does not reuse the 2 stored rows"
+"$b/$name" --profile quick --out "$data" >"$work/rerun.log" 2>&1 || { cat "$work/rerun.log"; fail "the rerun fails"; }
+grep -q 'reusing 2 stored rows' "$work/rerun.log" || { cat "$work/rerun.log"; fail "a rerun does not reuse the 2 stored rows"; }
 "$b/gpm" study "$name" --levels 4,5,6 --out "$data" >/dev/null 2>&1 || fail "gpm study $name does not run"
 [ "$(grep -vc '^#' "$data")" -eq 4 ] || fail "gpm study $name --levels 4,5,6 did not add level 6"
 
@@ -148,7 +152,8 @@ n=$(awk -F'\t' -v s="$name" '/^#/ { next } !h { for (i = 1; i <= NF; i++) c[$i] 
 
 # --- the layer and fingerprint rules hold in the copy ----------------------------------------
 bash "$tree/tests/layers/check_layers_test.sh" "$tree" >"$work/layers.log" 2>&1 || { tail "$work/layers.log"; fail "the layer rule fails in the copy"; }
-"$b/gpm" fingerprint "$name" | grep -qE "^$name[[:space:]]+[0-9a-f]{12}$" || fail "$name has no code fingerprint"
+"$b/gpm" fingerprint "$name" >"$work/fingerprint.tsv"
+grep -qE "^$name[[:space:]]+[0-9a-f]{12}$" "$work/fingerprint.tsv" || fail "$name has no code fingerprint"
 # What the registry edit costs the store: every program hashes registry.cpp (the studies'
 # definitions), so the fingerprints it moves are told, to be carried by the store's re-check.
 moved=$(join -t $'\t' <("$build/gpm" fingerprint thesis_table4_4 thesis_heat core_voronoi | sort) \
