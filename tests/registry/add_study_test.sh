@@ -122,8 +122,8 @@ t0=$(date +%s)
 cmake -S "$tree" -B "$tree/build" "${cfg[@]}" >"$work/configure.log" 2>&1 || { tail -20 "$work/configure.log"; fail "the copy does not configure"; }
 cmake --build "$tree/build" -j "$(nproc)" --target gpm plan "$name" >"$work/build.log" 2>&1 \
   || { grep -E 'error|Error' "$work/build.log" | head -20; fail "the copy with the study does not build"; }
-compiled=$(grep -c 'Building CXX object' "$work/build.log" || true)
-echo "add_study_test: the copy built (gpm, plan, $name) in $(( $(date +%s) - t0 )) s, $compiled objects (re)compiled"
+objects=$(grep -c 'Building CXX object' "$work/build.log" || true)
+echo "add_study_test: the copy built (gpm, plan, $name) in $(( $(date +%s) - t0 )) s, $objects objects (from the cache where it hits)"
 b=$tree/build
 
 # --- the catalog lists it, make gets its rules ------------------------------------------------
