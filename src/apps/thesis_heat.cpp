@@ -1,5 +1,5 @@
 // thesis_heat: the discrete heat problem of the thesis, §4.3 (Figures 4.9–4.11,
-// Tables 4.5–4.7), one setting of the time step per run (--table):
+// Tables 4.5–4.7), one setting of the time step per table (--table, or several in one run):
 //
 //   4.5: Δt₀ = 0.0025h², θ = 0, ½, 1, Δx = 2^-5 … 2^-8 (rates from 2^-7, 2^-8; the run adds
 //        the coarse 2^-4, seconds, so that the quick series has three points);
@@ -18,6 +18,11 @@
 //
 //   thesis_heat --table 4.6 --profile quick --out data/quick/thesis_table4_6.tsv
 //     --rates-input data/quick/thesis_table4_6_finite.tsv
+//
+// Tables that share a level, h rule, volumes, weight and seed share the Laplacian and the
+// Krylov subspace (issue 58, item 2): `--table 4.5,4.6,4.7 --out DIR/thesis_table{table}.tsv`
+// builds each once; each table keeps the subspace size its own series settle at
+// (HeatSetting::size_group), so its rows are those of its own run, bit for bit.
 #include <algorithm>
 #include <chrono>
 #include <limits>
@@ -27,6 +32,8 @@
 #include <cstdio>
 #include <set>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "gpm/error.hpp"
@@ -86,11 +93,13 @@ HeatPropagator stored_propagator(UnitCache& cache, const std::vector<std::string
   return HeatPropagator::stepped;
 }
 
-// A path with "{reading}" replaced by the reading's store suffix.
-std::string reading_path(const std::string& pattern, const PdeReading& r) {
-  std::string s = pattern;
-  const std::string mark = "{reading}";
-  if (auto at = s.find(mark); at != std::string::npos) s.replace(at, mark.size(), r.file_suffix());
+// A path with "{table}" replaced by the table's name in file names (4.6: 4_6) and "{reading}"
+// by the reading's store suffix.
+std::string reading_path(const std::string& pattern, const HeatTable& t, const PdeReading& r) {
+  std::string s = pattern, name = t.table;
+  std::replace(name.begin(), name.end(), '.', '_');
+  for (const auto& [mark, by] : {std::pair<std::string, std::string>{"{table}", name}, {"{reading}", r.file_suffix()}})
+    if (auto at = s.find(mark); at != std::string::npos) s.replace(at, mark.size(), by);
   return s;
 }
 
@@ -122,9 +131,10 @@ class HeatTables {
   HeatTables()
       : run_("thesis_heat",
              "Discrete heat problem with the theta-method (thesis §4.3): relative errors (4.2)\n"
-             "per weight, theta and level for one time-step setting (Tables 4.5-4.7), under\n"
+             "per weight, theta and level for a time-step setting (Tables 4.5-4.7), under\n"
              "one reading of the set-up or several (comma lists: every combination, each to\n"
-             "its own data file, the series of one Laplacian advanced together).",
+             "its own data file, the series of one Laplacian advanced together, the tables'\n"
+             "too: one Laplacian and one Krylov subspace for all of them).",
              "quick or paper (levels per table: heat_tables.hpp, gpm study --list)") {}
 
   int run(int argc, char** argv) {
@@ -141,14 +151,15 @@ class HeatTables {
   }
 
  private:
-  // A series still to do of one group: its reading and θ.
+  // A series still to do of one group: its table, reading and θ.
   struct Todo {
-    std::size_t reading;
+    std::size_t table, reading;
     double theta;
   };
 
   StudyRunner run_;
-  const HeatTable* ts_ = nullptr;
+  std::vector<const HeatTable*> tables_;
+  std::vector<std::size_t> unit_table_;  // the table of each unit
   std::vector<HRule> h_rules_;
   std::vector<PdeVolumes> volume_choices_;
   std::vector<PdeReading> readings_;
@@ -168,7 +179,9 @@ class HeatTables {
 
   void declare_options() {
     Args& a = run_.args();
-    a.opt("table", "", "4.5 (dt = 0.0025h^2), 4.6 (dt = 0.5h^2) or 4.7 (dt = 0.5h) (required)")
+    a.opt("table", "", "4.5 (dt = 0.0025h^2), 4.6 (dt = 0.5h^2) or 4.7 (dt = 0.5h) (required); or several\n"
+                       "  (4.5,4.6,4.7: one Laplacian and one subspace for their series; --out then\n"
+                       "  puts {table} where the table's name goes: DIR/thesis_table{table}.tsv)")
         .output("rates-input", "", "data file of the series that never blew up (for rate_table);\n"
                                    "  with several readings, a pattern with {reading} as --out")
         .opt("dt-rule", "fit", "fit: dt = T/K, K = ceil(T/dt0) (the thesis' dt = T/K); exact: dt = dt0,\n"
@@ -199,7 +212,11 @@ class HeatTables {
   // one) and the θ-method's settings.
   void read_choices() {
     Args& a = run_.args();
-    ts_ = &heat_table(a.str("table"));
+    for (auto& t : a.list("table")) {
+      const HeatTable* table = &heat_table(t);
+      if (chosen(tables_, table)) throw InputError("--table: " + t + " is given twice");
+      tables_.push_back(table);
+    }
     std::vector<DtRule> dt_rules;
     for (auto& s : a.list("h-rule")) h_rules_.push_back(parse_h_rule(s));
     for (auto& s : a.list("volumes")) volume_choices_.push_back(parse_pde_volumes(s));
@@ -238,22 +255,28 @@ class HeatTables {
       throw InputError("--out '" + out_ + "' names one file for " + std::to_string(readings_.size()) +
                        " readings; put {reading} where the reading's suffix goes (e.g. "
                        "results/paper/thesis_table4_6{reading}.tsv)");
-    if (readings_.size() > 1 && !rates_input_.empty() && rates_input_.find("{reading}") == std::string::npos)
-      throw InputError("--rates-input '" + rates_input_ + "' needs {reading} too, for " +
-                       std::to_string(readings_.size()) + " readings");
+    if (tables_.size() > 1 && out_.find("{table}") == std::string::npos)
+      throw InputError("--out '" + out_ + "' names one file for " + std::to_string(tables_.size()) +
+                       " tables; put {table} where the table's name goes (e.g. "
+                       "results/paper/thesis_table{table}.tsv)");
+    for (const auto& [many, mark] : {std::pair<bool, std::string>{readings_.size() > 1, "{reading}"}, {tables_.size() > 1, "{table}"}})
+      if (many && !rates_input_.empty() && rates_input_.find(mark) == std::string::npos)
+        throw InputError("--rates-input '" + rates_input_ + "' needs " + mark + " too, as --out");
   }
 
-  // The table's units (registry.cpp): one series (weight, θ) per level and h rule, in the
+  // Each table's units (registry.cpp): one series (weight, θ) per level and h rule, in the
   // order (level, h rule, weight, θ); --levels, else the profile's levels.  Kept: those of the
   // chosen h rules, weights and θ (a subset run only adds units: a unit is keyed by them).
+  // Several tables' units are merged in that order (table after weight), so that the series
+  // of one Laplacian, whatever their table, form one group.
   void select_units() {
     Args& a = run_.args();
-    std::vector<double> thetas = ts_->thetas;
+    std::vector<double> thetas;
     if (!a.str("thetas").empty()) {
       thetas = a.nums("thetas");
       for (double th : thetas)
-        if (std::find(ts_->thetas.begin(), ts_->thetas.end(), th) == ts_->thetas.end())
-          throw InputError("--thetas: " + fmt(th) + " is not a theta of Table " + ts_->table);
+        if (std::none_of(tables_.begin(), tables_.end(), [&](const HeatTable* t) { return chosen(t->thetas, th); }))
+          throw InputError("--thetas: " + fmt(th) + " is not a theta of Table " + a.str("table"));
     }
     std::vector<std::string> weights = pde_weights();
     if (!a.str("weights").empty()) {
@@ -262,23 +285,36 @@ class HeatTables {
         if (std::find(pde_weights().begin(), pde_weights().end(), w) == pde_weights().end())
           throw InputError("--weights: '" + w + "' is not a weight of the heat tables");
     }
-    const UnitScope scope{run_.profile() == Profile::paper, run_.levels(ts_->quick, ts_->paper), run_.levels_given()};
     std::vector<int> levels;
-    for (const StudyUnit& u : study_registry().study(heat_study_name(*ts_)).units(scope))
-      if (chosen(h_rules_, parse_h_rule(u.part)) && chosen(weights, u.key[0]) &&
-          chosen(thetas, parse_number(u.key[1], "theta"))) {
-        units_.push_back(u);
-        if (!chosen(levels, u.level)) levels.push_back(u.level);
-      }
+    std::vector<std::pair<StudyUnit, std::size_t>> units;
+    for (std::size_t t = 0; t < tables_.size(); ++t) {
+      const HeatTable& ts = *tables_[t];
+      const UnitScope scope{run_.profile() == Profile::paper, run_.levels(ts.quick, ts.paper), run_.levels_given()};
+      for (const StudyUnit& u : study_registry().study(heat_study_name(ts)).units(scope))
+        if (chosen(h_rules_, parse_h_rule(u.part)) && chosen(weights, u.key[0]) &&
+            (thetas.empty() || chosen(thetas, parse_number(u.key[1], "theta")))) {
+          units.push_back({u, t});
+          if (!chosen(levels, u.level)) levels.push_back(u.level);
+        }
+    }
+    auto order = [](const std::pair<StudyUnit, std::size_t>& x) {
+      const StudyUnit& u = x.first;
+      return std::make_tuple(u.level, u.part, std::find(pde_weights().begin(), pde_weights().end(), u.key[0]) - pde_weights().begin());
+    };
+    std::stable_sort(units.begin(), units.end(), [&](const auto& x, const auto& y) { return order(x) < order(y); });
+    for (auto& [u, t] : units) units_.push_back(u), unit_table_.push_back(t);
     require_pde_levels_fit_memory(levels, h_rules_, storage_, max_bytes_);
   }
 
-  // The data files: one per reading, one row per (weight, θ, level).
+  // The data files: one per table and reading, one row per (weight, θ, level).
   void open_files() {
     std::vector<StudyRunner::DataFile> files;
-    for (auto& r : readings_) files.push_back({reading_path(out_, r), heat_params(*ts_, run_, hs_, guarded_, r, tau_)});
+    for (const HeatTable* t : tables_)
+      for (auto& r : readings_) files.push_back({reading_path(out_, *t, r), heat_params(*t, run_, hs_, guarded_, r, tau_)});
     caches_ = run_.open_files(files, heat_columns(), 3);
   }
+  // The data file of a table and reading.
+  UnitCache& cache(std::size_t table, std::size_t reading) { return *caches_[table * readings_.size() + reading]; }
 
   // The end of the group that starts at unit g: the series of one (level, h rule, weight),
   // which share one Laplacian.
@@ -299,26 +335,30 @@ class HeatTables {
     p_level_ = k;
   }
 
-  // One group: its series still to do (every reading of its h rule, each θ), claimed as one
-  // piece of work; then one Laplacian per volumes choice that cannot share, the series run
-  // together on it, one row each.
+  // A table's nominal step Δt₀ = c h^p.
+  double dt0(std::size_t table, double h) const { return tables_[table]->c * std::pow(h, tables_[table]->p); }
+
+  // One group: its series still to do (every table's, every reading of its h rule, each θ),
+  // claimed as one piece of work; then one Laplacian per volumes choice that cannot share, the
+  // series run together on it, one row each.
   void advance_group(std::size_t g, std::size_t next) {
     const StudyUnit& first = units_[g];
     const int k = first.level;
     const HRule h_rule = parse_h_rule(first.part);
     const std::string wname = first.key[0];
     const double dx = std::ldexp(1.0, -k), h = first.h;
-    const double dt0 = ts_->c * std::pow(h, ts_->p);  // the table's nominal step Δt₀
     std::vector<Todo> todo;
     double work = 0;
-    for (std::size_t r = 0; r < readings_.size(); ++r) {
-      if (readings_[r].h_rule != h_rule) continue;
-      for (std::size_t u = g; u < next; ++u) {
-        const double th = parse_number(units_[u].key[1], "theta");
-        if (!caches_[r]->has({wname, fmt(th), fmt(k)}))
-          todo.push_back({r, th}), work += heat_unit_work(dx, h, dt0, hs_.T, th);
+    for (std::size_t t = 0; t < tables_.size(); ++t)
+      for (std::size_t r = 0; r < readings_.size(); ++r) {
+        if (readings_[r].h_rule != h_rule) continue;
+        for (std::size_t u = g; u < next; ++u) {
+          if (unit_table_[u] != t) continue;
+          const double th = parse_number(units_[u].key[1], "theta");
+          if (!cache(t, r).has({wname, fmt(th), fmt(k)}))
+            todo.push_back({t, r, th}), work += heat_unit_work(dx, h, dt0(t, h), hs_.T, th);
+        }
       }
-    }
     // On a cluster the group goes to one rank together.
     if (todo.empty() || !run_.claim_group(static_cast<int>(todo.size()), work)) return;
     prepare_level(k);
@@ -343,19 +383,24 @@ class HeatTables {
         if (done[u] || (r.volumes != own && !shares)) continue;
         HeatSetting s = hs_;
         s.theta = todo[u].theta;
-        s.dt_nominal = dt0;
+        s.dt_nominal = dt0(todo[u].table, h);
         s.fit_T = r.dt_rule == DtRule::fit;
+        s.size_group = static_cast<int>(todo[u].table);  // each table sizes its subspace alone
         if (r.volumes != own) {
           if (!other.count(r.volumes)) other.emplace(r.volumes, L.volumes_for(p_, w, V_[r.volumes]));
           s.volumes = &other.at(r.volumes);
         }
         here.push_back(u), settings.push_back(s), done[u] = true;
-        hows.push_back(rechecking_ && !given_propagator_ ? stored_propagator(*caches_[todo[u].reading], {wname, fmt(todo[u].theta), fmt(k)})
-                                   : how_);
+        hows.push_back(rechecking_ && !given_propagator_
+                           ? stored_propagator(cache(todo[u].table, todo[u].reading), {wname, fmt(todo[u].theta), fmt(k)})
+                           : how_);
       }
       // A fine level's subspace grows for up to an hour: one line per size tried says how far
       // (none in a unit's first seconds, so the coarse levels' logs stay short).
-      const std::string unit = "Table " + ts_->table + ", " + h_rule_name(h_rule) + ", " + wname + ", level " + fmt(k);
+      std::string names;
+      for (const HeatTable* t : tables_) names += (names.empty() ? "" : ",") + t->table;
+      const std::string unit = (tables_.size() > 1 ? "Tables " : "Table ") + names + ", " + h_rule_name(h_rule) + ", " +
+                               wname + ", level " + fmt(k);
       const Stopwatch clock;
       KrylovSettings ks;
       ks.on_size = [&](const KrylovTry& t) {
@@ -387,6 +432,7 @@ class HeatTables {
   void write_row(const Todo& t, const HeatResult& res, const DiscreteLaplacian& L, const std::string& wname, int k,
                  double dx, double h) {
     const PdeReading& r = readings_[t.reading];
+    const HeatTable& ts = *tables_[t.table];
     const std::string na = "NA";
     TsvRow row = run_.row();
     row["weight"] = wname, row["theta"] = fmt(t.theta), row["level"] = fmt(k);
@@ -404,8 +450,8 @@ class HeatTables {
     row["cg_mean_iterations"] = fmt(res.mean_cg_iterations);
     row["max_rel_residual"] = fmt(res.max_rel_residual);
     row["s_per_step"] = fmt(res.seconds_per_step), row["seconds"] = fmt(res.seconds);
-    run_.add(t.reading, row);
-    const std::string head = line_printf("%s%s%s: %-28s theta=%-3g dx=2^-%d h=%.4f K=%ld ", ts_->table.c_str(),
+    run_.add(t.table * readings_.size() + t.reading, row);
+    const std::string head = line_printf("%s%s%s: %-28s theta=%-3g dx=2^-%d h=%.4f K=%ld ", ts.table.c_str(),
                                          readings_.size() > 1 ? " " : "",
                                          readings_.size() > 1 ? r.name().c_str() : "", wname.c_str(), t.theta, k,
                                          h, res.K);
@@ -420,15 +466,17 @@ class HeatTables {
           // Not stopped is not "stable": a series that grew is said to have grown.
           (res.growth_max > 2 ? line_printf("  (||U||/||U0|| grew to %.3g: run to T, no guard)", res.growth_max)
                               : std::string())));
-    if (caches_[t.reading]->writes() && !rates_input_.empty())
-      write_rates_input(*caches_[t.reading], reading_path(rates_input_, r));
+    if (cache(t.table, t.reading).writes() && !rates_input_.empty())
+      write_rates_input(cache(t.table, t.reading), reading_path(rates_input_, ts, r));
   }
 
-  // The run's end: every row gathered and written; the rates input of each reading.
+  // The run's end: every row gathered and written; the rates input of each table and reading.
   int finish() {
     if (!run_.finish()) return 0;  // verify/recheck: nothing more is written
     if (!rates_input_.empty())
-      for (std::size_t r = 0; r < readings_.size(); ++r) write_rates_input(*caches_[r], reading_path(rates_input_, readings_[r]));
+      for (std::size_t t = 0; t < tables_.size(); ++t)
+        for (std::size_t r = 0; r < readings_.size(); ++r)
+          write_rates_input(cache(t, r), reading_path(rates_input_, *tables_[t], readings_[r]));
     return 0;
   }
 

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "gpm/geometry/domain.hpp"
 #include "gpm/geometry/influence_radius.hpp"
@@ -226,4 +227,65 @@ TEST_CASE("Krylov propagator: a tolerance below rounding stops where the change 
   CHECK_THROWS_AS(propagate_heat(p, L, settings, ks), NumericalError);
   ks.stall = 1;
   CHECK_THROWS_AS(propagate_heat(p, L, settings, ks), InputError);
+}
+
+// Issue 58, item 2: the three tables' series on one subspace, each table its own size group,
+// give each table's numbers alone, bit for bit (the first m columns of a basis grown further
+// are the basis grown to m); one size group for all would size every table's subspace by the
+// most demanding one, and change the others' numbers.
+TEST_CASE("Krylov propagator: size groups share a subspace and keep their own numbers", "[heat][krylov]") {
+  const double dx = std::ldexp(1.0, -5), h = pde_h(HRule::h15, dx);
+  const Particles p = jittered_grid(dx, 1);
+  const auto V = pde_volumes(PdeVolumes::cell, p, dx);
+  const DiscreteLaplacian L(p, V, weight("piecewise_quintic_polynomial"), h);
+  std::vector<std::vector<HeatSetting>> tables;
+  for (double dt0 : {0.0025 * h * h, 0.5 * h * h, 0.5 * h}) {
+    std::vector<HeatSetting> t;
+    for (double th : {0.0, 0.5, 1.0}) {
+      if (dt0 == 0.5 * h && th == 0) continue;  // Table 4.7 has no θ = 0
+      HeatSetting s;
+      s.theta = th, s.dt_nominal = dt0, s.fit_T = false, s.size_group = static_cast<int>(tables.size());
+      t.push_back(s);
+    }
+    tables.push_back(t);
+  }
+  std::vector<HeatSetting> all;
+  std::vector<HeatResult> alone;
+  KrylovSettings ks;
+  long products_alone = 0;
+  for (auto& t : tables) {
+    const auto r = propagate_heat(p, L, t, ks);
+    alone.insert(alone.end(), r.begin(), r.end());
+    all.insert(all.end(), t.begin(), t.end());
+    products_alone += std::lround(r[0].products * static_cast<double>(r.size()));
+  }
+  const auto shared = propagate_heat(p, L, all, ks);
+  std::set<int> sizes;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    INFO("series " << i << ": table " << all[i].size_group << ", theta " << all[i].theta);
+    CHECK(shared[i].subspace == alone[i].subspace);
+    CHECK(shared[i].blew_up == alone[i].blew_up);
+    CHECK(shared[i].steps_done == alone[i].steps_done);
+    CHECK(shared[i].growth_max == alone[i].growth_max);
+    if (!alone[i].blew_up) {
+      CHECK(shared[i].rel_error == alone[i].rel_error);
+      CHECK(shared[i].rel_error_max == alone[i].rel_error_max);
+    }
+    sizes.insert(alone[i].subspace);
+  }
+  // The case is one where sharing could go wrong: the tables settle at different sizes, and
+  // the shared basis costs the largest one's products, not the sum.
+  REQUIRE(sizes.size() >= 2);
+  const long products_shared = std::lround(shared[0].products * static_cast<double>(shared.size()));
+  CHECK(products_shared == *sizes.rbegin());
+  CHECK(products_shared < products_alone);
+  // One size group for all: the smaller tables take the largest size, and their numbers move.
+  for (auto& s : all) s.size_group = 0;
+  const auto merged = propagate_heat(p, L, all, ks);
+  bool moved = false;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    CHECK(merged[i].subspace == *sizes.rbegin());
+    moved = moved || (!alone[i].blew_up && merged[i].rel_error != alone[i].rel_error);
+  }
+  CHECK(moved);
 }

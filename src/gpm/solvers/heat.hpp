@@ -59,6 +59,12 @@ struct HeatSetting {
   // The implicit steps' CG preconditioned by pc, a P ≈ D − θκΔt D M_ΩΩ (tau_preconditioner.hpp
   // with shift 1/V̄ and scale θκΔt); nullptr: plain CG, the reference of every stored row.
   const Preconditioner* pc = nullptr;
+  // The Krylov propagator (heat_krylov.hpp) sizes the subspace of the series that share an
+  // operator together.  Series of different size groups share its products but each group
+  // takes the size at which its own series settle, the size it would take alone: one run over
+  // Tables 4.5-4.7 (one group each) gives every table the rows it gives alone.  The stepper
+  // ignores it.
+  int size_group = 0;
 };
 
 struct HeatResult {

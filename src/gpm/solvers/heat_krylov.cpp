@@ -295,6 +295,53 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The ℓ∞ errors' map from eigen-coordinates to the unknowns, S⁻¹ Q W, and its columns' maxima.
+// Formed in place (no temporary of the product): at 2^-10 each N×m matrix is gigabytes.
+void evaluate_map(const KrylovBasis& B, const Modes& md, const Vec& s, Mat& V, Vec& colmax) {
+  V.resize(B.Q().rows(), md.m);
+  V.noalias() = B.Q().leftCols(md.m) * md.W;
+  V.array().colwise() /= s.array();
+  colmax = V.cwiseAbs().colwise().maxCoeff().transpose();
+}
+
+// One series through the modes md: its errors (4.2), growth and blow-up; `sharing` series
+// share the basis' products and its build time (`build_s`).
+HeatResult finish_series(const Series& sr, const Modes& md, const HeatExample& ex, double u0, const Mat& V,
+                         const Vec& colmax, const KrylovBasis& B, std::size_t sharing, double build_s) {
+  const auto t1 = std::chrono::steady_clock::now();
+  HeatResult res;
+  res.K = sr.K, res.dt = sr.dt, res.subspace = md.m;
+  res.products = static_cast<double>(B.products()) / static_cast<double>(sharing);
+  // The error coordinates e^k ξ⁰ − ξ^k of every step, the norms, the blow-up guard.
+  Mat Z(md.m, sr.K);
+  double err_l2 = 0, prev = u0;
+  long done = 0;
+  run_modes(sr, md, ex.out_l2sq, u0, [&](long k0, const auto& X) {
+    for (Eigen::Index c = 0; c < X.cols(); ++c) {
+      const long k = k0 + c;
+      const double ek = decay(sr, k);
+      const double un = std::sqrt(X.col(c).squaredNorm() + ek * ek * ex.out_l2sq);
+      res.growth_max = std::max(res.growth_max, un / u0);
+      if (sr.s->observe) sr.s->observe(k, V * X.col(c));
+      done = k;
+      if (!std::isfinite(un) || un > sr.s->blowup_factor * u0) {
+        res.blew_up = true, res.blowup_step = k, res.growth = un / u0, res.amplification = un / prev;
+        return;
+      }
+      prev = un;
+      Z.col(k - 1) = ek * md.xi0 - X.col(c);
+      err_l2 = std::max(err_l2, Z.col(k - 1).norm());
+    }
+  });
+  res.steps_done = done;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  res.rel_error = res.blew_up ? nan : err_l2 / ex.ref_l2;
+  res.rel_error_max = res.blew_up ? nan : linf_max(V, colmax, Z.leftCols(done)) / ex.max_exact;
+  res.seconds = build_s / static_cast<double>(sharing) + seconds_since(t1);
+  res.seconds_per_step = res.seconds / static_cast<double>(std::max(1L, res.steps_done));
+  return res;
+}
+
 // The series of one operator (one choice of volumes) through one subspace.
 void propagate_group(const Particles& p, const DiscreteLaplacian& L,
                      const std::vector<const HeatSetting*>& group, const KrylovSettings& ks,
@@ -317,14 +364,19 @@ void propagate_group(const Particles& p, const DiscreteLaplacian& L,
     sr.a = hs->kappa * sr.dt, sr.lambda = ex.lambda;
     series.push_back(sr);
   }
-  // The subspace: grown until every series' trajectories stop moving (header).
+  // The subspace: grown until every series' trajectories stop moving (header).  Each size
+  // group (HeatSetting::size_group) settles on its own and keeps the modes of the size it
+  // settled at, so it takes the size it would take alone; the basis grows for the last one.
+  std::map<int, std::vector<std::size_t>> sets;
+  for (std::size_t i = 0; i < group.size(); ++i) sets[group[i]->size_group].push_back(i);
+  std::map<int, Modes> taken;
   KrylovBasis B(L, vol, s, s.cwiseProduct(ex.sk), s.cwiseProduct(ex.c));
   const int limit = std::min<int>(ks.max_dim, static_cast<int>(s.size()));
   int m = std::min(ks.first, limit);
   B.grow_to(m);
   Modes lo = modes_of(B, std::min(m, B.applied()));
   std::vector<double> last(series.size(), std::numeric_limits<double>::infinity());
-  for (;;) {
+  while (taken.size() < sets.size()) {
     if (B.exhausted()) break;
     if (m >= limit)
       throw NumericalError("Krylov propagator: no convergence to " + std::to_string(ks.tol) +
@@ -333,67 +385,40 @@ void propagate_group(const Particles& p, const DiscreteLaplacian& L,
     m += m % 2;
     B.grow_to(m);
     Modes hi = modes_of(B, std::min(m, B.applied()));
-    // Each series is settled within the tolerance or at its rounding (header); the size is
-    // taken when every series is.
+    // A group is settled when each of its series is, within the tolerance or at its rounding
+    // (header).
     KrylovTry t;
     t.m = m;
-    bool settled = true;
-    for (std::size_t i = 0; i < series.size(); ++i) {
-      const Change c = trajectory_change(series[i], lo, hi, ex.out_l2sq, u0);
-      t.change = std::max(t.change, c.rel), t.of_data = std::max(t.of_data, c.of_data);
-      const bool stalled = c.of_data <= ks.rounding && c.of_data * ks.stall > last[i];
-      if (c.rel > ks.tol) t.rounding = true, settled = settled && stalled;
-      last[i] = c.of_data;
+    for (auto& [g, idx] : sets) {
+      if (taken.count(g)) continue;
+      bool settled = true, rounding = false;
+      for (std::size_t i : idx) {
+        const Change c = trajectory_change(series[i], lo, hi, ex.out_l2sq, u0);
+        t.change = std::max(t.change, c.rel), t.of_data = std::max(t.of_data, c.of_data);
+        const bool stalled = c.of_data <= ks.rounding && c.of_data * ks.stall > last[i];
+        if (c.rel > ks.tol) rounding = true, settled = settled && stalled;
+        last[i] = c.of_data;
+      }
+      if (!settled) continue;
+      t.rounding = t.rounding || rounding;
+      taken.emplace(g, B.exhausted() ? modes_of(B, B.applied()) : hi);
     }
-    t.rounding = t.rounding && settled;
     lo = std::move(hi);
     if (ks.on_size) ks.on_size(t);
-    if (settled) break;
   }
-  if (B.exhausted()) lo = modes_of(B, B.applied());
-  const Modes& md = lo;
+  // An exhausted space is exact: the groups not yet settled take all of it.
+  for (auto& [g, idx] : sets)
+    if (!taken.count(g)) taken.emplace(g, modes_of(B, B.applied()));
   const double build_s = seconds_since(t0);
-  // The ℓ∞ errors' map from eigen-coordinates to the unknowns: S⁻¹ Q W, and its columns' maxima.
-  // Formed in place (no temporary of the product): at 2^-10 each N×m matrix is gigabytes.
-  Mat V(B.Q().rows(), md.m);
-  V.noalias() = B.Q().leftCols(md.m) * md.W;
-  V.array().colwise() /= s.array();
-  const Vec colmax = V.cwiseAbs().colwise().maxCoeff().transpose();
-  for (std::size_t i = 0; i < series.size(); ++i) {
-    const auto t1 = std::chrono::steady_clock::now();
-    const Series& sr = series[i];
-    HeatResult res;
-    res.K = sr.K, res.dt = sr.dt, res.subspace = md.m;
-    res.products = static_cast<double>(B.products()) / static_cast<double>(series.size());
-    // The error coordinates e^k ξ⁰ − ξ^k of every step, the norms, the blow-up guard.
-    Mat Z(md.m, sr.K);
-    double err_l2 = 0, prev = u0;
-    long done = 0;
-    const long blown = run_modes(sr, md, ex.out_l2sq, u0, [&](long k0, const auto& X) {
-      for (Eigen::Index c = 0; c < X.cols(); ++c) {
-        const long k = k0 + c;
-        const double ek = decay(sr, k);
-        const double un = std::sqrt(X.col(c).squaredNorm() + ek * ek * ex.out_l2sq);
-        res.growth_max = std::max(res.growth_max, un / u0);
-        if (sr.s->observe) sr.s->observe(k, V * X.col(c));
-        done = k;
-        if (!std::isfinite(un) || un > sr.s->blowup_factor * u0) {
-          res.blew_up = true, res.blowup_step = k, res.growth = un / u0, res.amplification = un / prev;
-          return;
-        }
-        prev = un;
-        Z.col(k - 1) = ek * md.xi0 - X.col(c);
-        err_l2 = std::max(err_l2, Z.col(k - 1).norm());
-      }
-    });
-    (void)blown;
-    res.steps_done = done;
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    res.rel_error = res.blew_up ? nan : err_l2 / ex.ref_l2;
-    res.rel_error_max = res.blew_up ? nan : linf_max(V, colmax, Z.leftCols(done)) / ex.max_exact;
-    res.seconds = build_s / static_cast<double>(series.size()) + seconds_since(t1);
-    res.seconds_per_step = res.seconds / static_cast<double>(std::max(1L, res.steps_done));
-    out[static_cast<std::size_t>(&sr - series.data())] = res;
+  // Each group through its modes, the groups of one size on one map from eigen-coordinates to
+  // the unknowns.
+  int mapped = -1;
+  Mat V;
+  Vec colmax;
+  for (auto& [g, idx] : sets) {
+    const Modes& md = taken.at(g);
+    if (md.m != mapped) evaluate_map(B, md, s, V, colmax), mapped = md.m;
+    for (std::size_t i : idx) out[i] = finish_series(series[i], md, ex, u0, V, colmax, B, series.size(), build_s);
   }
 }
 

@@ -31,7 +31,10 @@
 // is rounding, and the larger subspace is taken as well; the progress callback says which stop
 // was met.  An invariant subspace (the space is exhausted, e.g. θ = 0 after m = 2(K+1)) is
 // exact.  One subspace serves every series that shares the operator (every θ and time step of
-// one Laplacian and one choice of volumes).
+// one Laplacian and one choice of volumes); its size is decided per size group
+// (HeatSetting::size_group): each group keeps the modes of the size its own series settled at,
+// the first m columns of a basis grown further being the basis grown to m, so a group's
+// numbers are those it gives alone, bit for bit (tests/unit/test_heat_krylov.cpp).
 //
 // Validated against the stepper (tests/unit/test_heat_krylov.cpp: trajectories and errors
 // equal to 1e-9 of the error), which stays the reference: --propagator stepped.
