@@ -23,10 +23,14 @@ common=(--h-rule "$rule" --volumes "$volumes" --dt-rule "$dt" --weights "$weight
         --profile paper --propagator "$how")
 now() { date +%s.%N; }
 load() { cut -d" " -f1-3 /proc/loadavg; }
-# The subspace sizes a run's rows took (distinct, comma-separated; 0: stepped).
-sizes() {
-  awk -F'\t' '/^#/{next} !(FILENAME in h){for(i=1;i<=NF;i++)c[$i]=i; h[FILENAME]; next} {print $c["subspace"]}' "$@" | sort -un | paste -sd,
+# The distinct values of column $1 over the rows of the files that follow, comma-separated.
+distinct() {
+  local col=$1; shift
+  awk -F'\t' -v col="$col" '/^#/{next} !(FILENAME in h){for(i=1;i<=NF;i++)c[$i]=i; h[FILENAME]; next} {print $c[col]}' "$@" |
+    sort -u | paste -sd,
 }
+# The subspace sizes a run's rows took (0: stepped).
+sizes() { distinct subspace "$@" | tr , '\n' | sort -n | paste -sd,; }
 rows=()
 for table in 4.5 4.6 4.7; do
   f=$scratch/thesis_table${table/./_}.tsv
@@ -46,7 +50,7 @@ tmp=$(mktemp "$out.XXXX")
   echo "# Tables 4.5-4.7 alone and in one run sharing the Laplacian and the Krylov subspace (issue 58, item 2): 2^-$level, $rule, volumes $volumes, dt $dt, $weight weight, propagator $how"
   echo "# machine = $(lscpu | awk -F: '/Model name/{gsub(/^ +/,"",$2); n=$2} /CPU family/{gsub(/ /,"",$2); f=$2} /^Model:/{gsub(/ /,"",$2); m=$2} END{print n " family " f " model " m}'), $(nproc --all) vCPUs, OMP_NUM_THREADS=${OMP_NUM_THREADS:-unset}"
   echo "# command = bench/time_heat_shared.sh BIN $level $rule $volumes $dt $weight $how OUT"
-  echo "# code = $(awk -F'\t' '/^#/{next} !(FILENAME in h){for(i=1;i<=NF;i++)c[$i]=i; h[FILENAME]; next} {print $c["code"]}' "$scratch"/thesis_table4_?.tsv | sort -u | paste -sd,)"
+  echo "# code = $(distinct code "$scratch"/thesis_table4_?.tsv)"
   echo "# git_revision = $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)"
   echo "# note = equal_rows: the shared run's --verify of each table's own file, largest relative difference exactly 0 (every number and the subspace size)"
   echo "# written_utc = $(date -u +%FT%TZ)"
