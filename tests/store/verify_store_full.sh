@@ -16,7 +16,11 @@
 # steps, if stepped, preconditioned ("--solver tau").  Tolerances: kStoreSolverPathRelTol and
 # kStorePropagatorPathRelTol in src/gpm/studies/run/store.hpp, ten times the largest
 # difference measured between the paths.  The rows' own path stays on the sample verified by
-# it (every line of path "own") and on make test's draw.
+# it (every line of path "own") and on make test's draw.  Heat files of one reading and level
+# that go by the propagator are verified in one run (thesis_heat --table 4.5,4.6: one
+# Laplacian and one Krylov subspace, each table sized as alone, so each file meets its own
+# numbers): one line per file, its path ending in the tables' list ("--table 4.5,4.6") and its
+# seconds those of the shared run.
 #
 # seal: the first 16 hex digits of the SHA-256 of the line's other cells, a tripwire for
 # hand edits.  A (file, level) whose line carries the program's current code is skipped, so a
@@ -113,39 +117,78 @@ if [ $dry = 1 ]; then
   exit 0
 fi
 
+# Heat files of one reading whose level goes by the propagator (--cheap) share one run: the
+# tables' series on one Laplacian and one Krylov subspace (thesis_heat --table 4.5,4.6, each
+# table keeping the subspace size it settles at alone, so each file sees its own numbers;
+# tests/heat/shared_subspace_test.sh).  Files are of one reading when their names and options
+# differ by the table alone.  Such a job's fields hold the files and their stored seconds as
+# comma lists, its options the tables' list, and a last field the --out pattern ("-": one file).
+jobs=$(mktemp); trap 'rm -f "$todo" "$pending" "$jobs"' EXIT
+awk -F'\t' -v OFS='\t' '
+  { rest = $4; sub(/^--table [0-9.]+ ?/, "", rest); table = $4; sub(/^--table /, "", table); sub(/ .*/, "", table)
+    shared = $3 == "thesis_heat" && $7 ~ /--propagator auto/ && $1 ~ /^thesis_table4_[567]/ && $4 ~ /^--table /
+    key = shared ? $2 SUBSEP $5 SUBSEP $7 SUBSEP rest SUBSEP substr($1, 16) : NR
+    if (!(key in n)) order[++k] = key
+    i = ++n[key]; line[key, i] = $0; tab[key, i] = table; tail[key] = rest; suffix[key] = substr($1, 16) }
+  END { for (j = 1; j <= k; j++) { key = order[j]
+          if (n[key] == 1) { print line[key, 1], "-"; continue }
+          files = stored = tables = ""; sum = 0
+          for (i = 1; i <= n[key]; i++) at[i] = i  # the tables in their order (4.5, 4.6, 4.7)
+          for (i = 2; i <= n[key]; i++) for (j2 = i; j2 > 1 && tab[key, at[j2 - 1]] > tab[key, at[j2]]; j2--) {
+            x = at[j2]; at[j2] = at[j2 - 1]; at[j2 - 1] = x }
+          for (i2 = 1; i2 <= n[key]; i2++) { i = at[i2]; split(line[key, i], f, "\t")
+            files = files (i2 > 1 ? "," : "") f[1]; stored = stored (i2 > 1 ? "," : "") f[6]
+            tables = tables (i2 > 1 ? "," : "") tab[key, i]; sum += f[8] }
+          print files, f[2], f[3], "--table " tables (tail[key] == "" ? "" : " " tail[key]), f[5], stored, f[7], sum,
+                "thesis_table{table}" suffix[key] } }' "$pending" | sort -t$'\t' -k8,8g > "$jobs"
+
 spent=0 differs=0 done_n=0
-while IFS=$'\t' read -r file level program args code stored path expect; do
+while IFS=$'\t' read -r files level program args code stored path expect pattern; do
   if [ -n "$max_unit" ] && awk -v s="$expect" -v m="$max_unit" 'BEGIN { exit !(s > m) }'; then continue; fi
   if [ -n "$budget" ] && awk -v s="$expect" -v p="$spent" -v b="$budget" 'BEGIN { exit !(p + s > b) }'; then
     echo "verify_store_full: budget of $budget s reached ($spent s spent); rerun to continue"; break
   fi
   [ "$args" = "-" ] && args=""
   [ "$path" = own ] || args="$args $path"
+  IFS=, read -ra fs <<<"$files"
+  IFS=, read -ra st <<<"$stored"
+  out=$store/${fs[0]}.tsv
+  [ "$pattern" = - ] || out=$store/$pattern.tsv
   t0=$(date +%s)
   # shellcheck disable=SC2086
-  out=$("$build"/$program $args --profile paper --levels "$level" --out "$store/$file.tsv" --verify 2>&1)
+  log_out=$("$build"/$program $args --profile paper --levels "$level" --out "$out" --verify 2>&1)
   rc=$?
   secs=$(( $(date +%s) - t0 )); spent=$((spent + secs))
-  line=$(grep -m1 '^\[store\] verify' <<<"$out")
-  units=$(sed -n 's/.*: \([0-9]*\) units recomputed.*/\1/p' <<<"$line")
-  rows=$(sed -n 's/.* \([0-9]*\) rows compared.*/\1/p' <<<"$line")
-  diff=$(sed -n 's/.*max relative difference \([^ ]*\) .*/\1/p' <<<"$line")
-  tol=$(sed -n 's/.*(tolerance \([^,)]*\).*/\1/p' <<<"$line")
-  # A level the file holds in part (a census that stores some θ or variants only): the units
-  # it lacks are recomputed too and reported "not in the file"; the rows it holds decide.
-  others=$(grep '^\[store\]   differs: ' <<<"$out" | grep -vc ': not in the file$')
-  missing=$(sed -n 's/.*recomputed (\([0-9]*\) not in the file).*/\1/p' <<<"$line")
-  [ -n "$units" ] && [ -n "$missing" ] && units=$((units - missing))
-  if [ $rc -eq 0 ] && [[ $line == *": agree" ]]; then verdict=agree
-  elif [ $rc -eq 4 ] && [ "$others" -eq 0 ] && [ "${rows:-0}" -gt 0 ] &&
-       awk -v d="${diff:-1}" -v t="${tol:-1e-9}" 'BEGIN { exit !(d + 0 <= t + 0) }'; then verdict=agree
-  elif [ $rc -eq 4 ]; then verdict=differs; differs=$((differs + 1))
-  else echo "verify_store_full: $file level $level: exit $rc"; tail -3 <<<"$out"; exit 1; fi
-  cells="$(date -u +%Y-%m-%dT%H:%M:%SZ)	$file	$level	${program%% *}	$code	${units:-0}	${rows:-0}	${diff:-NA}	$verdict	$secs	$stored	$machine	$path"
-  seal=$(printf '%s' "$cells" | sha256sum | cut -c1-16)
-  printf '%s\t%s\n' "$cells" "$seal" >> "$log"
-  done_n=$((done_n + 1))
-  echo "verify_store_full: $file level $level ($path path): $verdict (max rel diff ${diff:-NA}, $secs s; stored $stored s)"
-done < "$pending"
+  [ $rc -eq 0 ] || [ $rc -eq 4 ] || { echo "verify_store_full: $files level $level: exit $rc"; tail -3 <<<"$log_out"; exit 1; }
+  # A shared run logs one line per file, each with the run's seconds and the tables it shared.
+  logged_path=$path
+  [ ${#fs[@]} -eq 1 ] || logged_path="$path ${args%% --*}"
+  for i in "${!fs[@]}"; do
+    file=${fs[$i]}
+    # The file's own report: its "[store] verify" line and the "differs" lines after it.
+    seg=$(awk -v head="[store] verify $store/$file.tsv:" 'index($0, "[store] verify ") == 1 { on = index($0, head) == 1 }
+      on' <<<"$log_out")
+    line=$(grep -m1 '^\[store\] verify' <<<"$seg")
+    [ -n "$line" ] || { echo "verify_store_full: $file level $level: no verify report for it"; tail -3 <<<"$log_out"; exit 1; }
+    units=$(sed -n 's/.*: \([0-9]*\) units recomputed.*/\1/p' <<<"$line")
+    rows=$(sed -n 's/.* \([0-9]*\) rows compared.*/\1/p' <<<"$line")
+    diff=$(sed -n 's/.*max relative difference \([^ ]*\) .*/\1/p' <<<"$line")
+    tol=$(sed -n 's/.*(tolerance \([^,)]*\).*/\1/p' <<<"$line")
+    # A level the file holds in part (a census that stores some θ or variants only): the units
+    # it lacks are recomputed too and reported "not in the file"; the rows it holds decide.
+    others=$(grep '^\[store\]   differs: ' <<<"$seg" | grep -vc ': not in the file$')
+    missing=$(sed -n 's/.*recomputed (\([0-9]*\) not in the file).*/\1/p' <<<"$line")
+    [ -n "$units" ] && [ -n "$missing" ] && units=$((units - missing))
+    if [[ $line == *": agree" ]] && [ "${rows:-0}" -gt 0 ]; then verdict=agree
+    elif [ "$others" -eq 0 ] && [ "${rows:-0}" -gt 0 ] &&
+         awk -v d="${diff:-1}" -v t="${tol:-1e-9}" 'BEGIN { exit !(d + 0 <= t + 0) }'; then verdict=agree
+    else verdict=differs; differs=$((differs + 1)); fi
+    cells="$(date -u +%Y-%m-%dT%H:%M:%SZ)	$file	$level	${program%% *}	$code	${units:-0}	${rows:-0}	${diff:-NA}	$verdict	$secs	${st[$i]}	$machine	$logged_path"
+    seal=$(printf '%s' "$cells" | sha256sum | cut -c1-16)
+    printf '%s\t%s\n' "$cells" "$seal" >> "$log"
+    done_n=$((done_n + 1))
+    echo "verify_store_full: $file level $level ($logged_path path): $verdict (max rel diff ${diff:-NA}, $secs s; stored ${st[$i]} s)"
+  done
+done < "$jobs"
 echo "verify_store_full: $done_n verified this run, $differs differ, $spent s"
 [ $differs -eq 0 ] || exit 4
