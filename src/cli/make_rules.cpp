@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gpm/error.hpp"
 #include "gpm/io/tsv.hpp"
 
 namespace gpm {

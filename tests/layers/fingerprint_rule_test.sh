@@ -5,7 +5,8 @@
 # (studies/define/census), of prices (studies/define/pricing, cost_model) or of the registry's
 # bookkeeping (studies/define/registry_books: a seed's store file) moves none; an
 # edit of a shared program body (src/apps/tables/) moves the programs that include it and no
-# other; a core source in a folder no rule names stops the script, naming it.
+# other; so does an edit of a solver (the include closure); a core source in a folder no rule
+# names stops the script, naming it.
 # usage: fingerprint_rule_test.sh SOURCE_DIR
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
@@ -66,9 +67,28 @@ same=$(fp "$t/g.cpp")
 [ "$same" = "$before" ] || { echo "FAIL: an edit of ${inc%.hpp}.cpp moved thesis_heat's or core_voronoi's fingerprint"; fail=1; }
 [ "$(fp_of "$user" "$t/g0.cpp")" != "$(fp_of "$user" "$t/g.cpp")" ] ||
   { echo "FAIL: an edit of ${inc%.hpp}.cpp left $user's fingerprint, which includes it, as it was"; fail=1; }
+# The include closure: an edit of the Krylov propagator moves the heat program's fingerprint
+# and not core_voronoi's, which is not built from it; an edit of a source named after no header
+# (weights/weight_registry.cpp, the weights' table) moves both, which include its header.
+cmake -DSRC="$t/tree" -DOUT="$t/k0.cpp" -DFLAGS=test -P "$src/cmake/fingerprint.cmake" >/dev/null 2>&1
+echo "// an edit of the propagator" >> "$t/tree/src/gpm/solvers/heat_krylov.cpp"
+cmake -DSRC="$t/tree" -DOUT="$t/k1.cpp" -DFLAGS=test -P "$src/cmake/fingerprint.cmake" >/dev/null 2>&1
+[ "$(fp_of thesis_heat "$t/k0.cpp")" != "$(fp_of thesis_heat "$t/k1.cpp")" ] ||
+  { echo "FAIL: an edit of solvers/heat_krylov.cpp left thesis_heat's fingerprint as it was"; fail=1; }
+[ "$(fp_of core_voronoi "$t/k0.cpp")" = "$(fp_of core_voronoi "$t/k1.cpp")" ] ||
+  { echo "FAIL: an edit of solvers/heat_krylov.cpp moved core_voronoi's fingerprint (not in its closure)"; fail=1; }
+cp "$src/src/gpm/solvers/heat_krylov.cpp" "$t/tree/src/gpm/solvers/heat_krylov.cpp"
+[ ! -e "$t/tree/src/gpm/weights/weight_registry.hpp" ] || { echo "FAIL: weight_registry.cpp now has a header (update this test)"; exit 1; }
+echo "// an edit of the weights' table" >> "$t/tree/src/gpm/weights/weight_registry.cpp"
+cmake -DSRC="$t/tree" -DOUT="$t/k2.cpp" -DFLAGS=test -P "$src/cmake/fingerprint.cmake" >/dev/null 2>&1
+for p in thesis_heat core_voronoi; do
+  [ "$(fp_of $p "$t/k0.cpp")" != "$(fp_of $p "$t/k2.cpp")" ] ||
+    { echo "FAIL: an edit of weights/weight_registry.cpp (named after no header) left $p's fingerprint as it was"; fail=1; }
+done
+cp "$src/src/gpm/weights/weight_registry.cpp" "$t/tree/src/gpm/weights/weight_registry.cpp"
 # A folder no rule names.
 mkdir -p "$t/tree/src/gpm/newroom" && echo "int x;" > "$t/tree/src/gpm/newroom/x.cpp"
 if fp "$t/d.cpp" >/dev/null; then echo "FAIL: a core source in an unnamed folder was accepted"; fail=1
 else grep -q "src/gpm/newroom/x.cpp" "$t/err" || { echo "FAIL: the refusal does not name the file:"; cat "$t/err"; fail=1; }; fi
-[ $fail -eq 0 ] && echo "fingerprint rule: h in define moves it, judge, the census, prices and the registry's books do not, a shared body only its own programs', an unnamed folder is refused"
+[ $fail -eq 0 ] && echo "fingerprint rule: h in define moves it, judge, the census, prices and the registry's books do not, a shared body only its own programs', the propagator only the heat program's, a source named after no header its includers', an unnamed folder is refused"
 exit $fail

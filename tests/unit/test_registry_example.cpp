@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "gpm/error.hpp"
 #include "gpm/geometry/domain.hpp"
 #include "gpm/geometry/volumes.hpp"
 #include "cli/make_rules.hpp"

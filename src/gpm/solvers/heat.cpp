@@ -13,14 +13,6 @@
 
 namespace gpm {
 
-long heat_steps(double T, double dt_nominal) {
-  require_positive(T, "T");
-  require_positive(dt_nominal, "time step");
-  const double r = T / dt_nominal;
-  if (r > 1e9) throw InputError("time step " + std::to_string(dt_nominal) + " gives more than 1e9 steps");
-  return std::max(1L, static_cast<long>(std::ceil(r * (1 - 1e-12))));
-}
-
 double heat_exact(double x, double y, double t, double kappa) {
   constexpr double pi = std::numbers::pi;
   return std::exp(-2 * kappa * pi * pi * t) * std::sin(pi * x) * std::sin(pi * y);

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "gpm/geometry/domain.hpp"
+#include "gpm/solvers/heat_cost.hpp"
 #include "gpm/solvers/laplacian_matrix.hpp"
 
 namespace gpm {
@@ -100,8 +101,7 @@ struct HeatExample {
 HeatExample heat_example(const Particles& p, const DiscreteLaplacian& L,
                          const DiscreteLaplacian::Volumes* volumes, double kappa);
 
-// K = ⌈T/Δt₀⌉ with a relative slack of 1e-12 (so Δt₀ = T/10 gives K = 10, not 11).
-long heat_steps(double T, double dt_nominal);
+// K = ⌈T/Δt₀⌉: heat_steps (heat_cost.hpp).
 
 // The exact solution of the example.
 double heat_exact(double x, double y, double t, double kappa);

@@ -459,21 +459,6 @@ std::string heat_propagator_name(HeatPropagator p) {
   return "?";
 }
 
-double heat_stepped_products(double dx, double h, double dt0, double T, double theta) {
-  (void)dx;
-  const double K = static_cast<double>(heat_steps(T, dt0));
-  return theta > 0 ? K * (2 + 30 * std::sqrt(dt0 / (h * h))) : K;
-}
-
-// Measured (tol 1e-10, every Δt rule and θ alike; Table 4.5's paper levels 2^-4…2^-8, the
-// three weights): m·h = 10.0–13.0 for the quartic and piecewise cubic weights, 12.6–18.4 for
-// the piecewise quintic, under both h rules (m grows by about m/6 a try, so a measured m
-// overshoots the least sufficient one by up to that).  13/h is the middle of that range.
-double heat_krylov_products(double dx, double h) {
-  (void)dx;
-  return 13.0 / h;
-}
-
 std::vector<HeatResult> run_heat(const Particles& p, const DiscreteLaplacian& L,
                                  const std::vector<HeatSetting>& settings,
                                  const std::vector<HeatPropagator>& hows, double dx,

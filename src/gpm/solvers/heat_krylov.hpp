@@ -85,12 +85,7 @@ enum class HeatPropagator { stepped, krylov, automatic };
 HeatPropagator parse_heat_propagator(const std::string& s);  // InputError if unknown
 std::string heat_propagator_name(HeatPropagator p);          // stepped, krylov, auto
 
-// Predicted Laplacian products of one series stepped: K products, and for θ > 0 the CG's
-// iterations plus one true residual per step (iterations ≈ 30·√(Δt₀/h²), cost_model.hpp).
-double heat_stepped_products(double dx, double h, double dt0, double T, double theta);
-// Predicted dimension of the Krylov subspace for a level and h (calibrated on the measured
-// dimensions: bench/README, the plan), and so its products (one per dimension).
-double heat_krylov_products(double dx, double h);
+// (heat_stepped_products and heat_krylov_products: heat_cost.hpp.)
 
 // Each series by its propagator (how[i]; one entry: every series): `automatic` sends to the
 // Krylov subspace the series whose predicted stepped products exceed the subspace's, the

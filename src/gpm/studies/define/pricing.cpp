@@ -6,9 +6,8 @@
 #include "gpm/geometry/domain.hpp"
 #include "gpm/geometry/influence_radius.hpp"
 #include "gpm/io/args.hpp"  // parse_number: the calibration file's cells
-#include "gpm/solvers/heat.hpp"
-#include "gpm/solvers/heat_krylov.hpp"
-#include "gpm/solvers/laplacian_matrix.hpp"
+#include "gpm/solvers/heat_cost.hpp"
+#include "gpm/solvers/laplacian_storage.hpp"
 #include "gpm/studies/define/catalog.hpp"
 #include "gpm/studies/define/heat_tables.hpp"
 #include "gpm/studies/define/thesis_tables.hpp"

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "gpm/geometry/influence_radius.hpp"
-#include "gpm/solvers/laplacian_matrix.hpp"
+#include "gpm/solvers/laplacian_storage.hpp"
 #include <vector>
 
 namespace gpm {
