@@ -183,7 +183,8 @@ class HeatTables {
                        "  (4.5,4.6,4.7: one Laplacian and one subspace for their series; --out then\n"
                        "  puts {table} where the table's name goes: DIR/thesis_table{table}.tsv)")
         .output("rates-input", "", "data file of the series that never blew up (for rate_table);\n"
-                                   "  with several readings, a pattern with {reading} as --out")
+                                   "  with several readings or tables, a pattern with {reading} or {table}\n"
+                                   "  as --out")
         .opt("dt-rule", "fit", "fit: dt = T/K, K = ceil(T/dt0) (the thesis' dt = T/K); exact: dt = dt0,\n"
                                "  K = ceil(T/dt0) steps (last step at K dt0 >= T); or both: fit,exact")
         .opt("h-rule", "h10", "h10: h = (2.6^4 2^-10 dx)^(1/4) as printed; h15: (2.6^4 2^-15 dx)^(1/4);\n"
@@ -276,7 +277,8 @@ class HeatTables {
       thetas = a.nums("thetas");
       for (double th : thetas)
         if (std::none_of(tables_.begin(), tables_.end(), [&](const HeatTable* t) { return chosen(t->thetas, th); }))
-          throw InputError("--thetas: " + fmt(th) + " is not a theta of Table " + a.str("table"));
+          throw InputError("--thetas: " + fmt(th) + " is not a theta of " +
+                           (tables_.size() > 1 ? "any of Tables " : "Table ") + a.str("table"));
     }
     std::vector<std::string> weights = pde_weights();
     if (!a.str("weights").empty()) {
