@@ -123,6 +123,8 @@ fi
 # tests/heat/shared_subspace_test.sh).  Files are of one reading when their names and options
 # differ by the table alone.  Such a job's fields hold the files and their stored seconds as
 # comma lists, its options the tables' list, and a last field the --out pattern ("-": one file).
+# Read by file name, so a group lists its tables in order (4.5, 4.6, 4.7); the jobs are then
+# ordered by their estimated seconds.
 jobs=$(mktemp); trap 'rm -f "$todo" "$pending" "$jobs"' EXIT
 awk -F'\t' -v OFS='\t' '
   { rest = $4; sub(/^--table [0-9.]+ ?/, "", rest); table = $4; sub(/^--table /, "", table); sub(/ .*/, "", table)
@@ -133,14 +135,11 @@ awk -F'\t' -v OFS='\t' '
   END { for (j = 1; j <= k; j++) { key = order[j]
           if (n[key] == 1) { print line[key, 1], "-"; continue }
           files = stored = tables = ""; sum = 0
-          for (i = 1; i <= n[key]; i++) at[i] = i  # the tables in their order (4.5, 4.6, 4.7)
-          for (i = 2; i <= n[key]; i++) for (j2 = i; j2 > 1 && tab[key, at[j2 - 1]] > tab[key, at[j2]]; j2--) {
-            x = at[j2]; at[j2] = at[j2 - 1]; at[j2 - 1] = x }
-          for (i2 = 1; i2 <= n[key]; i2++) { i = at[i2]; split(line[key, i], f, "\t")
-            files = files (i2 > 1 ? "," : "") f[1]; stored = stored (i2 > 1 ? "," : "") f[6]
-            tables = tables (i2 > 1 ? "," : "") tab[key, i]; sum += f[8] }
+          for (i = 1; i <= n[key]; i++) { split(line[key, i], f, "\t")
+            files = files (i > 1 ? "," : "") f[1]; stored = stored (i > 1 ? "," : "") f[6]
+            tables = tables (i > 1 ? "," : "") tab[key, i]; sum += f[8] }
           print files, f[2], f[3], "--table " tables (tail[key] == "" ? "" : " " tail[key]), f[5], stored, f[7], sum,
-                "thesis_table{table}" suffix[key] } }' "$pending" | sort -t$'\t' -k8,8g > "$jobs"
+                "thesis_table{table}" suffix[key] } }' <(sort -t$'\t' -k1,1 "$pending") | sort -t$'\t' -k8,8g > "$jobs"
 
 spent=0 differs=0 done_n=0
 while IFS=$'\t' read -r files level program args code stored path expect pattern; do
