@@ -5,15 +5,23 @@
 # run verifies the three files the tables wrote alone (store --verify: every number and the
 # subspace compared), so the timing holds only if its rows equal theirs; the table says so.
 #
-# usage: bench/time_heat_shared.sh BIN LEVEL H_RULE VOLUMES DT_RULE WEIGHT PROPAGATOR OUT_TSV
+# usage: bench/time_heat_shared.sh [--two-at-a-time] BIN LEVEL H_RULE VOLUMES DT_RULE WEIGHT PROPAGATOR OUT_TSV
 #   BIN: a thesis_heat binary (a frozen copy); PROPAGATOR: auto (each series the cheaper
 #   way, as the store's runs), krylov (every series through the subspace) or stepped.
 # Wall times of runs one after another on this machine: the load average before and after
 # each run is recorded beside it.
+#   --two-at-a-time: for levels where the four runs one after another outlast a session, the
+#   runs go in two pairs on two cores (4.5 beside 4.6, then 4.7 beside the shared run), each
+#   pair under the same load.  The shared run then cannot verify a file still being written:
+#   it writes its own files, and equal_rows compares them with the alone runs' row by row
+#   (every column but the timing ones, as printed).
 export LC_ALL=C
 set -eu
+usage="usage: bench/time_heat_shared.sh [--two-at-a-time] BIN LEVEL H_RULE VOLUMES DT_RULE WEIGHT PROPAGATOR OUT_TSV"
+pairs=0
+if [ "${1:-}" = --two-at-a-time ]; then pairs=1; shift; fi
 if [ $# -ne 8 ]; then
-  echo "usage: bench/time_heat_shared.sh BIN LEVEL H_RULE VOLUMES DT_RULE WEIGHT PROPAGATOR OUT_TSV" >&2
+  echo "$usage" >&2
   exit 2
 fi
 bin=$1 level=$2 rule=$3 volumes=$4 dt=$5 weight=$6 how=$7 out=$8
@@ -31,31 +39,71 @@ distinct() {
 }
 # The subspace sizes a run's rows took (0: stepped).
 sizes() { distinct subspace "$@" | tr , '\n' | sort -n | paste -sd,; }
-rows=()
-for table in 4.5 4.6 4.7; do
-  f=$scratch/thesis_table${table/./_}.tsv
+# One run timed: its row (tables, wall_s, rows, subspace, equal_rows, loads) into $scratch/$1.row.
+timed() {
+  local name=$1; shift
+  local l0 t0 t1 l1 rc=0
   l0=$(load); t0=$(now)
-  "$bin" --table "$table" "${common[@]}" --out "$f" >"$scratch/$table.log" 2>&1
+  "$bin" "$@" >"$scratch/$name.log" 2>&1 || rc=$?
   t1=$(now); l1=$(load)
-  rows+=("$table	$(awk -v a="$t0" -v b="$t1" 'BEGIN{printf "%.1f", b-a}')	$(grep -vc '^#' "$f" | awk '{print $1-1}')	$(sizes "$f")	NA	$l0	$l1")
+  echo "$rc" >"$scratch/$name.rc"
+  printf '%s\t%s\t%s\t%s\n' "$name" "$(awk -v a="$t0" -v b="$t1" 'BEGIN{printf "%.1f", b-a}')" "$l0" "$l1" >"$scratch/$name.row"
+}
+alone() { timed "$1" --table "$1" "${common[@]}" --out "$scratch/thesis_table${1/./_}.tsv"; }
+# The rows of a heat file without the columns that time a run, sorted: equal output, equal rows.
+numbers() {
+  awk -F'\t' '/^#/{next} !h{for(i=1;i<=NF;i++) if($i!="seconds"&&$i!="s_per_step"&&$i!="made_on"&&$i!="checked"&&$i!="seal") keep[i]; h=1; next}
+    {line=""; for(i=1;i<=NF;i++) if(i in keep) line=line $i "\t"; print line}' "$1" | sort
+}
+if [ $pairs -eq 0 ]; then
+  for table in 4.5 4.6 4.7; do alone "$table"; done
+  # A difference (exit 4) is a measurement too: the table is written, then the script fails.
+  timed 4.5,4.6,4.7 --table 4.5,4.6,4.7 "${common[@]}" --out "$scratch/thesis_table{table}.tsv" --verify
+  equal=$(grep -c 'max relative difference 0 (tolerance' "$scratch/4.5,4.6,4.7.log" || true)
+else
+  alone 4.5 & alone 4.6 & wait
+  mkdir "$scratch/shared"
+  alone 4.7 &
+  timed 4.5,4.6,4.7 --table 4.5,4.6,4.7 "${common[@]}" --out "$scratch/shared/thesis_table{table}.tsv" &
+  wait
+  equal=0
+  for f in "$scratch"/thesis_table4_?.tsv; do
+    [ -f "$scratch/shared/${f##*/}" ] && cmp -s <(numbers "$f") <(numbers "$scratch/shared/${f##*/}") && equal=$((equal + 1))
+  done
+fi
+for name in 4.5 4.6 4.7; do
+  [ "$(cat "$scratch/$name.rc")" = 0 ] || { echo "time_heat_shared.sh: table $name alone failed (exit $(cat "$scratch/$name.rc"))" >&2; tail -3 "$scratch/$name.log" >&2; exit 1; }
 done
-l0=$(load); t0=$(now)
-# A difference (exit 4) is a measurement too: the table is written, then the script fails.
-rc=0
-"$bin" --table 4.5,4.6,4.7 "${common[@]}" --out "$scratch/thesis_table{table}.tsv" --verify >"$scratch/shared.log" 2>&1 || rc=$?
-t1=$(now); l1=$(load)
-[ $rc -eq 0 ] || [ $rc -eq 4 ] || { echo "time_heat_shared.sh: the shared run failed (exit $rc)" >&2; tail -3 "$scratch/shared.log" >&2; exit 1; }
-equal=$(grep -c 'max relative difference 0 (tolerance' "$scratch/shared.log" || true)
-rows+=("4.5,4.6,4.7	$(awk -v a="$t0" -v b="$t1" 'BEGIN{printf "%.1f", b-a}')	NA	$(sizes "$scratch"/thesis_table4_?.tsv)	$equal of 3	$l0	$l1")
+rc=$(cat "$scratch/4.5,4.6,4.7.rc")
+[ "$rc" -eq 0 ] || [ "$rc" -eq 4 ] || { echo "time_heat_shared.sh: the shared run failed (exit $rc)" >&2; tail -3 "$scratch/4.5,4.6,4.7.log" >&2; exit 1; }
+shared_files=("$scratch"/thesis_table4_?.tsv)
+[ $pairs -eq 0 ] || shared_files=("$scratch"/shared/thesis_table4_?.tsv)
+rows=()
+for name in 4.5 4.6 4.7 4.5,4.6,4.7; do
+  IFS=$'\t' read -r _ wall l0 l1 <"$scratch/$name.row"
+  if [ "$name" = 4.5,4.6,4.7 ]; then
+    rows+=("$name	$wall	NA	$(sizes "${shared_files[@]}")	$equal of 3	$l0	$l1")
+  else
+    f=$scratch/thesis_table${name/./_}.tsv
+    rows+=("$name	$wall	$(grep -vc '^#' "$f" | awk '{print $1-1}')	$(sizes "$f")	NA	$l0	$l1")
+  fi
+done
+how_run="one after another, one thread each"
+[ $pairs -eq 0 ] || how_run="two at a time on two cores (4.5 beside 4.6, then 4.7 beside the shared run), one thread each"
 
 tmp=$(mktemp "$out.XXXX")
 {
   echo "# Tables 4.5-4.7 alone and in one run sharing the Laplacian and the Krylov subspace (issue 58, item 2): 2^-$level, $rule, volumes $volumes, dt $dt, $weight weight, propagator $how"
   echo "# machine = $(lscpu | awk -F: '/Model name/{gsub(/^ +/,"",$2); n=$2} /CPU family/{gsub(/ /,"",$2); f=$2} /^Model:/{gsub(/ /,"",$2); m=$2} END{print n " family " f " model " m}'), $(nproc --all) vCPUs, OMP_NUM_THREADS=${OMP_NUM_THREADS:-unset}"
-  echo "# command = bench/time_heat_shared.sh BIN $level $rule $volumes $dt $weight $how OUT"
-  echo "# code = $(distinct code "$scratch"/thesis_table4_?.tsv)"
+  echo "# runs = $how_run"
+  echo "# command = bench/time_heat_shared.sh $([ $pairs -eq 0 ] || echo '--two-at-a-time ')BIN $level $rule $volumes $dt $weight $how OUT"
+  echo "# code = $(distinct code "$scratch"/thesis_table4_?.tsv "${shared_files[@]}")"
   echo "# git_revision = $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)"
-  echo "# note = equal_rows: the shared run's --verify of each table's own file, largest relative difference exactly 0 (every number and the subspace size)"
+  if [ $pairs -eq 0 ]; then
+    echo "# note = equal_rows: the shared run's --verify of each table's own file, largest relative difference exactly 0 (every number and the subspace size)"
+  else
+    echo "# note = equal_rows: the shared run's files against the alone runs', every column but seconds, s_per_step, made_on, checked and seal equal as printed"
+  fi
   echo "# written_utc = $(date -u +%FT%TZ)"
   printf 'tables\twall_s\trows\tsubspace\tequal_rows\tload_before\tload_after\n'
   printf '%s\n' "${rows[@]}"
@@ -64,4 +112,4 @@ mv "$tmp" "$out"
 cat "$out"
 awk -F'\t' '/^#/||/^tables/{next} $1 != "4.5,4.6,4.7" {s += $2; if ($2 > m) m = $2} $1 == "4.5,4.6,4.7" {x = $2}
   END {printf "shared / slowest alone = %.2f, shared / sum alone = %.2f\n", x / m, x / s}' "$out"
-[ "$equal" = 3 ] || { echo "time_heat_shared.sh: $equal of 3 files equal bit for bit (the shared run's verify: exit $rc)" >&2; exit 4; }
+[ "$equal" = 3 ] || { echo "time_heat_shared.sh: $equal of 3 files equal bit for bit (the shared run: exit $rc)" >&2; exit 4; }
