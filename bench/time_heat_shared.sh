@@ -50,38 +50,45 @@ timed() {
   printf '%s\t%s\t%s\t%s\n' "$name" "$(awk -v a="$t0" -v b="$t1" 'BEGIN{printf "%.1f", b-a}')" "$l0" "$l1" >"$scratch/$name.row"
 }
 alone() { timed "$1" --table "$1" "${common[@]}" --out "$scratch/thesis_table${1/./_}.tsv"; }
+# Stop at the first failed alone run, before the next (hour-long) runs start.
+succeeded() {
+  local name
+  for name; do
+    [ "$(cat "$scratch/$name.rc")" = 0 ] || { echo "time_heat_shared.sh: table $name alone failed (exit $(cat "$scratch/$name.rc"))" >&2; tail -3 "$scratch/$name.log" >&2; exit 1; }
+  done
+}
+all=4.5,4.6,4.7
 # The rows of a heat file without the columns that time a run, sorted: equal output, equal rows.
 numbers() {
   awk -F'\t' '/^#/{next} !h{for(i=1;i<=NF;i++) if($i!="seconds"&&$i!="s_per_step"&&$i!="made_on"&&$i!="checked"&&$i!="seal") keep[i]; h=1; next}
     {line=""; for(i=1;i<=NF;i++) if(i in keep) line=line $i "\t"; print line}' "$1" | sort
 }
 if [ $pairs -eq 0 ]; then
-  for table in 4.5 4.6 4.7; do alone "$table"; done
+  for table in 4.5 4.6 4.7; do alone "$table"; succeeded "$table"; done
   # A difference (exit 4) is a measurement too: the table is written, then the script fails.
-  timed 4.5,4.6,4.7 --table 4.5,4.6,4.7 "${common[@]}" --out "$scratch/thesis_table{table}.tsv" --verify
-  equal=$(grep -c 'max relative difference 0 (tolerance' "$scratch/4.5,4.6,4.7.log" || true)
+  timed $all --table $all "${common[@]}" --out "$scratch/thesis_table{table}.tsv" --verify
+  equal=$(grep -c 'max relative difference 0 (tolerance' "$scratch/$all.log" || true)
 else
   alone 4.5 & alone 4.6 & wait
+  succeeded 4.5 4.6
   mkdir "$scratch/shared"
   alone 4.7 &
-  timed 4.5,4.6,4.7 --table 4.5,4.6,4.7 "${common[@]}" --out "$scratch/shared/thesis_table{table}.tsv" &
+  timed $all --table $all "${common[@]}" --out "$scratch/shared/thesis_table{table}.tsv" &
   wait
+  succeeded 4.7
   equal=0
   for f in "$scratch"/thesis_table4_?.tsv; do
     [ -f "$scratch/shared/${f##*/}" ] && cmp -s <(numbers "$f") <(numbers "$scratch/shared/${f##*/}") && equal=$((equal + 1))
   done
 fi
-for name in 4.5 4.6 4.7; do
-  [ "$(cat "$scratch/$name.rc")" = 0 ] || { echo "time_heat_shared.sh: table $name alone failed (exit $(cat "$scratch/$name.rc"))" >&2; tail -3 "$scratch/$name.log" >&2; exit 1; }
-done
-rc=$(cat "$scratch/4.5,4.6,4.7.rc")
-[ "$rc" -eq 0 ] || [ "$rc" -eq 4 ] || { echo "time_heat_shared.sh: the shared run failed (exit $rc)" >&2; tail -3 "$scratch/4.5,4.6,4.7.log" >&2; exit 1; }
+rc=$(cat "$scratch/$all.rc")
+[ "$rc" -eq 0 ] || [ "$rc" -eq 4 ] || { echo "time_heat_shared.sh: the shared run failed (exit $rc)" >&2; tail -3 "$scratch/$all.log" >&2; exit 1; }
 shared_files=("$scratch"/thesis_table4_?.tsv)
 [ $pairs -eq 0 ] || shared_files=("$scratch"/shared/thesis_table4_?.tsv)
 rows=()
-for name in 4.5 4.6 4.7 4.5,4.6,4.7; do
+for name in 4.5 4.6 4.7 $all; do
   IFS=$'\t' read -r _ wall l0 l1 <"$scratch/$name.row"
-  if [ "$name" = 4.5,4.6,4.7 ]; then
+  if [ "$name" = $all ]; then
     rows+=("$name	$wall	NA	$(sizes "${shared_files[@]}")	$equal of 3	$l0	$l1")
   else
     f=$scratch/thesis_table${name/./_}.tsv
@@ -110,6 +117,6 @@ tmp=$(mktemp "$out.XXXX")
 } >"$tmp"
 mv "$tmp" "$out"
 cat "$out"
-awk -F'\t' '/^#/||/^tables/{next} $1 != "4.5,4.6,4.7" {s += $2; if ($2 > m) m = $2} $1 == "4.5,4.6,4.7" {x = $2}
+awk -F'\t' -v all=$all '/^#/||/^tables/{next} $1 != all {s += $2; if ($2 > m) m = $2} $1 == all {x = $2}
   END {printf "shared / slowest alone = %.2f, shared / sum alone = %.2f\n", x / m, x / s}' "$out"
 [ "$equal" = 3 ] || { echo "time_heat_shared.sh: $equal of 3 files equal bit for bit (the shared run: exit $rc)" >&2; exit 4; }
