@@ -17,6 +17,8 @@
 #   (every column but the timing ones, as printed).
 export LC_ALL=C
 set -eu
+# shellcheck source=tables/census_lib.sh
+. "$(cd "$(dirname "$0")/.." && pwd)/tables/census_lib.sh"
 usage="usage: bench/time_heat_shared.sh [--two-at-a-time] BIN LEVEL H_RULE VOLUMES DT_RULE WEIGHT PROPAGATOR OUT_TSV"
 pairs=0
 if [ "${1:-}" = --two-at-a-time ]; then pairs=1; shift; fi
@@ -59,10 +61,7 @@ succeeded() {
 }
 all=4.5,4.6,4.7
 # The rows of a heat file without the columns that time a run, sorted: equal output, equal rows.
-numbers() {
-  awk -F'\t' '/^#/{next} !h{for(i=1;i<=NF;i++) if($i!="seconds"&&$i!="s_per_step"&&$i!="made_on"&&$i!="checked"&&$i!="seal") keep[i]; h=1; next}
-    {line=""; for(i=1;i<=NF;i++) if(i in keep) line=line $i "\t"; print line}' "$1" | sort
-}
+numbers() { data_rows "$1" '^(seconds|s_per_step|made_on|checked|seal)$' | sort; }
 if [ $pairs -eq 0 ]; then
   for table in 4.5 4.6 4.7; do alone "$table"; succeeded "$table"; done
   # A difference (exit 4) is a measurement too: the table is written, then the script fails.

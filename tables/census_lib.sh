@@ -1,7 +1,8 @@
 # Sourced by tables/store_census.sh, tables/beyond_plan.sh and the store's recomputations
 # (tests/store/verify_store_full.sh, verify_sample.sh): one store file read by its own program
 # in --census mode, a census's options beyond its levels, and the machine line of their
-# headers.  Nothing is computed.
+# headers; also a file's data rows without the columns that time a run (the comparisons of
+# bench/time_heat_shared.sh and tests/mpi/mpi_matches_serial.sh).  Nothing is computed.
 
 # census_options "CENSUS": a census's options beyond its levels (--only h15, --thetas 0), one
 # space apart: what a recomputation of one of the file's units takes along (a file that holds
@@ -27,6 +28,15 @@ census_read() {
 # machine_line: the CPU model and core count (the plan's calibration ran on this machine).
 machine_line() {
   echo "$(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores"
+}
+
+# data_rows FILE REGEX: FILE's data rows (header line included, `#` lines left out) without
+# the columns whose names match REGEX (awk's ERE), each row its kept cells, tab-ended: two runs
+# that made the same numbers print the same lines, whatever each took.
+data_rows() {
+  awk -F'\t' -v drop="$2" '/^#/ { next }
+    !h++ { for (i = 1; i <= NF; i++) keep[i] = $i !~ drop }
+    { line = ""; for (i = 1; i <= NF; i++) if (keep[i]) line = line $i "\t"; print line }' "$1"
 }
 
 # cheaper_path PROGRAM STEM FILE: the options of a store file's independent, cheaper

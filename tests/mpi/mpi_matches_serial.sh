@@ -7,16 +7,14 @@
 #   mpi_matches_serial.sh BUILD_DIR
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
+# shellcheck source=tables/census_lib.sh
+. "$(cd "$(dirname "$0")/../.." && pwd)/tables/census_lib.sh"
 build=$1
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
 mpi=(mpirun --allow-run-as-root --oversubscribe -np 2)
 export OMP_NUM_THREADS=1
 # rows FILE: the data rows by named columns, without those that measure the run.
-rows() {
-  awk -F'\t' '/^#/ { next }
-    !h++ { for (i = 1; i <= NF; i++) keep[i] = $i !~ /(_s|seconds|s_per_step|made_on)$/ && $i !~ /rss/; }
-    { line = ""; for (i = 1; i <= NF; i++) if (keep[i]) line = line $i "\t"; print line }' "$1"
-}
+rows() { data_rows "$1" '(_s|seconds|s_per_step|made_on)$|rss'; }
 fail=0
 check() {  # check NAME PROGRAM ARGS...
   local name=$1; shift
