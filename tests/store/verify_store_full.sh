@@ -71,7 +71,7 @@ for n in "$budget" "$max_unit" "$above"; do
 done
 header="date	file	level	program	code	units	rows	max_rel_diff	verdict	seconds	stored_s	machine	path	seal"
 [ -f "$log" ] || [ $dry = 1 ] || printf '%s\n' "$header" > "$log"
-machine="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(nproc) cores"
+machine=$(machine_line)
 
 # Every (file, level) with its stored seconds: the distinct values of the file's time column
 # per level (a unit repeats its time on each of its rows), summed; with --cheap, the path
