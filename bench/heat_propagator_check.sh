@@ -14,6 +14,8 @@
 #   on 2 cores.
 export LC_ALL=C
 set -euo pipefail
+# shellcheck source=tables/census_lib.sh
+. "$(cd "$(dirname "$0")/.." && pwd)/tables/census_lib.sh"
 if [ $# -lt 3 ]; then
   echo "usage: bench/heat_propagator_check.sh BUILD_DIR STORE_DIR OUT.tsv [coarse|rate|all]" >&2
   exit 2
@@ -27,7 +29,7 @@ if [ ! -s "$out" ]; then
   {
     echo "# program = bench/heat_propagator_check.sh"
     echo "# what = thesis_heat --propagator krylov against the stored (stepped, CG 1e-10) rows, per file and levels"
-    echo "# machine = $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores"
+    echo "# machine = $(machine_line)"
     echo "# git_revision = $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)"
     echo "# written_utc = $(date -u +%FT%TZ)"
     echo "$columns"

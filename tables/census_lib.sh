@@ -1,8 +1,9 @@
 # Sourced by tables/store_census.sh, tables/beyond_plan.sh and the store's recomputations
 # (tests/store/verify_store_full.sh, verify_sample.sh): one store file read by its own program
 # in --census mode, a census's options beyond its levels, and the machine line of their
-# headers; also a file's data rows without the columns that time a run (the comparisons of
-# bench/time_heat_shared.sh and tests/mpi/mpi_matches_serial.sh).  Nothing is computed.
+# headers (also of tables/imoto_where.sh and bench/heat_propagator_check.sh); also a file's
+# data rows without the columns that time a run (the comparisons of bench/time_heat_shared.sh
+# and tests/mpi/mpi_matches_serial.sh).  Nothing is computed.
 
 # census_options "CENSUS": a census's options beyond its levels (--only h15, --thetas 0), one
 # space apart: what a recomputation of one of the file's units takes along (a file that holds
@@ -25,9 +26,13 @@ census_read() {
   [ -n "$census_line" ] || census_problem=$(grep -m1 . <<<"$log" | tr '\t' ' ')
 }
 
-# machine_line: the CPU model and core count (the plan's calibration ran on this machine).
+# machine_line: the CPU model, its core count and, where fewer, the threads this run may use
+# (the plan's calibration ran on this machine).  `nproc` alone honours OMP_NUM_THREADS, so
+# lines written before this split say "1 cores" for a one-thread run on two cores.
 machine_line() {
-  echo "$(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores"
+  local all threads
+  all=$(nproc --all) threads=$(nproc)
+  echo "$(lscpu | sed -n 's/^Model name: *//p' | head -1), $all cores$([ "$threads" = "$all" ] || echo ", $threads thread$([ "$threads" = 1 ] || echo s)")"
 }
 
 # data_rows FILE REGEX: FILE's data rows (header line included, `#` lines left out) without

@@ -8,6 +8,8 @@
 # usage: imoto_where.sh BUILD_DIR OUT
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -euo pipefail
+# shellcheck source=tables/census_lib.sh
+. "$(dirname "$0")/census_lib.sh"
 build=$1 out=$2
 cols='weight\tvariant\tlevel\tdx\th\trel_error\tworst_x\tworst_y\tworst_to_boundary_over_h\ttime_s'
 if [ ! -f "$out" ]; then
@@ -17,7 +19,7 @@ if [ ! -f "$out" ]; then
     echo "# runs = $build/gpm trunc --operator lap --m 5 --function sin2pi --volumes uniform"
     echo "# git_revision = $(git describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)"
     echo "# gpm_fingerprint = $("$build/gpm" fingerprint gpm 2>/dev/null | tail -1)"
-    echo "# machine = $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores"
+    echo "# machine = $(machine_line)"
     echo "# started_utc = $(date -u +%Y-%m-%dT%H:%M:%SZ)"
     printf "$cols\n"
   } > "$out"
