@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # verify_store_full.sh on a copy of one store file (Table 4.4, the cheap levels): the first run
-# logs a sealed "agree" line per level, a second run resumes (verifies nothing again), and a
-# stored number changed by hand (seal recomputed, so only the recomputation can tell) makes
-# its level "differs" with exit 4, by the rows' own path and by the cheaper one (--cheap:
-# preconditioned CG for plain CG's rows, at 1e-6: an edit of 1e-5 is still caught).
+# logs a sealed "agree" line per level, a second run resumes (verifies nothing again), two
+# lanes (--jobs 2) log each level once, and a stored number changed by hand (seal recomputed,
+# so only the recomputation can tell) makes its level "differs" with exit 4, by the rows' own
+# path and by the cheaper one (--cheap: preconditioned CG for plain CG's rows, at 1e-6: an
+# edit of 1e-5 is still caught).
 # usage: verify_full_test.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
@@ -24,6 +25,14 @@ awk -F'\t' 'NR > 1 && (length($14) != 16 || $13 != "own") { bad = 1 } END { exit
 run > "$t/out2" 2>&1
 grep -q '^verify_store_full: 0 (file, level) to verify' "$t/out2" ||
   { echo "FAIL: the second run did not resume (it found work again):"; cat "$t/out2"; fail=1; }
+# Two lanes from one queue: both levels logged once each, sealed, the cells whole.
+rm -f "$t/verified.log"
+run --jobs 2 > "$t/out6" 2>&1 || { echo "FAIL: the run in two lanes failed:"; cat "$t/out6"; fail=1; }
+levels=$(awk -F'\t' 'NR > 1 && $9 == "agree" && length($14) == 16 && NF == 14 { print $3 }' "$t/verified.log" | sort | tr '\n' ' ')
+[ "$levels" = "5 6 " ] && grep -q '^verify_store_full: 2 verified this run, 0 differ, .* in 2 lanes$' "$t/out6" ||
+  { echo "FAIL: two lanes: want one sealed agree line for each of levels 5 and 6, got '$levels':"; cat "$t/out6" "$t/verified.log"; fail=1; }
+run --jobs 0 > "$t/out7" 2>&1
+[ $? -eq 2 ] && grep -q "^verify_store_full.sh: --jobs '0'" "$t/out7" || { echo "FAIL: --jobs 0 was not refused:"; cat "$t/out7"; fail=1; }
 # The cheaper path: both levels agree at its tolerance, logged with the path's options.
 rm -f "$t/verified.log"
 run --cheap --cheap-above 0 > "$t/out4" 2>&1 || { echo "FAIL: the cheap path failed:"; cat "$t/out4"; fail=1; }

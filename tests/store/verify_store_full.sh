@@ -29,7 +29,7 @@
 # exit 4 at the end (the log keeps it: a difference is a finding, not an accident).
 #
 # usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS]
-#                             [--cheap [--cheap-above SECONDS]] [--dry-run] [FILE...]
+#                             [--cheap [--cheap-above SECONDS]] [--jobs N] [--dry-run] [FILE...]
 #   --log       default STORE/verified.log
 #   --budget    stop before a (file, level) whose stored time would take the run past this
 #               many seconds (default: no limit); --max-unit: skip levels whose stored time
@@ -41,19 +41,22 @@
 #               solve scaled by 15 iterations over its own count, the preconditioned solver's
 #               11-13 at every level measured, results/bench/pcg_*; a heat row's stored time,
 #               an upper bound: its path is chosen only where it needs fewer products)
+#   --jobs      N lanes at once, each taking the cheapest job left when its last is done (each
+#               program then on its share of the cores, OMP_NUM_THREADS, unless set; a lane's
+#               --budget is its own wall time); default 1
 #   --dry-run   the price only: each (file, level) to do with its stored seconds, and the sum
 #   FILE...     only these store files (stems)
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 # shellcheck source=tables/census_lib.sh
 . "$(cd "$(dirname "$0")/../.." && pwd)/tables/census_lib.sh"
-usage="usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS] [--cheap [--cheap-above SECONDS]] [--dry-run] [FILE...]"
+usage="usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS] [--cheap [--cheap-above SECONDS]] [--jobs N] [--dry-run] [FILE...]"
 [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
 build=$1 store=$2
 shift 2
 [ -x "$build/gpm" ] || { echo "verify_store_full.sh: $build/gpm not found; $usage" >&2; exit 2; }
 [ -d "$store" ] || { echo "verify_store_full.sh: $store is not a directory; $usage" >&2; exit 2; }
-log=$store/verified.log budget="" max_unit="" dry=0 cheap=0 above=60 only=()
+log=$store/verified.log budget="" max_unit="" dry=0 cheap=0 above=60 lanes=1 only=()
 while [ $# -gt 0 ]; do
   case $1 in
     --log) log=${2:?--log needs a file}; shift 2 ;;
@@ -62,6 +65,7 @@ while [ $# -gt 0 ]; do
     --dry-run) dry=1; shift ;;
     --cheap) cheap=1; shift ;;
     --cheap-above) above=${2:?--cheap-above needs seconds}; shift 2 ;;
+    --jobs) lanes=${2:?--jobs needs a number}; shift 2 ;;
     -*) echo "verify_store_full.sh: unknown option '$1'; $usage" >&2; exit 2 ;;
     *) only+=("$1"); shift ;;
   esac
@@ -69,6 +73,13 @@ done
 for n in "$budget" "$max_unit" "$above"; do
   [ -z "$n" ] || [[ $n =~ ^[0-9]+$ ]] || { echo "verify_store_full.sh: '$n' is not a whole number of seconds" >&2; exit 2; }
 done
+[[ $lanes =~ ^[1-9][0-9]*$ ]] || { echo "verify_store_full.sh: --jobs '$lanes' is not a whole number of 1 or more" >&2; exit 2; }
+# Lanes share the cores: each program gets its share of threads unless the caller set them
+# (before machine_line, so that the log's machine cell says the threads a run had).
+if [ "$lanes" -gt 1 ] && [ -z "${OMP_NUM_THREADS:-}" ]; then
+  OMP_NUM_THREADS=$(( $(nproc) / lanes )); [ "$OMP_NUM_THREADS" -ge 1 ] || OMP_NUM_THREADS=1
+  export OMP_NUM_THREADS
+fi
 header="date	file	level	program	code	units	rows	max_rel_diff	verdict	seconds	stored_s	machine	path	seal"
 [ -f "$log" ] || [ $dry = 1 ] || printf '%s\n' "$header" > "$log"
 machine=$(machine_line)
@@ -141,53 +152,71 @@ awk -F'\t' -v OFS='\t' '
           print files, f[2], f[3], "--table " tables (tail[key] == "" ? "" : " " tail[key]), f[5], stored, f[7], sum,
                 "thesis_table{table}" suffix[key] } }' <(sort -t$'\t' -k1,1 "$pending") | sort -t$'\t' -k8,8g > "$jobs"
 
-spent=0 differs=0 done_n=0
-while IFS=$'\t' read -r files level program args code stored path expect pattern; do
-  if [ -n "$max_unit" ] && awk -v s="$expect" -v m="$max_unit" 'BEGIN { exit !(s > m) }'; then continue; fi
-  if [ -n "$budget" ] && awk -v s="$expect" -v p="$spent" -v b="$budget" 'BEGIN { exit !(p + s > b) }'; then
-    echo "verify_store_full: budget of $budget s reached ($spent s spent); rerun to continue"; break
-  fi
-  [ "$args" = "-" ] && args=""
-  [ "$path" = own ] || args="$args $path"
-  IFS=, read -ra fs <<<"$files"
-  IFS=, read -ra st <<<"$stored"
-  out=$store/${fs[0]}.tsv
-  [ "$pattern" = - ] || out=$store/$pattern.tsv
-  t0=$(date +%s)
-  # shellcheck disable=SC2086
-  log_out=$("$build"/$program $args --profile paper --levels "$level" --out "$out" --verify 2>&1)
-  rc=$?
-  secs=$(( $(date +%s) - t0 )); spent=$((spent + secs))
-  [ $rc -eq 0 ] || [ $rc -eq 4 ] || { echo "verify_store_full: $files level $level: exit $rc"; tail -3 <<<"$log_out"; exit 1; }
-  # A shared run logs one line per file, each with the run's seconds and the tables it shared.
-  logged_path=$path
-  [ ${#fs[@]} -eq 1 ] || logged_path="$path ${args%% --*}"
-  for i in "${!fs[@]}"; do
-    file=${fs[$i]}
-    # The file's own report: its "[store] verify" line and the "differs" lines after it.
-    seg=$(awk -v head="[store] verify $store/$file.tsv:" 'index($0, "[store] verify ") == 1 { on = index($0, head) == 1 }
-      on' <<<"$log_out")
-    line=$(grep -m1 '^\[store\] verify' <<<"$seg")
-    [ -n "$line" ] || { echo "verify_store_full: $file level $level: no verify report for it"; tail -3 <<<"$log_out"; exit 1; }
-    units=$(sed -n 's/.*: \([0-9]*\) units recomputed.*/\1/p' <<<"$line")
-    rows=$(sed -n 's/.* \([0-9]*\) rows compared.*/\1/p' <<<"$line")
-    diff=$(sed -n 's/.*max relative difference \([^ ]*\) .*/\1/p' <<<"$line")
-    tol=$(sed -n 's/.*(tolerance \([^,)]*\).*/\1/p' <<<"$line")
-    # A level the file holds in part (a census that stores some θ or variants only): the units
-    # it lacks are recomputed too and reported "not in the file"; the rows it holds decide.
-    others=$(grep '^\[store\]   differs: ' <<<"$seg" | grep -vc ': not in the file$')
-    missing=$(sed -n 's/.*recomputed (\([0-9]*\) not in the file).*/\1/p' <<<"$line")
-    [ -n "$units" ] && [ -n "$missing" ] && units=$((units - missing))
-    if [[ $line == *": agree" ]] && [ "${rows:-0}" -gt 0 ]; then verdict=agree
-    elif [ "$others" -eq 0 ] && [ "${rows:-0}" -gt 0 ] &&
-         awk -v d="${diff:-1}" -v t="${tol:-1e-9}" 'BEGIN { exit !(d + 0 <= t + 0) }'; then verdict=agree
-    else verdict=differs; differs=$((differs + 1)); fi
-    cells="$(date -u +%Y-%m-%dT%H:%M:%SZ)	$file	$level	${program%% *}	$code	${units:-0}	${rows:-0}	${diff:-NA}	$verdict	$secs	${st[$i]}	$machine	$logged_path"
-    seal=$(printf '%s' "$cells" | sha256sum | cut -c1-16)
-    printf '%s\t%s\n' "$cells" "$seal" >> "$log"
-    done_n=$((done_n + 1))
-    echo "verify_store_full: $file level $level ($logged_path path): $verdict (max rel diff ${diff:-NA}, $secs s; stored ${st[$i]} s)"
+# The jobs go to --jobs lanes through one queue, cheapest first: a lane takes the next job
+# when its last is done (under a lock, as are the log's appends), so a long level holds one
+# lane while the others go on.  Each lane keeps its own budget (a lane's seconds are wall
+# seconds) and reports its counts in a file; a lane that fails stops the others' next jobs.
+queue=$(mktemp -d); trap 'rm -rf "$todo" "$pending" "$jobs" "$queue"' EXIT
+cp "$jobs" "$queue/jobs"
+next_job() {  # the queue's first job, removed from it; nothing once empty or stopped
+  { flock 9; [ -e "$queue/stop" ] || { head -1 "$queue/jobs"; sed -i 1d "$queue/jobs"; }; } 9> "$queue/lock"
+}
+lane() {  # lane NUMBER: jobs from the queue until it is empty
+  spent=0 differs=0 done_n=0
+  while job=$(next_job) && [ -n "$job" ]; do
+    IFS=$'\t' read -r files level program args code stored path expect pattern <<<"$job"
+    if [ -n "$max_unit" ] && awk -v s="$expect" -v m="$max_unit" 'BEGIN { exit !(s > m) }'; then continue; fi
+    if [ -n "$budget" ] && awk -v s="$expect" -v p="$spent" -v b="$budget" 'BEGIN { exit !(p + s > b) }'; then
+      echo "verify_store_full: budget of $budget s reached ($spent s spent$([ "$lanes" = 1 ] || echo " in lane $1")); rerun to continue"; break
+    fi
+    [ "$args" = "-" ] && args=""
+    [ "$path" = own ] || args="$args $path"
+    IFS=, read -ra fs <<<"$files"
+    IFS=, read -ra st <<<"$stored"
+    out=$store/${fs[0]}.tsv
+    [ "$pattern" = - ] || out=$store/$pattern.tsv
+    t0=$(date +%s)
+    # shellcheck disable=SC2086
+    log_out=$("$build"/$program $args --profile paper --levels "$level" --out "$out" --verify 2>&1)
+    rc=$?
+    secs=$(( $(date +%s) - t0 )); spent=$((spent + secs))
+    [ $rc -eq 0 ] || [ $rc -eq 4 ] || { echo "verify_store_full: $files level $level: exit $rc"; tail -3 <<<"$log_out"; : > "$queue/stop"; exit 1; }
+    # A shared run logs one line per file, each with the run's seconds and the tables it shared.
+    logged_path=$path
+    [ ${#fs[@]} -eq 1 ] || logged_path="$path ${args%% --*}"
+    for i in "${!fs[@]}"; do
+      file=${fs[$i]}
+      # The file's own report: its "[store] verify" line and the "differs" lines after it.
+      seg=$(awk -v head="[store] verify $store/$file.tsv:" 'index($0, "[store] verify ") == 1 { on = index($0, head) == 1 }
+        on' <<<"$log_out")
+      line=$(grep -m1 '^\[store\] verify' <<<"$seg")
+      [ -n "$line" ] || { echo "verify_store_full: $file level $level: no verify report for it"; tail -3 <<<"$log_out"; : > "$queue/stop"; exit 1; }
+      units=$(sed -n 's/.*: \([0-9]*\) units recomputed.*/\1/p' <<<"$line")
+      rows=$(sed -n 's/.* \([0-9]*\) rows compared.*/\1/p' <<<"$line")
+      diff=$(sed -n 's/.*max relative difference \([^ ]*\) .*/\1/p' <<<"$line")
+      tol=$(sed -n 's/.*(tolerance \([^,)]*\).*/\1/p' <<<"$line")
+      # A level the file holds in part (a census that stores some θ or variants only): the units
+      # it lacks are recomputed too and reported "not in the file"; the rows it holds decide.
+      others=$(grep '^\[store\]   differs: ' <<<"$seg" | grep -vc ': not in the file$')
+      missing=$(sed -n 's/.*recomputed (\([0-9]*\) not in the file).*/\1/p' <<<"$line")
+      [ -n "$units" ] && [ -n "$missing" ] && units=$((units - missing))
+      if [[ $line == *": agree" ]] && [ "${rows:-0}" -gt 0 ]; then verdict=agree
+      elif [ "$others" -eq 0 ] && [ "${rows:-0}" -gt 0 ] &&
+           awk -v d="${diff:-1}" -v t="${tol:-1e-9}" 'BEGIN { exit !(d + 0 <= t + 0) }'; then verdict=agree
+      else verdict=differs; differs=$((differs + 1)); fi
+      cells="$(date -u +%Y-%m-%dT%H:%M:%SZ)	$file	$level	${program%% *}	$code	${units:-0}	${rows:-0}	${diff:-NA}	$verdict	$secs	${st[$i]}	$machine	$logged_path"
+      seal=$(printf '%s' "$cells" | sha256sum | cut -c1-16)
+      { flock 9; printf '%s\t%s\n' "$cells" "$seal" >> "$log"; } 9> "$queue/lock"
+      done_n=$((done_n + 1))
+      echo "verify_store_full: $file level $level ($logged_path path): $verdict (max rel diff ${diff:-NA}, $secs s; stored ${st[$i]} s)"
+    done
   done
-done < "$jobs"
-echo "verify_store_full: $done_n verified this run, $differs differ, $spent s"
-[ $differs -eq 0 ] || exit 4
+  echo "$done_n $differs $spent" > "$queue/lane$1"
+}
+for ((j = 1; j <= lanes; j++)); do lane "$j" & done
+failed=0
+for pid in $(jobs -p); do wait "$pid" || failed=1; done
+read -r done_n differs spent < <(cat "$queue"/lane* 2>/dev/null | awk '{ n += $1; d += $2; s += $3 } END { print n + 0, d + 0, s + 0 }')
+echo "verify_store_full: $done_n verified this run, $differs differ, $spent s$([ "$lanes" = 1 ] || echo " in $lanes lanes")"
+[ $failed -eq 0 ] || exit 1
+[ "$differs" -eq 0 ] || exit 4
