@@ -86,7 +86,9 @@ machine=$(machine_line)
 
 # Every (file, level) with its stored seconds: the distinct values of the file's time column
 # per level (a unit repeats its time on each of its rows), summed; with --cheap, the path
-# and the estimated seconds by it (cheap_s above).
+# and the estimated seconds by it (cheap_s above); last, those seconds on one thread: each
+# row's times the threads its made_on cell names (a row made on two threads is wall time of
+# two), what a lane of one thread needs on the machine that made the rows.
 todo=$(mktemp); trap 'rm -f "$todo"' EXIT
 while IFS=$'\t' read -r study file program args census coarse slice; do
   [ ${#only[@]} -eq 0 ] || [[ " ${only[*]} " == *" $file "* ]] || continue
@@ -108,10 +110,13 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
     !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1
          t = ("seconds" in c) ? c["seconds"] : c["time_s"]; next }
     { k = $c["level"]; key = k SUBSEP $t
-      if (!(key in seen)) { seen[key] = 1; s[k] += $t; e[k] += (path == "own" ? $t : cheaper_s(c, t)) } }
+      if (!(key in seen)) { seen[key] = 1; s[k] += $t; e[k] += (path == "own" ? $t : cheaper_s(c, t))
+        n = 1; if (("made_on" in c) && match($c["made_on"], /, [0-9]+ thread/)) n = substr($c["made_on"], RSTART + 2, RLENGTH - 9) + 0
+        w[k] += n * $t } }
     '"$cheaper_seconds_awk"'
-    END { for (k in s) printf "%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%.1f\n", file, k, program, args, code, s[k],
-                             (s[k] > above ? path : "own"), (s[k] > above ? e[k] : s[k]) }' "$f"
+    END { for (k in s) { x = s[k] > above ? e[k] : s[k]
+            printf "%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%.1f\t%.1f\n", file, k, program, args, code, s[k],
+                   (s[k] > above ? path : "own"), x, (s[k] > 0 ? x * w[k] / s[k] : x) } }' "$f"
 done < <("$build/gpm" study --store-rows) | sort -t$'\t' -k8,8g > "$todo"
 
 # Skip what the log already vouches for under the current code.
@@ -120,11 +125,12 @@ awk -F'\t' 'NR == FNR { if (FNR > 1 && $9 == "agree") done[$2 SUBSEP $3 SUBSEP $
   !(($1 SUBSEP $2 SUBSEP $5) in done)' "$log" "$todo" 2>/dev/null > "$pending" || cp "$todo" "$pending"
 total=$(awk -F'\t' '{ s += $6 } END { printf "%.0f", s }' "$pending")
 by_path=$(awk -F'\t' '{ s += $8 } END { printf "%.0f", s }' "$pending")
+one_thread=$(awk -F'\t' '{ s += $9 } END { printf "%.1f", s / 3600 }' "$pending")
 n=$(wc -l < "$pending")
-echo "verify_store_full: $n (file, level) to verify, $total s stored time ($(awk -v s="$total" 'BEGIN { printf "%.1f", s / 3600 }') h as recorded)$([ $cheap = 1 ] && echo ", $by_path s ($(awk -v s="$by_path" 'BEGIN { printf "%.1f", s / 3600 }') h) estimated by the cheap path"); $(($(wc -l < "$todo") - n)) already in $log"
+echo "verify_store_full: $n (file, level) to verify, $total s stored time ($(awk -v s="$total" 'BEGIN { printf "%.1f", s / 3600 }') h as recorded)$([ $cheap = 1 ] && echo ", $by_path s ($(awk -v s="$by_path" 'BEGIN { printf "%.1f", s / 3600 }') h) estimated by the cheap path"), $one_thread h on one thread; $(($(wc -l < "$todo") - n)) already in $log"
 if [ $dry = 1 ]; then
-  printf 'file\tlevel\tprogram\tstored_s\tpath\tcheap_s\n'
-  awk -F'\t' -v OFS='\t' '{ print $1, $2, $3, $6, $7, $8 }' "$pending"
+  printf 'file\tlevel\tprogram\tstored_s\tpath\tcheap_s\tone_thread_s\n'
+  awk -F'\t' -v OFS='\t' '{ print $1, $2, $3, $6, $7, $8, $9 }' "$pending"
   exit 0
 fi
 
@@ -138,7 +144,8 @@ fi
 # ordered by their estimated seconds.
 jobs=$(mktemp); trap 'rm -f "$todo" "$pending" "$jobs"' EXIT
 awk -F'\t' -v OFS='\t' '
-  { rest = $4; sub(/^--table [0-9.]+ ?/, "", rest); table = $4; sub(/^--table /, "", table); sub(/ .*/, "", table)
+  { NF = 8  # the one-thread seconds price only
+    rest = $4; sub(/^--table [0-9.]+ ?/, "", rest); table = $4; sub(/^--table /, "", table); sub(/ .*/, "", table)
     shared = $3 == "thesis_heat" && $7 ~ /--propagator auto/ && $1 ~ /^thesis_table4_[567]/ && $4 ~ /^--table /
     key = shared ? $2 SUBSEP $5 SUBSEP $7 SUBSEP rest SUBSEP substr($1, 16) : NR
     if (!(key in n)) order[++k] = key
