@@ -69,3 +69,11 @@ cheaper_seconds_awk='function cheaper_s(col, t,   its) {
   if ("cg_iterations" in col) { its = $col["cg_iterations"]
     return its > 15 ? $col["assembly_s"] + $col["solve_s"] * 15 / its : $t }
   return $t }'
+
+# An awk function for the threads a store row was made on: the number its made_on cell names
+# ("AMD EPYC, 2 threads, 2026-12-02"), 1 where the file has no such cell.  `col`: the column
+# map by name.
+made_on_threads_awk='function made_on_threads(col) {
+  if (("made_on" in col) && match($col["made_on"], /, [0-9]+ thread/))
+    return substr($col["made_on"], RSTART + 2, RLENGTH - 9) + 0
+  return 1 }'

@@ -111,9 +111,9 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
          t = ("seconds" in c) ? c["seconds"] : c["time_s"]; next }
     { k = $c["level"]; key = k SUBSEP $t
       if (!(key in seen)) { seen[key] = 1; s[k] += $t; e[k] += (path == "own" ? $t : cheaper_s(c, t))
-        n = 1; if (("made_on" in c) && match($c["made_on"], /, [0-9]+ thread/)) n = substr($c["made_on"], RSTART + 2, RLENGTH - 9) + 0
-        w[k] += n * $t } }
+                            w[k] += made_on_threads(c) * $t } }
     '"$cheaper_seconds_awk"'
+    '"$made_on_threads_awk"'
     END { for (k in s) { x = s[k] > above ? e[k] : s[k]
             printf "%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%.1f\t%.1f\n", file, k, program, args, code, s[k],
                    (s[k] > above ? path : "own"), x, (s[k] > 0 ? x * w[k] / s[k] : x) } }' "$f"
