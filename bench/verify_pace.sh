@@ -30,10 +30,14 @@ tmp=$(mktemp "$out.XXXXXX"); trap 'rm -f "$tmp"' EXIT
   while IFS=$'\t' read -r file level program secs stored machine path; do
     f=$store/$file.tsv
     [ -f "$f" ] || { echo "verify_pace.sh: $f (named by the log) is missing" >&2; exit 4; }
-    awk -F'\t' -v L="$level" '/^#/ { next }
-      !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; t = ("seconds" in c) ? c["seconds"] : c["time_s"]; next }
-      $c["level"] == L { if (!($t in seen)) { seen[$t] = 1; w += made_on_threads(c) * $t }
+    # A part's line (its path ending "--only PART", verify_store_full.sh) is priced by its rows.
+    part=-; [[ $path =~ --only\ ([^ ]+) ]] && part=${BASH_REMATCH[1]}
+    awk -F'\t' -v L="$level" -v part="$part" -v ukey="$(unit_key "$program")" '/^#/ { next }
+      !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; t = ("seconds" in c) ? c["seconds"] : c["time_s"]
+           nk = split(ukey, uk, ","); next }
+      $c["level"] == L && (part == "-" || key() == part) { if (!($t in seen)) { seen[$t] = 1; w += made_on_threads(c) * $t }
                          if ("storage" in c) st[$c["storage"]] = 1 }
+      function key(   p, i) { p = $c[uk[1]]; for (i = 2; i <= nk; i++) p = p "," $c[uk[i]]; return p }
       '"$made_on_threads_awk"'
       END { s = ""; for (x in st) s = s (s == "" ? "" : "+") x; printf "%s\t%.1f\n", (s == "" ? "-" : s), w }' "$f" |
     { IFS=$'\t' read -r storage one

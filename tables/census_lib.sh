@@ -44,6 +44,19 @@ data_rows() {
     { line = ""; for (i = 1; i <= NF; i++) if (keep[i]) line = line $i "\t"; print line }' "$1"
 }
 
+# unit_key PROGRAM: the key columns besides the level whose values select one part of a level
+# with --only, each part its own Laplacian or pass (so a level recomputed part by part costs
+# about what it costs whole): Table 4.4's h rule and weight, Tables 4.1-4.3's reading and
+# volumes, imoto's m, a heat file's weight.  Empty where a level goes whole.
+unit_key() {
+  case $1 in
+    thesis_table4_4) echo h_rule,weight ;;
+    thesis_table4_1|thesis_table4_2|thesis_table4_3) echo h_reading,volumes ;;
+    imoto_fig5_table1) echo m ;;
+    thesis_heat) echo weight ;;
+  esac
+}
+
 # cheaper_path PROGRAM STEM FILE: the options of a store file's independent, cheaper
 # recomputation (issue 58 item 3), "-" where it has none: Table 4.4's plain-CG files by the
 # tau-preconditioned solver; Table 4.7's by their own stepping with that solver (2-3 implicit

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # verify_store_full.sh on a copy of one store file (Table 4.4, the cheap levels): the first run
-# logs a sealed "agree" line per level, a second run resumes (verifies nothing again), two
+# logs a sealed "agree" line per level, a second run resumes (verifies nothing again), levels
+# in parts log a line per unit (and a file's units beyond its census's --only are verified), two
 # lanes (--jobs 2) log each level once, and a stored number changed by hand (seal recomputed,
 # so only the recomputation can tell) makes its level "differs" with exit 4, by the rows' own
 # path and by the cheaper one (--cheap: preconditioned CG for plain CG's rows, at 1e-6: an
@@ -25,6 +26,31 @@ awk -F'\t' 'NR > 1 && (length($14) != 16 || $13 != "own") { bad = 1 } END { exit
 run > "$t/out2" 2>&1
 grep -q '^verify_store_full: 0 (file, level) to verify' "$t/out2" ||
   { echo "FAIL: the second run did not resume (it found work again):"; cat "$t/out2"; fail=1; }
+# Parts (--split-above 0: every level by its units, --only h rule,weight): the whole levels'
+# lines above vouch for their parts; on a log of its own, one sealed line per unit the file
+# holds, each path naming its part, and a rerun resumes.
+run --split-above 0 > "$t/out8" 2>&1
+grep -q '^verify_store_full: 0 (file, level) to verify' "$t/out8" ||
+  { echo "FAIL: a whole level's line did not vouch for its parts:"; cat "$t/out8"; fail=1; }
+units=$(awk -F'\t' '/^#/ { next } !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; next }
+  { print $c["level"], $c["h_rule"] "," $c["weight"] }' "$t/store/thesis_table4_4.tsv" | sort -u)
+run --split-above 0 --log "$t/parts.log" > "$t/out9" 2>&1 || { echo "FAIL: the run in parts failed:"; cat "$t/out9"; fail=1; }
+got=$(awk -F'\t' 'NR > 1 && $9 == "agree" && length($14) == 16 && $13 ~ /^own --only / { print $3, substr($13, 12) }' "$t/parts.log" | sort)
+[ -n "$units" ] && [ "$got" = "$units" ] ||
+  { echo "FAIL: parts: want one agree line per (level, h rule, weight):"; echo "$units"; echo "got:"; echo "$got"; fail=1; }
+run --split-above 0 --log "$t/parts.log" > "$t/out10" 2>&1
+grep -q '^verify_store_full: 0 (file, level) to verify' "$t/out10" ||
+  { echo "FAIL: the run in parts did not resume:"; cat "$t/out10"; fail=1; }
+# A file holding units beyond its census's --only (cellvol_tau's census: h15; here h10 rows
+# added at level 5 by the program itself): its level goes in parts, the h10 units verified too.
+tau=thesis_table4_4_cellvol_tau
+awk -F'\t' '/^#/ { print; next } !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; print; next }
+  $c["level"] == 5' "$src/results/paper/$tau.tsv" > "$t/store/$tau.tsv"
+"$build/thesis_table4_4" --volumes cell --solver tau --seed 1 --levels 5 --only h10 --profile paper \
+  --out "$t/store/$tau.tsv" > "$t/tau.out" 2>&1 || { echo "FAIL: could not add h10 rows:"; cat "$t/tau.out"; exit 1; }
+bash "$src/tests/store/verify_store_full.sh" "$build" "$t/store" --log "$t/tau.log" "$tau" > "$t/out11" 2>&1
+n=$(awk -F'\t' '$9 == "agree" && $13 ~ /^own --only h10,/' "$t/tau.log" | wc -l)
+[ "$n" -eq 3 ] || { echo "FAIL: the h10 units beyond the census's --only h15: want 3 agree lines, got $n:"; cat "$t/out11"; fail=1; }
 # Two lanes from one queue: both levels logged once each, sealed, the cells whole.
 rm -f "$t/verified.log"
 run --jobs 2 > "$t/out6" 2>&1 || { echo "FAIL: the run in two lanes failed:"; cat "$t/out6"; fail=1; }
@@ -83,5 +109,5 @@ verdicts=$(awk -F'\t' '{ print $2, $3, $9 }' <<<"$shared" | sort | tr '\n' ';')
 want="${heat[0]} 5 agree;${heat[0]} 6 agree;${heat[1]} 5 agree;${heat[1]} 6 differs;"
 [ $rc -eq 4 ] && [ "$verdicts" = "$want" ] ||
   { echo "FAIL: the shared heat run: exit $rc (want 4), lines '$verdicts' (want '$want'):"; cat "$t/out5"; fail=1; }
-[ $fail -eq 0 ] && echo "verify_store_full: logs sealed lines, resumes, a resealed edit differs (own and cheaper path; heat tables in one shared run, each file its own verdict)"
+[ $fail -eq 0 ] && echo "verify_store_full: logs sealed lines, resumes, goes in parts, a resealed edit differs (own and cheaper path; heat tables in one shared run, each file its own verdict)"
 exit $fail

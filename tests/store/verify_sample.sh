@@ -45,16 +45,12 @@ listing=$("$build/gpm" study --store-rows) || { echo "verify_sample.sh: gpm stud
 # of a heat unit the θ its rows hold ("-": all), then the cheaper path's options ("-": none)
 # and its predicted s.
 # The key columns besides the level that make one unit of a study whose units can be selected
-# one by one (--only: Table 4.4's h rule and weight, Tables 4.1-4.3's reading and volumes,
-# imoto's m), empty for a whole level (a file whose arguments select with --only already, and
-# the studies that name their particle sets themselves).
+# one by one (unit_key in census_lib.sh), empty for a whole level (a file whose arguments select
+# with --only already, the studies that name their particle sets themselves, and the heat
+# files, drawn by weight below).
 sub_key() {
   [[ " $2 " == *" --only "* ]] && return
-  case $1 in
-    thesis_table4_4) echo h_rule,weight ;;
-    thesis_table4_1|thesis_table4_2|thesis_table4_3) echo h_reading,volumes ;;
-    imoto_fig5_table1) echo m ;;
-  esac
+  [ "$1" = thesis_heat ] || unit_key "$1"
 }
 # The seconds verify_store_full.sh measured per (file, level) by a path other than the own one
 # (its latest agreeing line), "file<TAB>level<TAB>seconds<TAB>path".

@@ -28,8 +28,16 @@
 # an interrupted level leaves no line.  A difference is a line with verdict "differs" and
 # exit 4 at the end (the log keeps it: a difference is a finding, not an accident).
 #
+# Parts: a level estimated above --split-above seconds goes as one job per value of its unit key
+# (unit_key in census_lib.sh: each part its own Laplacian or pass) that the file holds at the
+# level, with --only in place of the census's selection; its line's path ends "--only PART".
+# A part lands before a session's machine goes where a whole level of hours would not.  A level
+# is done when a whole-level line or a line for each of its parts carries the current code.  A
+# file whose census selects with --only always goes in parts, so its rows beyond it are verified.
+#
 # usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS]
-#                             [--cheap [--cheap-above SECONDS]] [--jobs N] [--dry-run] [FILE...]
+#                             [--cheap [--cheap-above SECONDS]] [--split-above SECONDS] [--jobs N]
+#                             [--dry-run] [FILE...]
 #   --log       default STORE/verified.log
 #   --budget    stop before a (file, level) whose stored time would take the run past this
 #               many seconds (default: no limit); --max-unit: skip levels whose stored time
@@ -41,22 +49,23 @@
 #               solve scaled by 15 iterations over its own count, the preconditioned solver's
 #               11-13 at every level measured, results/bench/pcg_*; a heat row's stored time,
 #               an upper bound: its path is chosen only where it needs fewer products)
+#   --split-above  levels estimated above this many seconds go in parts (default 3600)
 #   --jobs      N lanes at once, each taking the cheapest job left when its last is done (each
 #               program then on its share of the cores, OMP_NUM_THREADS, unless set; a lane's
 #               --budget is its own wall time); default 1
-#   --dry-run   the price only: each (file, level) to do with its stored seconds, and the sum
+#   --dry-run   the price only: each (file, level, part) to do with its stored seconds, and the sum
 #   FILE...     only these store files (stems)
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
 # shellcheck source=tables/census_lib.sh
 . "$(cd "$(dirname "$0")/../.." && pwd)/tables/census_lib.sh"
-usage="usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS] [--cheap [--cheap-above SECONDS]] [--jobs N] [--dry-run] [FILE...]"
+usage="usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS] [--cheap [--cheap-above SECONDS]] [--split-above SECONDS] [--jobs N] [--dry-run] [FILE...]"
 [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
 build=$1 store=$2
 shift 2
 [ -x "$build/gpm" ] || { echo "verify_store_full.sh: $build/gpm not found; $usage" >&2; exit 2; }
 [ -d "$store" ] || { echo "verify_store_full.sh: $store is not a directory; $usage" >&2; exit 2; }
-log=$store/verified.log budget="" max_unit="" dry=0 cheap=0 above=60 lanes=1 only=()
+log=$store/verified.log budget="" max_unit="" dry=0 cheap=0 above=60 lanes=1 split=3600 only=()
 while [ $# -gt 0 ]; do
   case $1 in
     --log) log=${2:?--log needs a file}; shift 2 ;;
@@ -65,12 +74,13 @@ while [ $# -gt 0 ]; do
     --dry-run) dry=1; shift ;;
     --cheap) cheap=1; shift ;;
     --cheap-above) above=${2:?--cheap-above needs seconds}; shift 2 ;;
+    --split-above) split=${2:?--split-above needs seconds}; shift 2 ;;
     --jobs) lanes=${2:?--jobs needs a number}; shift 2 ;;
     -*) echo "verify_store_full.sh: unknown option '$1'; $usage" >&2; exit 2 ;;
     *) only+=("$1"); shift ;;
   esac
 done
-for n in "$budget" "$max_unit" "$above"; do
+for n in "$budget" "$max_unit" "$above" "$split"; do
   [ -z "$n" ] || [[ $n =~ ^[0-9]+$ ]] || { echo "verify_store_full.sh: '$n' is not a whole number of seconds" >&2; exit 2; }
 done
 [[ $lanes =~ ^[1-9][0-9]*$ ]] || { echo "verify_store_full.sh: --jobs '$lanes' is not a whole number of 1 or more" >&2; exit 2; }
@@ -105,32 +115,56 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
   path=own
   [ $cheap = 1 ] && path=$(cheaper_path "$prog" "$file" "$f")
   [ "$path" = - ] && path=own
-  awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v code="$code" -v path="$path" -v above="$above" '
+  # Parts: a level is split by its unit key (census_lib.sh) into one job per value the file
+  # holds when it would take more than --split-above seconds (a part lands before a session
+  # ends where the whole level would not), and always where the census selects with --only
+  # (Table 4.4's cellvol_tau files: the rows the file holds beyond it are verified too).
+  forced=0; [[ " $extra " == *" --only "* ]] && forced=1
+  awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v code="$code" -v path="$path" -v above="$above" \
+      -v ukey="$(unit_key "$prog")" -v split_above="$split" -v forced="$forced" '
+    BEGIN { nk = split(ukey, uk, ",") }
     /^#/ { next }
     !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1
+         for (i = 1; i <= nk; i++) if (!(uk[i] in c)) nk = 0  # a file without the key goes whole
          t = ("seconds" in c) ? c["seconds"] : c["time_s"]; next }
-    { k = $c["level"]; key = k SUBSEP $t
-      if (!(key in seen)) { seen[key] = 1; s[k] += $t; e[k] += (path == "own" ? $t : cheaper_s(c, t))
-                            w[k] += made_on_threads(c) * $t } }
+    { k = $c["level"]; key = k SUBSEP $t; x = (path == "own" ? $t : cheaper_s(c, t)); th = made_on_threads(c) * $t
+      if (!(key in seen)) { seen[key] = 1; s[k] += $t; e[k] += x; w[k] += th }
+      if (nk) { p = $c[uk[1]]; for (i = 2; i <= nk; i++) p = p "," $c[uk[i]]
+                pk = k SUBSEP p
+                if (!(pk in ps)) { sep = (k in parts) ? SUBSEP : ""; parts[k] = parts[k] sep p }
+                if (!((pk, $t) in pseen)) { pseen[pk, $t] = 1; ps[pk] += $t; pe[pk] += x; pw[pk] += th } } }
+    function row(k, part, st, ex, wt,   y) {
+      y = s[k] > above ? ex : st
+      printf "%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%.1f\t%.1f\t%s\n", file, k, program, args, code, st,
+             (s[k] > above ? path : "own"), y, (st > 0 ? y * wt / st : y), part }
     '"$cheaper_seconds_awk"'
     '"$made_on_threads_awk"'
-    END { for (k in s) { x = s[k] > above ? e[k] : s[k]
-            printf "%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%.1f\t%.1f\n", file, k, program, args, code, s[k],
-                   (s[k] > above ? path : "own"), x, (s[k] > 0 ? x * w[k] / s[k] : x) } }' "$f"
+    END { for (k in s) {
+            if (nk && (forced || (s[k] > above ? e[k] : s[k]) > split_above + 0)) {
+              n = split(parts[k], pl, SUBSEP)
+              for (j = 1; j <= n; j++) { pk = k SUBSEP pl[j]; row(k, pl[j], ps[pk], pe[pk], pw[pk]) }
+            } else row(k, "-", s[k], e[k], w[k]) } }' "$f"
 done < <("$build/gpm" study --store-rows) | sort -t$'\t' -k8,8g > "$todo"
 
 # Skip what the log already vouches for under the current code.
 pending=$(mktemp); trap 'rm -f "$todo" "$pending"' EXIT
-awk -F'\t' 'NR == FNR { if (FNR > 1 && $9 == "agree") done[$2 SUBSEP $3 SUBSEP $5] = 1; next }
-  !(($1 SUBSEP $2 SUBSEP $5) in done)' "$log" "$todo" 2>/dev/null > "$pending" || cp "$todo" "$pending"
+# A whole level's line vouches for its parts; a part's line (its path ending "--only PART")
+# for that part alone.
+awk -F'\t' 'NR == FNR { if (FNR > 1 && $9 == "agree") { part = "-"
+                            if (match($13, /--only [^ ]+/)) part = substr($13, RSTART + 7, RLENGTH - 7)
+                            done[$2 SUBSEP $3 SUBSEP $5 SUBSEP part] = 1 }
+                          next }
+  !(($1 SUBSEP $2 SUBSEP $5 SUBSEP "-") in done) && !(($1 SUBSEP $2 SUBSEP $5 SUBSEP $10) in done)' \
+  "$log" "$todo" 2>/dev/null > "$pending" || cp "$todo" "$pending"
 total=$(awk -F'\t' '{ s += $6 } END { printf "%.0f", s }' "$pending")
 by_path=$(awk -F'\t' '{ s += $8 } END { printf "%.0f", s }' "$pending")
 one_thread=$(awk -F'\t' '{ s += $9 } END { printf "%.1f", s / 3600 }' "$pending")
-n=$(wc -l < "$pending")
-echo "verify_store_full: $n (file, level) to verify, $total s stored time ($(awk -v s="$total" 'BEGIN { printf "%.1f", s / 3600 }') h as recorded)$([ $cheap = 1 ] && echo ", $by_path s ($(awk -v s="$by_path" 'BEGIN { printf "%.1f", s / 3600 }') h) estimated by the cheap path"), $one_thread h on one thread; $(($(wc -l < "$todo") - n)) already in $log"
+levels_in() { cut -f1,2 "$1" | sort -u | wc -l; }  # (file, level) pairs, parts counted once
+n=$(levels_in "$pending") parts_n=$(awk -F'\t' '$10 != "-"' "$pending" | wc -l)
+echo "verify_store_full: $n (file, level) to verify$([ "$parts_n" = 0 ] || echo " in $(wc -l < "$pending") jobs ($parts_n of them parts: of levels over $split s, or whose census selects with --only)"), $total s stored time ($(awk -v s="$total" 'BEGIN { printf "%.1f", s / 3600 }') h as recorded)$([ $cheap = 1 ] && echo ", $by_path s ($(awk -v s="$by_path" 'BEGIN { printf "%.1f", s / 3600 }') h) estimated by the cheap path"), $one_thread h on one thread; $(($(levels_in "$todo") - n)) already in $log"
 if [ $dry = 1 ]; then
-  printf 'file\tlevel\tprogram\tstored_s\tpath\tcheap_s\tone_thread_s\n'
-  awk -F'\t' -v OFS='\t' '{ print $1, $2, $3, $6, $7, $8, $9 }' "$pending"
+  printf 'file\tlevel\tpart\tprogram\tstored_s\tpath\tcheap_s\tone_thread_s\n'
+  awk -F'\t' -v OFS='\t' '{ print $1, $2, $10, $3, $6, $7, $8, $9 }' "$pending"
   exit 0
 fi
 
@@ -144,20 +178,20 @@ fi
 # ordered by their estimated seconds.
 jobs=$(mktemp); trap 'rm -f "$todo" "$pending" "$jobs"' EXIT
 awk -F'\t' -v OFS='\t' '
-  { NF = 8  # the one-thread seconds price only
+  { part = $10; NF = 8  # the one-thread seconds price only; the part goes last
     rest = $4; sub(/^--table [0-9.]+ ?/, "", rest); table = $4; sub(/^--table /, "", table); sub(/ .*/, "", table)
     shared = $3 == "thesis_heat" && $7 ~ /--propagator auto/ && $1 ~ /^thesis_table4_[567]/ && $4 ~ /^--table /
-    key = shared ? $2 SUBSEP $5 SUBSEP $7 SUBSEP rest SUBSEP substr($1, 16) : NR
+    key = shared ? $2 SUBSEP $5 SUBSEP $7 SUBSEP rest SUBSEP substr($1, 16) SUBSEP part : NR
     if (!(key in n)) order[++k] = key
-    i = ++n[key]; line[key, i] = $0; tab[key, i] = table; tail[key] = rest; suffix[key] = substr($1, 16) }
+    i = ++n[key]; line[key, i] = $0; tab[key, i] = table; tail[key] = rest; suffix[key] = substr($1, 16); pt[key] = part }
   END { for (j = 1; j <= k; j++) { key = order[j]
-          if (n[key] == 1) { print line[key, 1], "-"; continue }
+          if (n[key] == 1) { print line[key, 1], "-", pt[key]; continue }
           files = stored = tables = ""; sum = 0
           for (i = 1; i <= n[key]; i++) { split(line[key, i], f, "\t")
             files = files (i > 1 ? "," : "") f[1]; stored = stored (i > 1 ? "," : "") f[6]
             tables = tables (i > 1 ? "," : "") tab[key, i]; sum += f[8] }
           print files, f[2], f[3], "--table " tables (tail[key] == "" ? "" : " " tail[key]), f[5], stored, f[7], sum,
-                "thesis_table{table}" suffix[key] } }' <(sort -t$'\t' -k1,1 "$pending") | sort -t$'\t' -k8,8g > "$jobs"
+                "thesis_table{table}" suffix[key], pt[key] } }' <(sort -t$'\t' -k1,1 "$pending") | sort -t$'\t' -k8,8g > "$jobs"
 
 # The jobs go to --jobs lanes through one queue, cheapest first: a lane takes the next job
 # when its last is done (under a lock, as are the log's appends), so a long level holds one
@@ -171,13 +205,15 @@ next_job() {  # the queue's first job, removed from it; nothing once empty or st
 lane() {  # lane NUMBER: jobs from the queue until it is empty
   spent=0 differs=0 done_n=0
   while job=$(next_job) && [ -n "$job" ]; do
-    IFS=$'\t' read -r files level program args code stored path expect pattern <<<"$job"
+    IFS=$'\t' read -r files level program args code stored path expect pattern part <<<"$job"
     if [ -n "$max_unit" ] && awk -v s="$expect" -v m="$max_unit" 'BEGIN { exit !(s > m) }'; then continue; fi
     if [ -n "$budget" ] && awk -v s="$expect" -v p="$spent" -v b="$budget" 'BEGIN { exit !(p + s > b) }'; then
       echo "verify_store_full: budget of $budget s reached ($spent s spent$([ "$lanes" = 1 ] || echo " in lane $1")); rerun to continue"; break
     fi
     [ "$args" = "-" ] && args=""
     [ "$path" = own ] || args="$args $path"
+    # A part selects its units itself, in place of the census's selection.
+    [ "$part" = - ] || args="$(sed 's/ *--only [^ ]*//' <<<"$args") --only $part"
     IFS=, read -ra fs <<<"$files"
     IFS=, read -ra st <<<"$stored"
     out=$store/${fs[0]}.tsv
@@ -191,6 +227,7 @@ lane() {  # lane NUMBER: jobs from the queue until it is empty
     # A shared run logs one line per file, each with the run's seconds and the tables it shared.
     logged_path=$path
     [ ${#fs[@]} -eq 1 ] || logged_path="$path ${args%% --*}"
+    [ "$part" = - ] || logged_path="$logged_path --only $part"
     for i in "${!fs[@]}"; do
       file=${fs[$i]}
       # The file's own report: its "[store] verify" line and the "differs" lines after it.
