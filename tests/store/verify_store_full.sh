@@ -26,7 +26,8 @@
 # hand edits.  A (file, level) whose line carries the program's current code is skipped, so a
 # rerun continues where the log stops and a code change (a new fingerprint) starts it anew;
 # an interrupted level leaves no line.  A difference is a line with verdict "differs" and
-# exit 4 at the end (the log keeps it: a difference is a finding, not an accident).
+# exit 4 at the end (the log keeps it: a difference is a finding, not an accident); a run that
+# compared fewer rows than the file holds at the level (or part) is "incomplete", exit 4 too.
 #
 # Parts: a level estimated above --split-above seconds goes as one job per value of its unit key
 # (unit_key in census_lib.sh: each part its own Laplacian or pass) that the file holds at the
@@ -202,10 +203,18 @@ cp "$jobs" "$queue/jobs"
 next_job() {  # the queue's first job, removed from it; nothing once empty or stopped
   { flock 9; [ -e "$queue/stop" ] || { head -1 "$queue/jobs"; sed -i 1d "$queue/jobs"; }; } 9> "$queue/lock"
 }
+rows_held() {  # FILE LEVEL PART UNIT_KEY: the rows FILE holds at LEVEL (of PART, "-": all)
+  awk -F'\t' -v L="$2" -v part="$3" -v ukey="$4" '/^#/ { next }
+    !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; nk = split(ukey, uk, ","); next }
+    $c["level"] == L { p = nk ? $c[uk[1]] : ""; for (i = 2; i <= nk; i++) p = p "," $c[uk[i]]
+                       if (part == "-" || p == part) n++ }
+    END { print n + 0 }' "$1"
+}
 lane() {  # lane NUMBER: jobs from the queue until it is empty
   spent=0 differs=0 done_n=0
   while job=$(next_job) && [ -n "$job" ]; do
     IFS=$'\t' read -r files level program args code stored path expect pattern part <<<"$job"
+    ukey=$(unit_key "${program%% *}")
     if [ -n "$max_unit" ] && awk -v s="$expect" -v m="$max_unit" 'BEGIN { exit !(s > m) }'; then continue; fi
     if [ -n "$budget" ] && awk -v s="$expect" -v p="$spent" -v b="$budget" 'BEGIN { exit !(p + s > b) }'; then
       echo "verify_store_full: budget of $budget s reached ($spent s spent$([ "$lanes" = 1 ] || echo " in lane $1")); rerun to continue"; break
@@ -244,7 +253,11 @@ lane() {  # lane NUMBER: jobs from the queue until it is empty
       others=$(grep '^\[store\]   differs: ' <<<"$seg" | grep -vc ': not in the file$')
       missing=$(sed -n 's/.*recomputed (\([0-9]*\) not in the file).*/\1/p' <<<"$line")
       [ -n "$units" ] && [ -n "$missing" ] && units=$((units - missing))
-      if [[ $line == *": agree" ]] && [ "${rows:-0}" -gt 0 ]; then verdict=agree
+      # Every row the file holds at the level (or part) must have been compared: a selection
+      # that leaves some out (a census's --only) is "incomplete", not agree.
+      held=$(rows_held "$store/$file.tsv" "$level" "$part" "$ukey")
+      if [ "${rows:-0}" -lt "$held" ]; then verdict=incomplete; differs=$((differs + 1))
+      elif [[ $line == *": agree" ]] && [ "${rows:-0}" -gt 0 ]; then verdict=agree
       elif [ "$others" -eq 0 ] && [ "${rows:-0}" -gt 0 ] &&
            awk -v d="${diff:-1}" -v t="${tol:-1e-9}" 'BEGIN { exit !(d + 0 <= t + 0) }'; then verdict=agree
       else verdict=differs; differs=$((differs + 1)); fi
