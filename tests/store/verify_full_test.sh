@@ -51,6 +51,17 @@ awk -F'\t' '/^#/ { print; next } !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1
 bash "$src/tests/store/verify_store_full.sh" "$build" "$t/store" --log "$t/tau.log" "$tau" > "$t/out11" 2>&1
 n=$(awk -F'\t' '$9 == "agree" && $13 ~ /^own --only h10,/' "$t/tau.log" | wc -l)
 [ "$n" -eq 3 ] || { echo "FAIL: the h10 units beyond the census's --only h15: want 3 agree lines, got $n:"; cat "$t/out11"; fail=1; }
+# A recomputation that leaves rows out (here a program that adds --only h15 itself) is
+# "incomplete", exit 4, never agree (the log and the suite say so).
+mkdir -p "$t/short"
+ln -s "$build/gpm" "$t/short/gpm"
+printf '#!/bin/sh\nexec "%s/thesis_table4_4" "$@" --only h15\n' "$build" > "$t/short/thesis_table4_4"
+chmod +x "$t/short/thesis_table4_4"
+bash "$src/tests/store/verify_store_full.sh" "$t/short" "$t/store" --log "$t/short.log" thesis_table4_4 > "$t/out12" 2>&1
+rc=$?
+n=$(awk -F'\t' '$9 == "incomplete"' "$t/short.log" | wc -l)
+[ $rc -eq 4 ] && [ "$n" -eq 2 ] && ! grep -q '	agree	' "$t/short.log" ||
+  { echo "FAIL: rows left out: want exit 4 and 2 incomplete lines, got exit $rc:"; cat "$t/out12" "$t/short.log"; fail=1; }
 # Two lanes from one queue: both levels logged once each, sealed, the cells whole.
 rm -f "$t/verified.log"
 run --jobs 2 > "$t/out6" 2>&1 || { echo "FAIL: the run in two lanes failed:"; cat "$t/out6"; fail=1; }
