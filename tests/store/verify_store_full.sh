@@ -29,9 +29,10 @@
 # exit 4 at the end (the log keeps it: a difference is a finding, not an accident); a run that
 # compared fewer rows than the file holds at the level (or part) is "incomplete", exit 4 too.
 #
-# Parts: a level estimated above --split-above seconds goes as one job per value of its unit key
-# (unit_key in census_lib.sh: each part its own Laplacian or pass) that the file holds at the
-# level, with --only in place of the census's selection; its line's path ends "--only PART".
+# Parts: a level estimated above --split-above seconds on one thread goes as one job per value
+# of its unit key (unit_key in census_lib.sh: each part its own Laplacian or pass) that the
+# file holds at the level, with --only in place of the census's selection; its line's path
+# ends "--only PART".
 # A part lands before a session's machine goes where a whole level of hours would not.  A level
 # is done when a whole-level line or a line for each of its parts carries the current code.  A
 # file whose census selects with --only always goes in parts, so its rows beyond it are verified.
@@ -50,7 +51,7 @@
 #               solve scaled by 15 iterations over its own count, the preconditioned solver's
 #               11-13 at every level measured, results/bench/pcg_*; a heat row's stored time,
 #               an upper bound: its path is chosen only where it needs fewer products)
-#   --split-above  levels estimated above this many seconds go in parts (default 3600)
+#   --split-above  levels estimated above this many seconds on one thread go in parts (default 3600)
 #   --jobs      N lanes at once, each taking the cheapest job left when its last is done (each
 #               program then on its share of the cores, OMP_NUM_THREADS, unless set; a lane's
 #               --budget is its own wall time); default 1
@@ -117,7 +118,8 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
   [ $cheap = 1 ] && path=$(cheaper_path "$prog" "$file" "$f")
   [ "$path" = - ] && path=own
   # Parts: a level is split by its unit key (census_lib.sh) into one job per value the file
-  # holds when it would take more than --split-above seconds (a part lands before a session
+  # holds when it would take more than --split-above seconds on one thread (a lane's share;
+  # a part lands before a session
   # ends where the whole level would not), and always where the census selects with --only
   # (Table 4.4's cellvol_tau files: the rows the file holds beyond it are verified too).
   forced=0; [[ " $extra " == *" --only "* ]] && forced=1
@@ -140,8 +142,8 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
              (s[k] > above ? path : "own"), y, (st > 0 ? y * wt / st : y), part }
     '"$cheaper_seconds_awk"'
     '"$made_on_threads_awk"'
-    END { for (k in s) {
-            if (nk && (forced || (s[k] > above ? e[k] : s[k]) > split_above + 0)) {
+    END { for (k in s) { y = s[k] > above ? e[k] : s[k]  # by the path; then on one thread
+            if (nk && (forced || (s[k] > 0 ? y * w[k] / s[k] : y) > split_above + 0)) {
               n = split(parts[k], pl, SUBSEP)
               for (j = 1; j <= n; j++) { pk = k SUBSEP pl[j]; row(k, pl[j], ps[pk], pe[pk], pw[pk]) }
             } else row(k, "-", s[k], e[k], w[k]) } }' "$f"
