@@ -23,7 +23,8 @@ paper/report.html paper/supplement.html docs/companion.html: $(VERIFY_STAMP)
 # results/paper/verified.log, so a rerun continues where it stopped (tests/store/
 # verify_store_full.sh; VERIFY_FLAGS=--dry-run prices it, --budget SECONDS bounds a run,
 # --jobs 2 runs two levels at a time, one thread each on two cores; a level above an hour goes
-# in parts, --split-above SECONDS).
+# in parts, --split-above SECONDS; with lanes, jobs of 2.5 h or more on one thread run last on
+# all the cores, --wide-above SECONDS).
 # make test recomputes the coarse units and a sample of the finer ones.
 .PHONY: verify-store-full
 verify-store-full: build

@@ -2,7 +2,7 @@
 # verify_store_full.sh on a copy of one store file (Table 4.4, the cheap levels): the first run
 # logs a sealed "agree" line per level, a second run resumes (verifies nothing again), levels
 # in parts log a line per unit (and a file's units beyond its census's --only are verified), two
-# lanes (--jobs 2) log each level once, and a stored number changed by hand (seal recomputed,
+# lanes (--jobs 2) log each level once (wide jobs after them on all the cores), and a stored number changed by hand (seal recomputed,
 # so only the recomputation can tell) makes its level "differs" with exit 4, by the rows' own
 # path and by the cheaper one (--cheap: preconditioned CG for plain CG's rows, at 1e-6: an
 # edit of 1e-5 is still caught).
@@ -68,6 +68,14 @@ run --jobs 2 > "$t/out6" 2>&1 || { echo "FAIL: the run in two lanes failed:"; ca
 levels=$(awk -F'\t' 'NR > 1 && $9 == "agree" && length($14) == 16 && NF == 14 { print $3 }' "$t/verified.log" | sort | tr '\n' ' ')
 [ "$levels" = "5 6 " ] && grep -q '^verify_store_full: 2 verified this run, 0 differ, .* in 2 lanes$' "$t/out6" ||
   { echo "FAIL: two lanes: want one sealed agree line for each of levels 5 and 6, got '$levels':"; cat "$t/out6" "$t/verified.log"; fail=1; }
+# Wide jobs (--wide-above 0: every job): after the lanes, one at a time on all the cores.
+rm -f "$t/verified.log"
+run --jobs 2 --wide-above 0 > "$t/out13" 2>&1 || { echo "FAIL: the wide jobs failed:"; cat "$t/out13"; fail=1; }
+levels=$(awk -F'\t' 'NR > 1 && $9 == "agree" && length($14) == 16 { print $3 }' "$t/verified.log" | sort | tr '\n' ' ')
+thin=$(awk -F'\t' 'NR > 1 && $12 ~ /, 1 thread$/' "$t/verified.log" | wc -l)
+[ "$levels" = "5 6 " ] && grep -q '^verify_store_full: the lanes are done; 2 wide job' "$t/out13" &&
+  { [ "$(nproc)" -eq 1 ] || [ "$thin" -eq 0 ]; } ||
+  { echo "FAIL: wide jobs: want levels 5 and 6 logged once, on all the cores, got '$levels':"; cat "$t/out13" "$t/verified.log"; fail=1; }
 run --jobs 0 > "$t/out7" 2>&1
 [ $? -eq 2 ] && grep -q "^verify_store_full.sh: --jobs '0'" "$t/out7" || { echo "FAIL: --jobs 0 was not refused:"; cat "$t/out7"; fail=1; }
 # The cheaper path: both levels agree at its tolerance, logged with the path's options.

@@ -38,8 +38,8 @@
 # file whose census selects with --only always goes in parts, so its rows beyond it are verified.
 #
 # usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS]
-#                             [--cheap [--cheap-above SECONDS]] [--split-above SECONDS] [--jobs N]
-#                             [--dry-run] [FILE...]
+#                             [--cheap [--cheap-above SECONDS]] [--split-above SECONDS]
+#                             [--wide-above SECONDS] [--jobs N] [--dry-run] [FILE...]
 #   --log       default STORE/verified.log
 #   --budget    stop before a (file, level) whose stored time would take the run past this
 #               many seconds (default: no limit); --max-unit: skip levels whose stored time
@@ -52,6 +52,8 @@
 #               11-13 at every level measured, results/bench/pcg_*; a heat row's stored time,
 #               an upper bound: its path is chosen only where it needs fewer products)
 #   --split-above  levels estimated above this many seconds on one thread go in parts (default 3600)
+#   --wide-above  with --jobs above 1: jobs of this many seconds or more on one thread run after the
+#               lanes, one at a time on all the cores (default 9000)
 #   --jobs      N lanes at once, each taking the cheapest job left when its last is done (each
 #               program then on its share of the cores, OMP_NUM_THREADS, unless set; a lane's
 #               --budget is its own wall time); default 1
@@ -61,13 +63,13 @@ export LC_ALL=C  # numbers are read and printed with '.' whatever the user's loc
 set -u
 # shellcheck source=tables/census_lib.sh
 . "$(cd "$(dirname "$0")/../.." && pwd)/tables/census_lib.sh"
-usage="usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS] [--cheap [--cheap-above SECONDS]] [--split-above SECONDS] [--jobs N] [--dry-run] [FILE...]"
+usage="usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS] [--cheap [--cheap-above SECONDS]] [--split-above SECONDS] [--wide-above SECONDS] [--jobs N] [--dry-run] [FILE...]"
 [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
 build=$1 store=$2
 shift 2
 [ -x "$build/gpm" ] || { echo "verify_store_full.sh: $build/gpm not found; $usage" >&2; exit 2; }
 [ -d "$store" ] || { echo "verify_store_full.sh: $store is not a directory; $usage" >&2; exit 2; }
-log=$store/verified.log budget="" max_unit="" dry=0 cheap=0 above=60 lanes=1 split=3600 only=()
+log=$store/verified.log budget="" max_unit="" dry=0 cheap=0 above=60 lanes=1 split=3600 wide=9000 only=()
 while [ $# -gt 0 ]; do
   case $1 in
     --log) log=${2:?--log needs a file}; shift 2 ;;
@@ -77,19 +79,22 @@ while [ $# -gt 0 ]; do
     --cheap) cheap=1; shift ;;
     --cheap-above) above=${2:?--cheap-above needs seconds}; shift 2 ;;
     --split-above) split=${2:?--split-above needs seconds}; shift 2 ;;
+    --wide-above) wide=${2:?--wide-above needs seconds}; shift 2 ;;
     --jobs) lanes=${2:?--jobs needs a number}; shift 2 ;;
     -*) echo "verify_store_full.sh: unknown option '$1'; $usage" >&2; exit 2 ;;
     *) only+=("$1"); shift ;;
   esac
 done
-for n in "$budget" "$max_unit" "$above" "$split"; do
+for n in "$budget" "$max_unit" "$above" "$split" "$wide"; do
   [ -z "$n" ] || [[ $n =~ ^[0-9]+$ ]] || { echo "verify_store_full.sh: '$n' is not a whole number of seconds" >&2; exit 2; }
 done
 [[ $lanes =~ ^[1-9][0-9]*$ ]] || { echo "verify_store_full.sh: --jobs '$lanes' is not a whole number of 1 or more" >&2; exit 2; }
 # Lanes share the cores: each program gets its share of threads unless the caller set them
 # (before machine_line, so that the log's machine cell says the threads a run had).
+threads_set=""
 if [ "$lanes" -gt 1 ] && [ -z "${OMP_NUM_THREADS:-}" ]; then
-  OMP_NUM_THREADS=$(( $(nproc) / lanes )); [ "$OMP_NUM_THREADS" -ge 1 ] || OMP_NUM_THREADS=1
+  threads_set=$(nproc)  # the wide jobs' threads, after the lanes
+  OMP_NUM_THREADS=$(( threads_set / lanes )); [ "$OMP_NUM_THREADS" -ge 1 ] || OMP_NUM_THREADS=1
   export OMP_NUM_THREADS
 fi
 header="date	file	level	program	code	units	rows	max_rel_diff	verdict	seconds	stored_s	machine	path	seal"
@@ -181,27 +186,34 @@ fi
 # ordered by their estimated seconds.
 jobs=$(mktemp); trap 'rm -f "$todo" "$pending" "$jobs"' EXIT
 awk -F'\t' -v OFS='\t' '
-  { part = $10; NF = 8  # the one-thread seconds price only; the part goes last
+  { part = $10; one = $9; NF = 8  # the part and the one-thread price go last
     rest = $4; sub(/^--table [0-9.]+ ?/, "", rest); table = $4; sub(/^--table /, "", table); sub(/ .*/, "", table)
     shared = $3 == "thesis_heat" && $7 ~ /--propagator auto/ && $1 ~ /^thesis_table4_[567]/ && $4 ~ /^--table /
     key = shared ? $2 SUBSEP $5 SUBSEP $7 SUBSEP rest SUBSEP substr($1, 16) SUBSEP part : NR
     if (!(key in n)) order[++k] = key
-    i = ++n[key]; line[key, i] = $0; tab[key, i] = table; tail[key] = rest; suffix[key] = substr($1, 16); pt[key] = part }
+    i = ++n[key]; line[key, i] = $0; tab[key, i] = table; tail[key] = rest; suffix[key] = substr($1, 16); pt[key] = part
+    ot[key] += one }
   END { for (j = 1; j <= k; j++) { key = order[j]
-          if (n[key] == 1) { print line[key, 1], "-", pt[key]; continue }
+          if (n[key] == 1) { print line[key, 1], "-", pt[key], ot[key]; continue }
           files = stored = tables = ""; sum = 0
           for (i = 1; i <= n[key]; i++) { split(line[key, i], f, "\t")
             files = files (i > 1 ? "," : "") f[1]; stored = stored (i > 1 ? "," : "") f[6]
             tables = tables (i > 1 ? "," : "") tab[key, i]; sum += f[8] }
           print files, f[2], f[3], "--table " tables (tail[key] == "" ? "" : " " tail[key]), f[5], stored, f[7], sum,
-                "thesis_table{table}" suffix[key], pt[key] } }' <(sort -t$'\t' -k1,1 "$pending") | sort -t$'\t' -k8,8g > "$jobs"
+                "thesis_table{table}" suffix[key], pt[key], ot[key] } }' <(sort -t$'\t' -k1,1 "$pending") | sort -t$'\t' -k8,8g > "$jobs"
 
 # The jobs go to --jobs lanes through one queue, cheapest first: a lane takes the next job
 # when its last is done (under a lock, as are the log's appends), so a long level holds one
 # lane while the others go on.  Each lane keeps its own budget (a lane's seconds are wall
 # seconds) and reports its counts in a file; a lane that fails stops the others' next jobs.
 queue=$(mktemp -d); trap 'rm -rf "$todo" "$pending" "$jobs" "$queue"' EXIT
-cp "$jobs" "$queue/jobs"
+# Wide jobs: with lanes, a job of --wide-above seconds or more on one thread waits until the lanes
+# are done and then runs on all the cores, one at a time: on one thread it would outlast a
+# session's machine (a lane's level in progress leaves no line).
+if [ "$lanes" -gt 1 ]; then
+  awk -F'\t' -v w="$wide" '$11 + 0 < w + 0' "$jobs" > "$queue/jobs"
+  awk -F'\t' -v w="$wide" '$11 + 0 >= w + 0' "$jobs" > "$queue/wide"
+else cp "$jobs" "$queue/jobs"; : > "$queue/wide"; fi
 next_job() {  # the queue's first job, removed from it; nothing once empty or stopped
   { flock 9; [ -e "$queue/stop" ] || { head -1 "$queue/jobs"; sed -i 1d "$queue/jobs"; }; } 9> "$queue/lock"
 }
@@ -215,7 +227,7 @@ rows_held() {  # FILE LEVEL PART UNIT_KEY: the rows FILE holds at LEVEL (of PART
 lane() {  # lane NUMBER: jobs from the queue until it is empty
   spent=0 differs=0 done_n=0
   while job=$(next_job) && [ -n "$job" ]; do
-    IFS=$'\t' read -r files level program args code stored path expect pattern part <<<"$job"
+    IFS=$'\t' read -r files level program args code stored path expect pattern part _one <<<"$job"
     ukey=$(unit_key "${program%% *}")
     if [ -n "$max_unit" ] && awk -v s="$expect" -v m="$max_unit" 'BEGIN { exit !(s > m) }'; then continue; fi
     if [ -n "$budget" ] && awk -v s="$expect" -v p="$spent" -v b="$budget" 'BEGIN { exit !(p + s > b) }'; then
@@ -275,6 +287,12 @@ lane() {  # lane NUMBER: jobs from the queue until it is empty
 for ((j = 1; j <= lanes; j++)); do lane "$j" & done
 failed=0
 for pid in $(jobs -p); do wait "$pid" || failed=1; done
+if [ $failed -eq 0 ] && [ ! -e "$queue/stop" ] && [ -s "$queue/wide" ]; then
+  echo "verify_store_full: the lanes are done; $(wc -l < "$queue/wide") wide job(s) of $wide s or more on one thread, one at a time on all the cores"
+  [ -z "$threads_set" ] || { export OMP_NUM_THREADS=$threads_set; machine=$(machine_line); }
+  mv "$queue/wide" "$queue/jobs"
+  lane wide || failed=1
+fi
 read -r done_n differs spent < <(cat "$queue"/lane* 2>/dev/null | awk '{ n += $1; d += $2; s += $3 } END { print n + 0, d + 0, s + 0 }')
 echo "verify_store_full: $done_n verified this run, $differs differ, $spent s$([ "$lanes" = 1 ] || echo " in $lanes lanes")"
 [ $failed -eq 0 ] || exit 1
