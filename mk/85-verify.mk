@@ -29,3 +29,18 @@ paper/report.html paper/supplement.html docs/companion.html: $(VERIFY_STAMP)
 .PHONY: verify-store-full
 verify-store-full: build
 	nice -n 19 bash tests/store/verify_store_full.sh $(BUILD) $(STORE) $(VERIFY_FLAGS)
+
+# The same run in the background, from frozen copies of the programs and scripts, leaving the
+# tree clean (tests/store/verify_background.sh): verify-store-bg starts it (VERIFY_FLAGS as
+# above, e.g. "--cheap --jobs 2"), verify-store-merge appends its new lines to verified.log (to
+# commit as they land), verify-store-status shows it, verify-store-drain lets it end after the
+# jobs it holds.
+.PHONY: verify-store-bg verify-store-merge verify-store-status verify-store-drain
+verify-store-bg: build
+	bash tests/store/verify_background.sh start $(BUILD) $(STORE) $(VERIFY_FLAGS)
+verify-store-merge:
+	bash tests/store/verify_background.sh merge $(STORE)
+verify-store-status:
+	bash tests/store/verify_background.sh status
+verify-store-drain:
+	bash tests/store/verify_background.sh drain

@@ -214,8 +214,11 @@ if [ "$lanes" -gt 1 ]; then
   awk -F'\t' -v w="$wide" '$11 + 0 < w + 0' "$jobs" > "$queue/jobs"
   awk -F'\t' -v w="$wide" '$11 + 0 >= w + 0' "$jobs" > "$queue/wide"
 else cp "$jobs" "$queue/jobs"; : > "$queue/wide"; fi
+# VERIFY_STOP_FILE: once that file exists, no lane takes a new job (the lanes finish what they
+# hold: verify_background.sh drain).
+stopped() { [ -e "$queue/stop" ] || { [ -n "${VERIFY_STOP_FILE:-}" ] && [ -e "$VERIFY_STOP_FILE" ]; }; }
 next_job() {  # the queue's first job, removed from it; nothing once empty or stopped
-  { flock 9; [ -e "$queue/stop" ] || { head -1 "$queue/jobs"; sed -i 1d "$queue/jobs"; }; } 9> "$queue/lock"
+  { flock 9; stopped || { head -1 "$queue/jobs"; sed -i 1d "$queue/jobs"; }; } 9> "$queue/lock"
 }
 rows_held() {  # FILE LEVEL PART UNIT_KEY: the rows FILE holds at LEVEL (of PART, "-": all)
   awk -F'\t' -v L="$2" -v part="$3" -v ukey="$4" '/^#/ { next }
@@ -287,7 +290,7 @@ lane() {  # lane NUMBER: jobs from the queue until it is empty
 for ((j = 1; j <= lanes; j++)); do lane "$j" & done
 failed=0
 for pid in $(jobs -p); do wait "$pid" || failed=1; done
-if [ $failed -eq 0 ] && [ ! -e "$queue/stop" ] && [ -s "$queue/wide" ]; then
+if [ $failed -eq 0 ] && ! stopped && [ -s "$queue/wide" ]; then
   echo "verify_store_full: the lanes are done; $(wc -l < "$queue/wide") wide job(s) of $wide s or more on one thread, one at a time on all the cores"
   [ -z "$threads_set" ] || { export OMP_NUM_THREADS=$threads_set; machine=$(machine_line); }
   mv "$queue/wide" "$queue/jobs"
