@@ -32,10 +32,10 @@
 # Parts: a level estimated above --split-above seconds on one thread goes as one job per value
 # of its unit key (unit_key in census_lib.sh: each part its own Laplacian or pass) that the
 # file holds at the level, with --only in place of the census's selection; its line's path
-# ends "--only PART".
-# A part lands before a session's machine goes where a whole level of hours would not.  A level
-# is done when a whole-level line or a line for each of its parts carries the current code.  A
-# file whose census selects with --only always goes in parts, so its rows beyond it are verified.
+# ends "--only PART".  A part lands before a session's machine goes where a whole level of
+# hours would not.  A level is done when a whole-level line or a line for each of its parts
+# carries the current code.  A file whose census selects with --only always goes in parts, so
+# its rows beyond that selection are verified too.
 #
 # usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS]
 #                             [--cheap [--cheap-above SECONDS]] [--split-above SECONDS]
@@ -123,10 +123,9 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
   [ $cheap = 1 ] && path=$(cheaper_path "$prog" "$file" "$f")
   [ "$path" = - ] && path=own
   # Parts: a level is split by its unit key (census_lib.sh) into one job per value the file
-  # holds when it would take more than --split-above seconds on one thread (a lane's share;
-  # a part lands before a session
-  # ends where the whole level would not), and always where the census selects with --only
-  # (Table 4.4's cellvol_tau files: the rows the file holds beyond it are verified too).
+  # holds when it would take more than --split-above seconds on one thread (a lane's share),
+  # and always where the census selects with --only (Table 4.4's cellvol_tau files: the rows
+  # the file holds beyond it are verified too).
   forced=0; [[ " $extra " == *" --only "* ]] && forced=1
   awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v code="$code" -v path="$path" -v above="$above" \
       -v ukey="$(unit_key "$prog")" -v split_above="$split" -v forced="$forced" '
