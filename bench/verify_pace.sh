@@ -6,13 +6,14 @@
 # one reads memory; bench_limit tells the two apart on a machine: results/bench/limit_*).  A
 # pace of 1 is the made rows' speed; a shared run's seconds cover its tables together (its
 # path names them), so its pace is an upper bound.
-# usage: verify_pace.sh STORE LOG PATTERN OUT.tsv   (PATTERN: an awk ERE on the machine cell)
+# usage: verify_pace.sh STORE LOG PATTERN OUT.tsv [SINCE]   (PATTERN: an awk ERE on the machine
+#        cell; SINCE: only lines dated at or after it, e.g. 2026-12-07T07:41, one session's)
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -euo pipefail
 # shellcheck source=tables/census_lib.sh
 . "$(cd "$(dirname "$0")/.." && pwd)/tables/census_lib.sh"
-[ $# -eq 4 ] || { echo "usage: bench/verify_pace.sh STORE LOG PATTERN OUT.tsv" >&2; exit 2; }
-store=$1 log=$2 pattern=$3 out=$4
+[ $# -eq 4 ] || [ $# -eq 5 ] || { echo "usage: bench/verify_pace.sh STORE LOG PATTERN OUT.tsv [SINCE]" >&2; exit 2; }
+store=$1 log=$2 pattern=$3 out=$4 since=${5:-}
 [ -d "$store" ] || { echo "verify_pace.sh: store '$store' is not a directory" >&2; exit 2; }
 [ -f "$log" ] || { echo "verify_pace.sh: log '$log' not found" >&2; exit 2; }
 tmp=$(mktemp "$out.XXXXXX"); trap 'rm -f "$tmp"' EXIT
@@ -21,11 +22,12 @@ tmp=$(mktemp "$out.XXXXXX"); trap 'rm -f "$tmp"' EXIT
   echo "# what = seconds of a verify-store-full line over its level's stored seconds on one thread, by storage"
   echo "# log = $log"
   echo "# machine_pattern = $pattern"
+  [ -z "$since" ] || echo "# since = $since"
   echo "# git_revision = $(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)"
   echo "# written_utc = $(date -u +%FT%TZ)"
   printf 'file\tlevel\tprogram\tstorage\tseconds\tstored_s\tone_thread_stored_s\tpace\tmachine\tpath\n'
-  awk -F'\t' -v pat="$pattern" 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
-    $c["verdict"] == "agree" && $c["machine"] ~ pat {
+  awk -F'\t' -v pat="$pattern" -v since="$since" 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+    $c["verdict"] == "agree" && $c["machine"] ~ pat && $c["date"] >= since {
       print $c["file"], $c["level"], $c["program"], $c["seconds"], $c["stored_s"], $c["machine"], $c["path"] }' OFS='\t' "$log" |
   while IFS=$'\t' read -r file level program secs stored machine path; do
     f=$store/$file.tsv
