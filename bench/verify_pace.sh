@@ -37,9 +37,9 @@ tmp=$(mktemp "$out.XXXXXX"); trap 'rm -f "$tmp"' EXIT
     awk -F'\t' -v L="$level" -v part="$part" -v ukey="$(unit_key "$program")" '/^#/ { next }
       !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; t = ("seconds" in c) ? c["seconds"] : c["time_s"]
            nk = split(ukey, uk, ","); next }
-      $c["level"] == L && (part == "-" || key() == part) { if (!($t in seen)) { seen[$t] = 1; w += made_on_threads(c) * $t }
+      $c["level"] == L && (part == "-" || unit_part(c, uk, nk) == part) { if (!($t in seen)) { seen[$t] = 1; w += made_on_threads(c) * $t }
                          if ("storage" in c) st[$c["storage"]] = 1 }
-      function key(   p, i) { p = $c[uk[1]]; for (i = 2; i <= nk; i++) p = p "," $c[uk[i]]; return p }
+      '"$unit_part_awk"'
       '"$made_on_threads_awk"'
       END { s = ""; for (x in st) s = s (s == "" ? "" : "+") x; printf "%s\t%.1f\n", (s == "" ? "-" : s), w }' "$f" |
     { IFS=$'\t' read -r storage one

@@ -57,6 +57,14 @@ unit_key() {
   esac
 }
 
+# An awk function for the part a store row belongs to: its unit_key columns' values joined by
+# ",", as --only takes them.  `col`: the column map by name; `uk`, `nk`: the key's columns
+# (split on ",") and their count, 0 for none ("").
+unit_part_awk='function unit_part(col, uk, nk,   p, i) {
+  if (!nk) return ""
+  p = $col[uk[1]]; for (i = 2; i <= nk; i++) p = p "," $col[uk[i]]
+  return p }'
+
 # cheaper_path PROGRAM STEM FILE: the options of a store file's independent, cheaper
 # recomputation (issue 58 item 3), "-" where it has none: Table 4.4's plain-CG files by the
 # tau-preconditioned solver; Table 4.7's by their own stepping with that solver (2-3 implicit

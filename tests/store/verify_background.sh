@@ -16,6 +16,8 @@ dir=${VERIFY_BG_DIR:-/tmp/verify-bg}
 usage="usage: verify_background.sh start BUILD STORE [options...] | merge STORE | status | drain"
 src=$(cd "$(dirname "$0")/../.." && pwd)
 running() { [ -f "$dir/pid" ] && kill -0 "$(cat "$dir/pid")" 2>/dev/null; }
+# The run's log lines past its copy of the store's log and those merged already.
+unmerged() { echo $(( $(wc -l < "$dir/log") - $(cat "$dir/base") - $(cat "$dir/merged") )); }
 case ${1:-} in
   start)
     [ $# -ge 3 ] || { echo "$usage" >&2; exit 2; }
@@ -24,8 +26,7 @@ case ${1:-} in
     [ -f "$store/verified.log" ] || { echo "verify_background.sh: $store/verified.log not found" >&2; exit 2; }
     running && { echo "verify_background.sh: a run is going in $dir (pid $(cat "$dir/pid")); drain it or use another VERIFY_BG_DIR" >&2; exit 2; }
     store=$(cd "$store" && pwd)
-    [ -f "$dir/log" ] && [ -f "$dir/base" ] && [ -f "$dir/merged" ] &&
-      [ "$(wc -l < "$dir/log")" -gt "$(( $(cat "$dir/base") + $(cat "$dir/merged") ))" ] &&
+    [ -f "$dir/log" ] && [ -f "$dir/base" ] && [ -f "$dir/merged" ] && [ "$(unmerged)" -gt 0 ] &&
       { echo "verify_background.sh: $dir/log holds lines not merged yet: merge them first" >&2; exit 2; }
     rm -rf "$dir" && mkdir -p "$dir/build" "$dir/src"
     find "$build" -maxdepth 1 -type f -executable -exec cp {} "$dir/build/" \;
@@ -47,7 +48,7 @@ case ${1:-} in
     [ "$(cd "$store" && pwd)" = "$(cat "$dir/store")" ] || { echo "verify_background.sh: the run in $dir verifies $(cat "$dir/store"), not $store" >&2; exit 2; }
     base=$(cat "$dir/base") merged=$(cat "$dir/merged")
     exec 9> "$dir/merge.lock"; flock 9
-    new=$(( $(wc -l < "$dir/log") - base - merged ))
+    new=$(unmerged)
     if [ "$new" -gt 0 ]; then
       tail -n +$((base + merged + 1)) "$dir/log" | head -n "$new" >> "$store/verified.log"
       echo $((merged + new)) > "$dir/merged"
@@ -55,7 +56,7 @@ case ${1:-} in
     echo "verify_background: merged $new line(s) into $store/verified.log$(running || echo '; the run has ended')" ;;
   status)
     [ -f "$dir/pid" ] || { echo "verify_background: no run in $dir"; exit 0; }
-    echo "verify_background: $(running && echo "running (pid $(cat "$dir/pid"))" || echo ended); $(( $(wc -l < "$dir/log") - $(cat "$dir/base") - $(cat "$dir/merged") )) line(s) to merge"
+    echo "verify_background: $(running && echo "running (pid $(cat "$dir/pid"))" || echo ended); $(unmerged) line(s) to merge"
     pgrep -af "^$dir/build/" | cut -c1-200 || true
     tail -3 "$dir/progress" ;;
   drain)

@@ -136,8 +136,7 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
          t = ("seconds" in c) ? c["seconds"] : c["time_s"]; next }
     { k = $c["level"]; key = k SUBSEP $t; x = (path == "own" ? $t : cheaper_s(c, t)); th = made_on_threads(c) * $t
       if (!(key in seen)) { seen[key] = 1; s[k] += $t; e[k] += x; w[k] += th }
-      if (nk) { p = $c[uk[1]]; for (i = 2; i <= nk; i++) p = p "," $c[uk[i]]
-                pk = k SUBSEP p
+      if (nk) { p = unit_part(c, uk, nk); pk = k SUBSEP p
                 if (!(pk in ps)) { sep = (k in parts) ? SUBSEP : ""; parts[k] = parts[k] sep p }
                 if (!((pk, $t) in pseen)) { pseen[pk, $t] = 1; ps[pk] += $t; pe[pk] += x; pw[pk] += th } } }
     function row(k, part, st, ex, wt,   y) {
@@ -146,6 +145,7 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
              (s[k] > above ? path : "own"), y, (st > 0 ? y * wt / st : y), part }
     '"$cheaper_seconds_awk"'
     '"$made_on_threads_awk"'
+    '"$unit_part_awk"'
     END { for (k in s) { y = s[k] > above ? e[k] : s[k]  # by the path; then on one thread
             if (nk && (forced || (s[k] > 0 ? y * w[k] / s[k] : y) > split_above + 0)) {
               n = split(parts[k], pl, SUBSEP)
@@ -222,8 +222,8 @@ next_job() {  # the queue's first job, removed from it; nothing once empty or st
 rows_held() {  # FILE LEVEL PART UNIT_KEY: the rows FILE holds at LEVEL (of PART, "-": all)
   awk -F'\t' -v L="$2" -v part="$3" -v ukey="$4" '/^#/ { next }
     !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; nk = split(ukey, uk, ","); next }
-    $c["level"] == L { p = nk ? $c[uk[1]] : ""; for (i = 2; i <= nk; i++) p = p "," $c[uk[i]]
-                       if (part == "-" || p == part) n++ }
+    $c["level"] == L && (part == "-" || unit_part(c, uk, nk) == part) { n++ }
+    '"$unit_part_awk"'
     END { print n + 0 }' "$1"
 }
 lane() {  # lane NUMBER: jobs from the queue until it is empty
