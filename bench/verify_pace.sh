@@ -28,12 +28,12 @@ tmp=$(mktemp "$out.XXXXXX"); trap 'rm -f "$tmp"' EXIT
   printf 'file\tlevel\tprogram\tstorage\tseconds\tstored_s\tone_thread_stored_s\tpace\tmachine\tpath\n'
   awk -F'\t' -v pat="$pattern" -v since="$since" 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
     $c["verdict"] == "agree" && $c["machine"] ~ pat && $c["date"] >= since {
-      print $c["file"], $c["level"], $c["program"], $c["seconds"], $c["stored_s"], $c["machine"], $c["path"] }' OFS='\t' "$log" |
-  while IFS=$'\t' read -r file level program secs stored machine path; do
+      print $c["file"], $c["level"], $c["program"], $c["seconds"], $c["stored_s"], $c["machine"], $c["path"], line_part($c["path"]) }
+    '"$line_part_awk" OFS='\t' "$log" |
+  while IFS=$'\t' read -r file level program secs stored machine path part; do
     f=$store/$file.tsv
     [ -f "$f" ] || { echo "verify_pace.sh: $f (named by the log) is missing" >&2; exit 4; }
     # A part's line (its path ending "--only PART", verify_store_full.sh) is priced by its rows.
-    part=-; [[ $path =~ --only\ ([^ ]+) ]] && part=${BASH_REMATCH[1]}
     awk -F'\t' -v L="$level" -v part="$part" -v ukey="$(unit_key "$program")" '/^#/ { next }
       !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; t = ("seconds" in c) ? c["seconds"] : c["time_s"]
            nk = split(ukey, uk, ","); next }

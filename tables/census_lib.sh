@@ -65,6 +65,11 @@ unit_part_awk='function unit_part(col, uk, nk,   p, i) {
   p = $col[uk[1]]; for (i = 2; i <= nk; i++) p = p "," $col[uk[i]]
   return p }'
 
+# An awk function for the part a verified.log line vouches for: its path's "--only PART"
+# (verify_store_full.sh writes a part's line so), "-" for a whole level.
+line_part_awk='function line_part(path) {
+  return match(path, /--only [^ ]+/) ? substr(path, RSTART + 7, RLENGTH - 7) : "-" }'
+
 # cheaper_path PROGRAM STEM FILE: the options of a store file's independent, cheaper
 # recomputation (issue 58 item 3), "-" where it has none: Table 4.4's plain-CG files by the
 # tau-preconditioned solver; Table 4.7's by their own stepping with that solver (2-3 implicit

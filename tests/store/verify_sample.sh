@@ -55,8 +55,9 @@ sub_key() {
 # The seconds verify_store_full.sh measured per (file, level) by a path other than the own one
 # (its latest agreeing line of the whole level: a part's line, "--only PART", times one part),
 # "file<TAB>level<TAB>seconds<TAB>path".
-measured=$(awk -F'\t' 'NR > 1 && $9 == "agree" && $13 != "own" && $13 !~ /--only / { m[$2 "\t" $3] = $10 "\t" $13 }
-  END { for (k in m) print k "\t" m[k] }' "$store/verified.log" 2>/dev/null)
+measured=$(awk -F'\t' 'NR > 1 && $9 == "agree" && $13 != "own" && line_part($13) == "-" { m[$2 "\t" $3] = $10 "\t" $13 }
+  END { for (k in m) print k "\t" m[k] }
+  '"$line_part_awk" "$store/verified.log" 2>/dev/null)
 candidates() {
   while IFS=$'\t' read -r _study file program args census coarse _slice; do
     [ -f "$store/$file.tsv" ] || continue  # (args stay "-" when empty: read merges two tabs)

@@ -157,11 +157,10 @@ done < <("$build/gpm" study --store-rows) | sort -t$'\t' -k8,8g > "$todo"
 pending=$(mktemp); trap 'rm -f "$todo" "$pending"' EXIT
 # A whole level's line vouches for its parts; a part's line (its path ending "--only PART")
 # for that part alone.
-awk -F'\t' 'NR == FNR { if (FNR > 1 && $9 == "agree") { part = "-"
-                            if (match($13, /--only [^ ]+/)) part = substr($13, RSTART + 7, RLENGTH - 7)
-                            done[$2 SUBSEP $3 SUBSEP $5 SUBSEP part] = 1 }
+awk -F'\t' 'NR == FNR { if (FNR > 1 && $9 == "agree") done[$2 SUBSEP $3 SUBSEP $5 SUBSEP line_part($13)] = 1
                           next }
-  !(($1 SUBSEP $2 SUBSEP $5 SUBSEP "-") in done) && !(($1 SUBSEP $2 SUBSEP $5 SUBSEP $10) in done)' \
+  !(($1 SUBSEP $2 SUBSEP $5 SUBSEP "-") in done) && !(($1 SUBSEP $2 SUBSEP $5 SUBSEP $10) in done)
+  '"$line_part_awk" \
   "$log" "$todo" 2>/dev/null > "$pending" || cp "$todo" "$pending"
 total=$(awk -F'\t' '{ s += $6 } END { printf "%.0f", s }' "$pending")
 by_path=$(awk -F'\t' '{ s += $8 } END { printf "%.0f", s }' "$pending")
