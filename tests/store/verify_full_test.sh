@@ -5,7 +5,8 @@
 # lanes (--jobs 2) log each level once (wide jobs after them on all the cores), and a stored number changed by hand (seal recomputed,
 # so only the recomputation can tell) makes its level "differs" with exit 4, by the rows' own
 # path and by the cheaper one (--cheap: preconditioned CG for plain CG's rows, at 1e-6: an
-# edit of 1e-5 is still caught).
+# edit of 1e-5 is still caught).  A level's price comes from an earlier line of its path
+# where that measured fewer seconds than its rows.
 # usage: verify_full_test.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
@@ -76,6 +77,25 @@ thin=$(awk -F'\t' 'NR > 1 && $12 ~ /, 1 thread$/' "$t/verified.log" | wc -l)
 [ "$levels" = "5 6 " ] && grep -q '^verify_store_full: the lanes are done; 2 wide job' "$t/out13" &&
   { [ "$(nproc)" -eq 1 ] || [ "$thin" -eq 0 ]; } ||
   { echo "FAIL: wide jobs: want levels 5 and 6 logged once, on all the cores, got '$levels':"; cat "$t/out13" "$t/verified.log"; fail=1; }
+# The price by measurement: an earlier line of the level by the same path (another code, so
+# the level is still to do) prices it at its seconds times the threads its machine cell names,
+# where fewer than the rows' estimate; a line of more seconds, a part's line or another path's
+# leaves the estimate.  Dry runs on a copy whose rows say 1000 times their seconds.
+mkdir -p "$t/priced"
+awk -F'\t' -v OFS='\t' '/^#/ { print; next } !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1
+    s = ("seconds" in c) ? c["seconds"] : c["time_s"]; print; next } { $s = $s * 1000; print }' \
+  "$t/store/thesis_table4_4.tsv" > "$t/priced/thesis_table4_4.tsv"
+price() {  # price LOG_LINE_CELLS...: level 6's one-thread price on a log holding that one line
+  { head -1 "$t/verified.log"; [ $# -eq 0 ] || printf '2026-01-01T00:00:00Z\tthesis_table4_4\t6\tthesis_table4_4\t000000000000\t1\t1\t0\tagree\t%s\t0\t%s\t%s\t0\n' "$@"; } > "$t/priced.log"
+  bash "$src/tests/store/verify_store_full.sh" "$build" "$t/priced" --log "$t/priced.log" --dry-run thesis_table4_4 2>&1 |
+    awk -F'\t' '$1 == "thesis_table4_4" && $2 == 6 { print $8 }'
+}
+est=$(price)
+got=$(price 3 "M, 2 cores, 1 thread" own) got2=$(price 3 "M, 2 cores" own) more=$(price 999999 "M, 2 cores" own)
+part=$(price 3 "M, 2 cores, 1 thread" "own --only h15,quartic_polynomial") other=$(price 3 "M, 2 cores, 1 thread" "--solver tau")
+[ "$got" = 3.0 ] && [ "$got2" = 6.0 ] && [ "$more" = "$est" ] && [ "$part" = "$est" ] && [ "$other" = "$est" ] &&
+  awk -v e="$est" 'BEGIN { exit !(e > 6) }' ||
+  { echo "FAIL: measured price: want 3.0, 6.0 and the estimate $est (> 6) three times, got '$got' '$got2' '$more' '$part' '$other'"; fail=1; }
 run --jobs 0 > "$t/out7" 2>&1
 [ $? -eq 2 ] && grep -q "^verify_store_full.sh: --jobs '0'" "$t/out7" || { echo "FAIL: --jobs 0 was not refused:"; cat "$t/out7"; fail=1; }
 # The cheaper path: both levels agree at its tolerance, logged with the path's options.

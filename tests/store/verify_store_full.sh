@@ -106,7 +106,22 @@ machine=$(machine_line)
 # and the estimated seconds by it (cheap_s above); last, those seconds on one thread: each
 # row's times the threads its made_on cell names (a row made on two threads is wall time of
 # two), what a lane of one thread needs on the machine that made the rows.
-todo=$(mktemp); trap 'rm -f "$todo"' EXIT
+#
+# Where the log holds an earlier verification of the level by the same path (any code: the
+# latest whole-level line that agreed), its seconds on one thread (times the threads its
+# machine cell names) replace the estimate when fewer: a measurement, not a model.  The rows'
+# own seconds can be far above what their path costs today: Table 4.5's stepped levels at
+# 2^-8 recorded 5,100-9,300 s and went by the propagator in 42-59 s on two Zen 5 threads
+# (2026-12-06).  Priced by the rows, they went last, in parts.  A shared run's line
+# ("--table 4.5,4.6") counts for each of its files (its seconds cover them all: an upper bound).
+todo=$(mktemp) measured=$(mktemp); trap 'rm -f "$todo" "$measured"' EXIT
+awk -F'\t' -v OFS='\t' 'FNR > 1 && $9 == "agree" && line_part($13) == "-" {
+    th = match($12, /, [0-9]+ thread/) ? substr($12, RSTART + 2, RLENGTH - 9) : \
+         match($12, /, [0-9]+ cores/) ? substr($12, RSTART + 2, RLENGTH - 8) : 1
+    p = $13; sub(/ --table [^ ]+$/, "", p)
+    m[$2 SUBSEP $3 SUBSEP p] = ($10 > 1 ? $10 : 1) * th }
+  END { for (k in m) { split(k, a, SUBSEP); print a[1], a[2], a[3], m[k] } }
+  '"$line_part_awk" "$log" 2>/dev/null > "$measured"
 while IFS=$'\t' read -r study file program args census coarse slice; do
   [ ${#only[@]} -eq 0 ] || [[ " ${only[*]} " == *" $file "* ]] || continue
   f=$store/$file.tsv
@@ -128,8 +143,9 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
   # the file holds beyond it are verified too).
   forced=0; [[ " $extra " == *" --only "* ]] && forced=1
   awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v code="$code" -v path="$path" -v above="$above" \
-      -v ukey="$(unit_key "$prog")" -v split_above="$split" -v forced="$forced" '
-    BEGIN { nk = split(ukey, uk, ",") }
+      -v ukey="$(unit_key "$prog")" -v split_above="$split" -v forced="$forced" -v measured="$measured" '
+    BEGIN { nk = split(ukey, uk, ",")
+            while ((getline line < measured) > 0) { split(line, a, "\t"); if (a[1] == file) mm[a[2] SUBSEP a[3]] = a[4] } }
     /^#/ { next }
     !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1
          for (i = 1; i <= nk; i++) if (!(uk[i] in c)) nk = 0  # a file without the key goes whole
@@ -139,22 +155,24 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
       if (nk) { p = unit_part(c, uk, nk); pk = k SUBSEP p
                 if (!(pk in ps)) { sep = (k in parts) ? SUBSEP : ""; parts[k] = parts[k] sep p }
                 if (!((pk, $t) in pseen)) { pseen[pk, $t] = 1; ps[pk] += $t; pe[pk] += x; pw[pk] += th } } }
-    function row(k, part, st, ex, wt,   y) {
+    function row(k, part, st, ex, wt, f,   y) {  # f: the measured over the estimate, at most 1
       y = s[k] > above ? ex : st
       printf "%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%.1f\t%.1f\t%s\n", file, k, program, args, code, st,
-             (s[k] > above ? path : "own"), y, (st > 0 ? y * wt / st : y), part }
+             (s[k] > above ? path : "own"), y * f, (st > 0 ? y * wt / st : y) * f, part }
     '"$cheaper_seconds_awk"'
     '"$made_on_threads_awk"'
     '"$unit_part_awk"'
     END { for (k in s) { y = s[k] > above ? e[k] : s[k]  # by the path; then on one thread
-            if (nk && (forced || (s[k] > 0 ? y * w[k] / s[k] : y) > split_above + 0)) {
+            one = s[k] > 0 ? y * w[k] / s[k] : y; mk = k SUBSEP (s[k] > above ? path : "own")
+            f = (mk in mm) && mm[mk] < one ? mm[mk] / one : 1
+            if (nk && (forced || one * f > split_above + 0)) {
               n = split(parts[k], pl, SUBSEP)
-              for (j = 1; j <= n; j++) { pk = k SUBSEP pl[j]; row(k, pl[j], ps[pk], pe[pk], pw[pk]) }
-            } else row(k, "-", s[k], e[k], w[k]) } }' "$f"
+              for (j = 1; j <= n; j++) { pk = k SUBSEP pl[j]; row(k, pl[j], ps[pk], pe[pk], pw[pk], f) }
+            } else row(k, "-", s[k], e[k], w[k], f) } }' "$f"
 done < <("$build/gpm" study --store-rows) | sort -t$'\t' -k8,8g > "$todo"
 
 # Skip what the log already vouches for under the current code.
-pending=$(mktemp); trap 'rm -f "$todo" "$pending"' EXIT
+pending=$(mktemp); trap 'rm -f "$todo" "$measured" "$pending"' EXIT
 # A whole level's line vouches for its parts; a part's line (its path ending "--only PART")
 # for that part alone.
 awk -F'\t' 'NR == FNR { if (FNR > 1 && $9 == "agree") done[$2 SUBSEP $3 SUBSEP $5 SUBSEP line_part($13)] = 1
@@ -182,7 +200,7 @@ fi
 # comma lists, its options the tables' list, and a last field the --out pattern ("-": one file).
 # Read by file name, so a group lists its tables in order (4.5, 4.6, 4.7); the jobs are then
 # ordered by their estimated seconds.
-jobs=$(mktemp); trap 'rm -f "$todo" "$pending" "$jobs"' EXIT
+jobs=$(mktemp); trap 'rm -f "$todo" "$measured" "$pending" "$jobs"' EXIT
 awk -F'\t' -v OFS='\t' '
   { part = $10; one = $9; NF = 8  # the part and the one-thread price go last
     rest = $4; sub(/^--table [0-9.]+ ?/, "", rest); table = $4; sub(/^--table /, "", table); sub(/ .*/, "", table)
@@ -204,7 +222,7 @@ awk -F'\t' -v OFS='\t' '
 # when its last is done (under a lock, as are the log's appends), so a long level holds one
 # lane while the others go on.  Each lane keeps its own budget (a lane's seconds are wall
 # seconds) and reports its counts in a file; a lane that fails stops the others' next jobs.
-queue=$(mktemp -d); trap 'rm -rf "$todo" "$pending" "$jobs" "$queue"' EXIT
+queue=$(mktemp -d); trap 'rm -rf "$todo" "$measured" "$pending" "$jobs" "$queue"' EXIT
 # Wide jobs: with lanes, a job of --wide-above seconds or more on one thread waits until the lanes
 # are done and then runs on all the cores, one at a time: on one thread it would outlast a
 # session's machine (a lane's level in progress leaves no line).
