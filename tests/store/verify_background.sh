@@ -58,7 +58,10 @@ case ${1:-} in
     [ -f "$dir/pid" ] || { echo "verify_background: no run in $dir"; exit 0; }
     echo "verify_background: $(running && echo "running (pid $(cat "$dir/pid"))" || echo ended); $(unmerged) line(s) to merge"
     pgrep -af "^$dir/build/" | cut -c1-200 || true
-    tail -3 "$dir/progress" ;;
+    # What each lane took last (its start line: since when, the estimate) and the last results.
+    awk '/ lane [^ ]+ starts / { for (i = 1; i <= NF; i++) if ($i == "lane") took[$(i + 1)] = $0; next }
+      { last[++n] = $0 }
+      END { for (k in took) print "last taken: " took[k]; for (i = (n > 2 ? n - 2 : 1); i <= n; i++) print last[i] }' "$dir/progress" ;;
   drain)
     running || { echo "verify_background: no run going in $dir"; exit 0; }
     : > "$dir/drain"

@@ -2,7 +2,7 @@
 # verify_background.sh on a copy of one store file (Table 4.4, levels 5 and 6): a started run
 # goes on by itself from frozen copies, refuses a second start, and a merge appends exactly the
 # lines it added to the store's log (a second merge adds none); a drained run takes no job
-# (VERIFY_STOP_FILE, what `drain` creates).
+# (VERIFY_STOP_FILE, what `drain` creates); status names each lane's last job.
 # usage: verify_background_test.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
@@ -22,6 +22,11 @@ bg start "$build" "$t/store" thesis_table4_4 > "$t/out2" 2>&1 &&
 for _ in $(seq 1 300); do kill -0 "$(cat "$t/bg/pid")" 2>/dev/null || break; sleep 0.2; done
 kill -0 "$(cat "$t/bg/pid")" 2>/dev/null && { echo "FAIL: the run did not end"; cat "$t/bg/progress"; exit 1; }
 [ "$(wc -l < "$t/store/verified.log")" -eq 1 ] || { echo "FAIL: the run wrote the store's log itself"; fail=1; }
+# status names what each lane took last (one lane here: level 6, the dearer, after level 5).
+bg status > "$t/status" 2>&1
+grep -q '^last taken: .* lane 1 starts thesis_table4_4 level 6 (own path), estimated ' "$t/status" &&
+  [ "$(grep -c '^last taken: ' "$t/status")" -eq 1 ] ||
+  { echo "FAIL: status: want the one lane's last job (level 6):"; cat "$t/status"; fail=1; }
 bg merge "$t/store" > "$t/out3" 2>&1
 n=$(awk -F'\t' 'NR > 1 && $9 == "agree" && length($14) == 16 { print $3 }' "$t/store/verified.log" | sort | tr '\n' ' ')
 [ "$n" = "5 6 " ] && grep -q 'merged 2 line' "$t/out3" || { echo "FAIL: merge: want levels 5 and 6 once, got '$n':"; cat "$t/out3" "$t/bg/progress"; fail=1; }

@@ -260,6 +260,9 @@ lane() {  # lane NUMBER: jobs from the queue until it is empty
     IFS=, read -ra st <<<"$stored"
     out=$store/${fs[0]}.tsv
     [ "$pattern" = - ] || out=$store/$pattern.tsv
+    # A start line, so that a look at the progress tells what each lane holds and since when
+    # (verify_background.sh status): a session that ends soon drains rather than lose a level.
+    echo "verify_store_full: $(date -u +%FT%TZ) lane $1 starts $files level $level$([ "$part" = - ] || echo " part $part") ($path path), estimated $expect s"
     t0=$(date +%s)
     # shellcheck disable=SC2086
     log_out=$("$build"/$program $args --profile paper --levels "$level" --out "$out" --verify 2>&1)
