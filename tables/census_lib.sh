@@ -65,10 +65,12 @@ unit_part_awk='function unit_part(col, uk, nk,   p, i) {
   p = $col[uk[1]]; for (i = 2; i <= nk; i++) p = p "," $col[uk[i]]
   return p }'
 
-# An awk function for the part a verified.log line vouches for: its path's "--only PART"
-# (verify_store_full.sh writes a part's line so), "-" for a whole level.
+# An awk function for the part a verified.log line vouches for: its path's "--only PART" or
+# "--weights PART" (verify_store_full.sh writes a part's line so, the latter for a heat file),
+# "-" for a whole level.
 line_part_awk='function line_part(path) {
-  return match(path, /--only [^ ]+/) ? substr(path, RSTART + 7, RLENGTH - 7) : "-" }'
+  if (match(path, /--only [^ ]+/)) return substr(path, RSTART + 7, RLENGTH - 7)
+  return match(path, /--weights [^ ]+/) ? substr(path, RSTART + 10, RLENGTH - 10) : "-" }'
 
 # cheaper_path PROGRAM STEM FILE: the options of a store file's independent, cheaper
 # recomputation (issue 58 item 3), "-" where it has none: Table 4.4's plain-CG files by the

@@ -148,5 +148,28 @@ verdicts=$(awk -F'\t' '{ print $2, $3, $9 }' <<<"$shared" | sort | tr '\n' ';')
 want="${heat[0]} 5 agree;${heat[0]} 6 agree;${heat[1]} 5 agree;${heat[1]} 6 differs;"
 [ $rc -eq 4 ] && [ "$verdicts" = "$want" ] ||
   { echo "FAIL: the shared heat run: exit $rc (want 4), lines '$verdicts' (want '$want'):"; cat "$t/out5"; fail=1; }
+# A heat file in parts: one job per weight, selected by --weights (thesis_heat lists its units
+# itself and refuses --only), each line comparing that weight's rows alone.
+bash "$src/tests/store/verify_store_full.sh" "$build" "$t/store" --log "$t/heatparts.log" --cheap --cheap-above 0 \
+  --split-above 0 "${heat[0]}" > "$t/out14" 2>&1 || { echo "FAIL: the heat file in parts failed:"; cat "$t/out14"; fail=1; }
+want=$(awk -F'\t' '/^#/ { next } !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; next }
+  { n[$c["level"] " " $c["weight"]]++ } END { for (k in n) print k, n[k] }' "$t/store/${heat[0]}.tsv" | sort)
+got=$(awk -F'\t' 'NR > 1 && $9 == "agree" && match($13, / --weights [^ ]+$/) { print $3, substr($13, RSTART + 11), $7 }' "$t/heatparts.log" | sort)
+[ -n "$want" ] && [ "$got" = "$want" ] ||
+  { echo "FAIL: heat parts: want one agree line per (level, weight) with its rows:"; echo "$want"; echo "got:"; echo "$got"; cat "$t/out14"; fail=1; }
+# A part's line that compared every row of its level (a thesis_heat "part" under --only, which
+# the program never read before it refused it) vouches for the whole level; one that compared
+# a part's rows, for that part alone.
+code=$("$build/gpm" fingerprint thesis_heat | awk -F'\t' '$1 == "thesis_heat" { print $2 }')
+all5=$(awk -F'\t' '/^#/ { next } !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; next } $c["level"] == 5 { n++ } END { print n }' "$t/store/${heat[0]}.tsv")
+pending5() {  # ROWS: level 5's jobs still to do when the log holds one "part" line of ROWS rows
+  { head -1 "$t/heatparts.log"
+    printf '2026-01-01T00:00:00Z\t%s\t5\tthesis_heat\t%s\t1\t%s\t0\tagree\t1\t1\tM, 2 cores\t--propagator auto --solver tau --only quartic_polynomial\t0\n' "${heat[0]}" "$code" "$1"; } > "$t/whole.log"
+  bash "$src/tests/store/verify_store_full.sh" "$build" "$t/store" --log "$t/whole.log" --cheap --cheap-above 0 --split-above 0 \
+    --dry-run "${heat[0]}" 2>&1 | awk -F'\t' '$2 == 5' | wc -l
+}
+w=$(pending5 "$all5") p=$(pending5 3)
+[ "$w" -eq 0 ] && [ "$p" -eq 2 ] ||
+  { echo "FAIL: a part line of all $all5 rows should leave level 5 done (left: $w), one of 3 rows two weights to do (left: $p)"; fail=1; }
 [ $fail -eq 0 ] && echo "verify_store_full: logs sealed lines, resumes, goes in parts, a resealed edit differs (own and cheaper path; heat tables in one shared run, each file its own verdict)"
 exit $fail

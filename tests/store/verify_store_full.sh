@@ -150,15 +150,15 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
     !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1
          for (i = 1; i <= nk; i++) if (!(uk[i] in c)) nk = 0  # a file without the key goes whole
          t = ("seconds" in c) ? c["seconds"] : c["time_s"]; next }
-    { k = $c["level"]; key = k SUBSEP $t; x = (path == "own" ? $t : cheaper_s(c, t)); th = made_on_threads(c) * $t
+    { k = $c["level"]; key = k SUBSEP $t; nrow[k]++; x = (path == "own" ? $t : cheaper_s(c, t)); th = made_on_threads(c) * $t
       if (!(key in seen)) { seen[key] = 1; s[k] += $t; e[k] += x; w[k] += th }
       if (nk) { p = unit_part(c, uk, nk); pk = k SUBSEP p
                 if (!(pk in ps)) { sep = (k in parts) ? SUBSEP : ""; parts[k] = parts[k] sep p }
                 if (!((pk, $t) in pseen)) { pseen[pk, $t] = 1; ps[pk] += $t; pe[pk] += x; pw[pk] += th } } }
     function row(k, part, st, ex, wt, f,   y) {  # f: the measured over the estimate, at most 1
       y = s[k] > above ? ex : st
-      printf "%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%.1f\t%.1f\t%s\n", file, k, program, args, code, st,
-             (s[k] > above ? path : "own"), y * f, (st > 0 ? y * wt / st : y) * f, part }
+      printf "%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%.1f\t%.1f\t%s\t%d\n", file, k, program, args, code, st,
+             (s[k] > above ? path : "own"), y * f, (st > 0 ? y * wt / st : y) * f, part, nrow[k] }
     '"$cheaper_seconds_awk"'
     '"$made_on_threads_awk"'
     '"$unit_part_awk"'
@@ -173,11 +173,14 @@ done < <("$build/gpm" study --store-rows) | sort -t$'\t' -k8,8g > "$todo"
 
 # Skip what the log already vouches for under the current code.
 pending=$(mktemp); trap 'rm -f "$todo" "$measured" "$pending"' EXIT
-# A whole level's line vouches for its parts; a part's line (its path ending "--only PART")
-# for that part alone.
-awk -F'\t' 'NR == FNR { if (FNR > 1 && $9 == "agree") done[$2 SUBSEP $3 SUBSEP $5 SUBSEP line_part($13)] = 1
+# A whole level's line vouches for its parts; a part's line (its path ending "--only PART" or,
+# for a heat file, "--weights PART") for that part alone, unless it compared every row the
+# file holds at the level (thesis_heat never read --only: such a "part" was the whole level).
+awk -F'\t' 'NR == FNR { if (FNR > 1 && $9 == "agree") { k = $2 SUBSEP $3 SUBSEP $5; done[k SUBSEP line_part($13)] = 1
+                            if ($7 + 0 > rows[k] + 0) rows[k] = $7 }
                           next }
-  !(($1 SUBSEP $2 SUBSEP $5 SUBSEP "-") in done) && !(($1 SUBSEP $2 SUBSEP $5 SUBSEP $10) in done)
+  !(($1 SUBSEP $2 SUBSEP $5 SUBSEP "-") in done) && !(($1 SUBSEP $2 SUBSEP $5 SUBSEP $10) in done) &&
+  !(rows[$1 SUBSEP $2 SUBSEP $5] + 0 >= $11 + 0)
   '"$line_part_awk" \
   "$log" "$todo" 2>/dev/null > "$pending" || cp "$todo" "$pending"
 total=$(awk -F'\t' '{ s += $6 } END { printf "%.0f", s }' "$pending")
@@ -254,8 +257,10 @@ lane() {  # lane NUMBER: jobs from the queue until it is empty
     fi
     [ "$args" = "-" ] && args=""
     [ "$path" = own ] || args="$args $path"
-    # A part selects its units itself, in place of the census's selection.
-    [ "$part" = - ] || args="$(sed 's/ *--only [^ ]*//' <<<"$args") --only $part"
+    # A part selects its units itself, in place of the census's selection: by key (--only),
+    # a heat file's by its weight (--weights: thesis_heat lists its units itself).
+    sel=--only; [ "${program%% *}" = thesis_heat ] && sel=--weights
+    [ "$part" = - ] || args="$(sed 's/ *--only [^ ]*//' <<<"$args") $sel $part"
     IFS=, read -ra fs <<<"$files"
     IFS=, read -ra st <<<"$stored"
     out=$store/${fs[0]}.tsv
@@ -272,7 +277,7 @@ lane() {  # lane NUMBER: jobs from the queue until it is empty
     # A shared run logs one line per file, each with the run's seconds and the tables it shared.
     logged_path=$path
     [ ${#fs[@]} -eq 1 ] || logged_path="$path ${args%% --*}"
-    [ "$part" = - ] || logged_path="$logged_path --only $part"
+    [ "$part" = - ] || logged_path="$logged_path $sel $part"
     for i in "${!fs[@]}"; do
       file=${fs[$i]}
       # The file's own report: its "[store] verify" line and the "differs" lines after it.

@@ -118,6 +118,7 @@ std::vector<int> StudyRunner::levels() const {
 std::vector<StudyUnit> StudyRunner::units() const {
   if (!study_ || !study_->units) throw std::logic_error("StudyRunner::units(): the study lists no units");
   std::vector<StudyUnit> out;
+  units_listed_ = true;
   // --only narrows the run, never the file: a long unit can go first (a 2^-11 h15 solve
   // before the hour-long h10 one) without a second data file.
   const std::vector<std::string> only = kind_ == Kind::units ? args_.list("only") : std::vector<std::string>{};
@@ -181,6 +182,12 @@ void StudyRunner::expect(double work, const char* unit) {
 bool StudyRunner::claim(double cost) { return claim_group(1, cost); }
 
 bool StudyRunner::claim_group(int n, double cost) {
+  // A program that lists its units itself (thesis_heat: --weights, --thetas) would compute
+  // every unit under a --only it never read; a verification by parts then recomputed whole
+  // levels, once per part (found 2026-12-07).
+  if (!units_listed_ && kind_ == Kind::units && !args_.str("only").empty())
+    throw InputError("--only '" + args_.str("only") + "': " + program_ +
+                     " does not select its units by key; use its own options (--help)");
   const long first = next_unit_;
   next_unit_ += n;
   if (load_.empty()) load_.assign(static_cast<std::size_t>(size_), 0.0);

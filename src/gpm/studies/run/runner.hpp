@@ -92,7 +92,9 @@ class StudyRunner {
   // The registered study's levels (--levels, else its profile's).
   std::vector<int> levels() const;
   // The registered study's units of this run's scope (profile, levels), in its order
-  // (RegisteredStudy::units), less those the profile trims.
+  // (RegisteredStudy::units), less those the profile trims, narrowed by --only.  A program
+  // that claims work (claim, claim_group) without having asked for them does not select by
+  // --only: the claim refuses a given --only (InputError) before any unit is computed.
   std::vector<StudyUnit> units() const;
 
   // The data file: rows are reused only where `params` agree with its header; `columns` are
@@ -178,6 +180,7 @@ class StudyRunner {
   std::vector<std::vector<std::string>> file_columns_;  // each file's own columns (open_files)
   std::vector<std::size_t> saved_added_;  // rows each file had added when last written
   int parts_ = 1;                          // --parts
+  mutable bool units_listed_ = false;      // units() was asked: --only is honoured
   std::string params_text_;                // the first data file's parameters, for part files
   std::vector<std::string> done_parts_;    // part files of the unit being computed
   std::unique_ptr<Progress> progress_;
