@@ -31,10 +31,11 @@
 #
 # Parts: a level estimated above --split-above seconds on one thread goes as one job per value
 # of its unit key (unit_key in census_lib.sh: each part its own Laplacian or pass) that the
-# file holds at the level, with --only in place of the census's selection; its line's path
-# ends "--only PART".  A part lands before a session's machine goes where a whole level of
-# hours would not.  A level is done when a whole-level line or a line for each of its parts
-# carries the current code.  A file whose census selects with --only always goes in parts, so
+# file holds at the level, with --only in place of the census's selection (a heat file's by
+# --weights: thesis_heat lists its units itself and refuses --only); its line's path ends
+# "--only PART" or "--weights PART".  A part lands before a session's machine goes where a
+# whole level of hours would not.  A level is done when a whole-level line, a line for each of
+# its parts, or a part's line that compared every row of the level carries the current code.  A file whose census selects with --only always goes in parts, so
 # its rows beyond that selection are verified too.
 #
 # usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS]
