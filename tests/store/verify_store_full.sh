@@ -35,8 +35,9 @@
 # --weights: thesis_heat lists its units itself and refuses --only); its line's path ends
 # "--only PART" or "--weights PART".  A part lands before a session's machine goes where a
 # whole level of hours would not.  A level is done when a whole-level line, a line for each of
-# its parts, or a part's line that compared every row of the level carries the current code.  A file whose census selects with --only always goes in parts, so
-# its rows beyond that selection are verified too.
+# its parts, or a part's line that compared every row of the level carries the current code.
+# A file whose census selects with --only always goes in parts, so its rows beyond that
+# selection are verified too.
 #
 # usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS]
 #                             [--cheap [--cheap-above SECONDS]] [--split-above SECONDS]
