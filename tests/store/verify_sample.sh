@@ -53,7 +53,8 @@ sub_key() {
   [ "$1" = thesis_heat ] || unit_key "$1"
 }
 # The seconds verify_store_full.sh measured per (file, level) by a path other than the own one
-# (its latest agreeing line of the whole level: a part's line, "--only PART", times one part),
+# (its latest agreeing line of the whole level: a part's line, "--only PART" or "--weights
+# PART", times one part),
 # "file<TAB>level<TAB>seconds<TAB>path".
 measured=$(awk -F'\t' 'NR > 1 && $9 == "agree" && $13 != "own" && line_part($13) == "-" { m[$2 "\t" $3] = $10 "\t" $13 }
   END { for (k in m) print k "\t" m[k] }
