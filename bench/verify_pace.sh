@@ -45,7 +45,7 @@ tmp=$(mktemp "$out.XXXXXX"); trap 'rm -f "$tmp"' EXIT
         if (!($t in seen)) { seen[$t] = 1; all += made_on_threads(c) * $t; if (g) w += made_on_threads(c) * $t }
         if ("storage" in c) { sa[$c["storage"]] = 1; if (g) st[$c["storage"]] = 1 } }
       '"$unit_part_awk"'
-      '"$made_on_threads_awk"'
+      '"$threads_in_awk"'
       END { if (compared + 0 >= n) { w = all; delete st; for (x in sa) st[x] = 1 }
             s = ""; for (x in st) s = s (s == "" ? "" : "+") x; printf "%s\t%.1f\n", (s == "" ? "-" : s), w }' "$f" |
     { IFS=$'\t' read -r storage one

@@ -98,10 +98,13 @@ cheaper_seconds_awk='function cheaper_s(col, t,   its) {
     return its > 15 ? $col["assembly_s"] + $col["solve_s"] * 15 / its : $t }
   return $t }'
 
-# An awk function for the threads a store row was made on: the number its made_on cell names
-# ("AMD EPYC, 2 threads, 2026-12-02"), 1 where the file has no such cell.  `col`: the column
-# map by name.
-made_on_threads_awk='function made_on_threads(col) {
-  if (("made_on" in col) && match($col["made_on"], /, [0-9]+ thread/))
-    return substr($col["made_on"], RSTART + 2, RLENGTH - 9) + 0
-  return 1 }'
+# An awk function for the threads a machine cell names: a store row's made_on ("AMD EPYC, 2
+# threads, 2026-12-02") or a log line's machine ("AMD EPYC, 2 cores, 1 thread"; lines written
+# before machine_line named threads say "1 cores" for a one-thread run): its ", N thread",
+# else its ", N cores", else 1.  made_on_threads: the same for a store row, whose file may have
+# no made_on column (`col`: the column map by name).
+threads_in_awk='function threads_in(cell) {
+  if (match(cell, /, [0-9]+ thread/)) return substr(cell, RSTART + 2, RLENGTH - 9) + 0
+  if (match(cell, /, [0-9]+ cores/)) return substr(cell, RSTART + 2, RLENGTH - 8) + 0
+  return 1 }
+function made_on_threads(col) { return ("made_on" in col) ? threads_in($col["made_on"]) : 1 }'

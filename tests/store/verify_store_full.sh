@@ -118,12 +118,10 @@ machine=$(machine_line)
 # ("--table 4.5,4.6") counts for each of its files (its seconds cover them all: an upper bound).
 todo=$(mktemp) measured=$(mktemp); trap 'rm -f "$todo" "$measured"' EXIT
 awk -F'\t' -v OFS='\t' 'FNR > 1 && $9 == "agree" && line_part($13) == "-" {
-    th = match($12, /, [0-9]+ thread/) ? substr($12, RSTART + 2, RLENGTH - 9) : \
-         match($12, /, [0-9]+ cores/) ? substr($12, RSTART + 2, RLENGTH - 8) : 1
     p = $13; sub(/ --table [^ ]+$/, "", p)
-    m[$2 SUBSEP $3 SUBSEP p] = ($10 > 1 ? $10 : 1) * th }
+    m[$2 SUBSEP $3 SUBSEP p] = ($10 > 1 ? $10 : 1) * threads_in($12) }
   END { for (k in m) { split(k, a, SUBSEP); print a[1], a[2], a[3], m[k] } }
-  '"$line_part_awk" "$log" 2>/dev/null > "$measured"
+  '"$line_part_awk"$'\n'"$threads_in_awk" "$log" 2>/dev/null > "$measured"
 while IFS=$'\t' read -r study file program args census coarse slice; do
   [ ${#only[@]} -eq 0 ] || [[ " ${only[*]} " == *" $file "* ]] || continue
   f=$store/$file.tsv
@@ -162,7 +160,7 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
       printf "%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%.1f\t%.1f\t%s\t%d\n", file, k, program, args, code, st,
              (s[k] > above ? path : "own"), y * f, (st > 0 ? y * wt / st : y) * f, part, nrow[k] }
     '"$cheaper_seconds_awk"'
-    '"$made_on_threads_awk"'
+    '"$threads_in_awk"'
     '"$unit_part_awk"'
     END { for (k in s) { y = s[k] > above ? e[k] : s[k]  # by the path; then on one thread
             one = s[k] > 0 ? y * w[k] / s[k] : y; mk = k SUBSEP (s[k] > above ? path : "own")
