@@ -22,6 +22,7 @@ paper/report.html paper/supplement.html docs/companion.html: $(VERIFY_STAMP)
 # level by level, cheapest first, resumably: one sealed line per (file, level) in
 # results/paper/verified.log, so a rerun continues where it stopped (tests/store/
 # verify_store_full.sh; VERIFY_FLAGS=--dry-run prices it, --budget SECONDS bounds a run,
+# --until TIME takes no job that would end after TIME,
 # --jobs 2 runs two levels at a time, one thread each on two cores; a level above an hour goes
 # in parts, --split-above SECONDS; with lanes, jobs of 2.5 h or more on one thread run last on
 # all the cores, --wide-above SECONDS).

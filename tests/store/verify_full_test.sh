@@ -96,6 +96,27 @@ part=$(price 3 "M, 2 cores, 1 thread" "own --only h15,quartic_polynomial") other
 [ "$got" = 3.0 ] && [ "$got2" = 6.0 ] && [ "$more" = "$est" ] && [ "$part" = "$est" ] && [ "$other" = "$est" ] &&
   awk -v e="$est" 'BEGIN { exit !(e > 6) }' ||
   { echo "FAIL: measured price: want 3.0, 6.0 and the estimate $est (> 6) three times, got '$got' '$got2' '$more' '$part' '$other'"; fail=1; }
+# A lane's bounds (--budget, --until) take a job's seconds on the lane's threads: rows made on
+# two threads (made_on edited, seconds times 1000, resealed) need twice their seconds on a lane
+# of one.  A budget between the two takes no job; an --until already past neither, each lane
+# stopping; an --until an hour away takes both levels.
+mkdir -p "$t/two"
+awk -F'\t' -v OFS='\t' '/^#/ { print; next } !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; NF--; print; next }
+  { $c["seconds"] = $c["seconds"] * 1000; $c["made_on"] = "M, 2 threads, 2026-01-01"; NF--; print }' \
+  "$t/store/thesis_table4_4.tsv" > "$t/two/thesis_table4_4.tsv"
+"$build/gpm" store-seal "$t/two/thesis_table4_4.tsv" > "$t/seal.out" 2>&1 || { echo "FAIL: store-seal refused:"; cat "$t/seal.out"; exit 1; }
+two() { bash "$src/tests/store/verify_store_full.sh" "$build" "$t/two" --log "$t/two.log" --jobs 2 thesis_table4_4 "$@"; }
+b=$(two --dry-run 2>&1 | awk -F'\t' '$1 == "thesis_table4_4" { x = ($7 + $8) / 2; if (m == "" || x < m) m = x } END { printf "%d", m }')
+rm -f "$t/two.log"; OMP_NUM_THREADS=1 two --budget "$b" > "$t/out14" 2>&1
+n14=$(grep -c '	agree	' "$t/two.log")
+rm -f "$t/two.log"; two --until "1 minute ago" > "$t/out15" 2>&1
+n15=$(grep -c '	agree	' "$t/two.log") stops=$(grep -c ' would end after .*; lane [12] stops' "$t/out15")
+rm -f "$t/two.log"; two --until "1 hour" > "$t/out16" 2>&1
+n16=$(grep -c '	agree	' "$t/two.log")
+[ "$b" -gt 0 ] && [ "$n14" -eq 0 ] && grep -q "budget of $b s reached" "$t/out14" && [ "$n15" -eq 0 ] && [ "$stops" -eq 2 ] && [ "$n16" -eq 2 ] ||
+  { echo "FAIL: lane bounds: want 0 levels under budget $b (between the path's and one thread's estimate), 0 under a past --until (both lanes stopping, got $stops) and 2 within an hour, got $n14, $n15, $n16:"; cat "$t/out14" "$t/out15" "$t/out16"; fail=1; }
+two --until "not a time" > "$t/out17" 2>&1
+[ $? -eq 2 ] && grep -q "^verify_store_full.sh: --until 'not a time'" "$t/out17" || { echo "FAIL: a bad --until was not refused:"; cat "$t/out17"; fail=1; }
 run --jobs 0 > "$t/out7" 2>&1
 [ $? -eq 2 ] && grep -q "^verify_store_full.sh: --jobs '0'" "$t/out7" || { echo "FAIL: --jobs 0 was not refused:"; cat "$t/out7"; fail=1; }
 # The cheaper path: both levels agree at its tolerance, logged with the path's options.

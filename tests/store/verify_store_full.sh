@@ -39,13 +39,19 @@
 # A file whose census selects with --only always goes in parts, so its rows beyond that
 # selection are verified too.
 #
-# usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS]
-#                             [--cheap [--cheap-above SECONDS]] [--split-above SECONDS]
+# usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--until TIME]
+#                             [--max-unit SECONDS] [--cheap [--cheap-above SECONDS]] [--split-above SECONDS]
 #                             [--wide-above SECONDS] [--jobs N] [--dry-run] [FILE...]
 #   --log       default STORE/verified.log
-#   --budget    stop before a (file, level) whose stored time would take the run past this
+#   --budget    stop before a (file, level) whose estimate would take the run past this
 #               many seconds (default: no limit); --max-unit: skip levels whose stored time
 #               exceeds this (default: none)
+#   --until     take no job that would end after this time (anything `date -d` reads, e.g.
+#               16:30Z), so that a session's last jobs land before its machine goes.  Both
+#               bounds use a job's estimate on the threads its lane has: its seconds on one
+#               thread over those threads, or its estimate by the path where more (a row
+#               made on two threads needs up to twice its seconds on one).  A lane stops at
+#               the first job that does not fit (the next are dearer, by the path's estimate).
 #   --cheap     the cheaper paths above for levels of more than 60 stored seconds (a cheaper
 #               level by its own path, at 1e-9; --cheap-above SECONDS moves the bound); the
 #               budget, the order and the price then use each
@@ -65,17 +71,19 @@ export LC_ALL=C  # numbers are read and printed with '.' whatever the user's loc
 set -u
 # shellcheck source=tables/census_lib.sh
 . "$(cd "$(dirname "$0")/../.." && pwd)/tables/census_lib.sh"
-usage="usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--max-unit SECONDS] [--cheap [--cheap-above SECONDS]] [--split-above SECONDS] [--wide-above SECONDS] [--jobs N] [--dry-run] [FILE...]"
+usage="usage: verify_store_full.sh BUILD STORE [--log FILE] [--budget SECONDS] [--until TIME] [--max-unit SECONDS] [--cheap [--cheap-above SECONDS]] [--split-above SECONDS] [--wide-above SECONDS] [--jobs N] [--dry-run] [FILE...]"
 [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
 build=$1 store=$2
 shift 2
 [ -x "$build/gpm" ] || { echo "verify_store_full.sh: $build/gpm not found; $usage" >&2; exit 2; }
 [ -d "$store" ] || { echo "verify_store_full.sh: $store is not a directory; $usage" >&2; exit 2; }
-log=$store/verified.log budget="" max_unit="" dry=0 cheap=0 above=60 lanes=1 split=3600 wide=9000 only=()
+log=$store/verified.log budget="" until="" max_unit="" dry=0 cheap=0 above=60 lanes=1 split=3600 wide=9000 only=()
 while [ $# -gt 0 ]; do
   case $1 in
     --log) log=${2:?--log needs a file}; shift 2 ;;
     --budget) budget=${2:?--budget needs seconds}; shift 2 ;;
+    --until) until=$(date -d "${2:?--until needs a time}" +%s 2>/dev/null) ||
+               { echo "verify_store_full.sh: --until '$2' is not a time date -d reads" >&2; exit 2; }; shift 2 ;;
     --max-unit) max_unit=${2:?--max-unit needs seconds}; shift 2 ;;
     --dry-run) dry=1; shift ;;
     --cheap) cheap=1; shift ;;
@@ -249,11 +257,16 @@ rows_held() {  # FILE LEVEL PART UNIT_KEY: the rows FILE holds at LEVEL (of PART
 lane() {  # lane NUMBER: jobs from the queue until it is empty
   spent=0 differs=0 done_n=0
   while job=$(next_job) && [ -n "$job" ]; do
-    IFS=$'\t' read -r files level program args code stored path expect pattern part _one <<<"$job"
+    IFS=$'\t' read -r files level program args code stored path expect pattern part one <<<"$job"
     ukey=$(unit_key "${program%% *}")
     if [ -n "$max_unit" ] && awk -v s="$expect" -v m="$max_unit" 'BEGIN { exit !(s > m) }'; then continue; fi
+    # The job's seconds on this lane's threads (--until above), for the bounds and the start line.
+    expect=$(awk -v e="$expect" -v o="$one" -v t="${OMP_NUM_THREADS:-$(nproc)}" 'BEGIN { x = o / t; printf "%.1f", (x > e ? x : e) }')
     if [ -n "$budget" ] && awk -v s="$expect" -v p="$spent" -v b="$budget" 'BEGIN { exit !(p + s > b) }'; then
       echo "verify_store_full: budget of $budget s reached ($spent s spent$([ "$lanes" = 1 ] || echo " in lane $1")); rerun to continue"; break
+    fi
+    if [ -n "$until" ] && awk -v s="$expect" -v n="$(date +%s)" -v u="$until" 'BEGIN { exit !(n + s > u) }'; then
+      echo "verify_store_full: $files level $level (estimated $expect s) would end after $(date -u -d "@$until" +%FT%TZ)$([ "$lanes" = 1 ] || echo "; lane $1 stops"); rerun to continue"; break
     fi
     [ "$args" = "-" ] && args=""
     [ "$path" = own ] || args="$args $path"
