@@ -98,8 +98,7 @@ part=$(price 3 "M, 2 cores, 1 thread" "own --only h15,quartic_polynomial") other
   { echo "FAIL: measured price: want 3.0, 6.0 and the estimate $est (> 6) three times, got '$got' '$got2' '$more' '$part' '$other'"; fail=1; }
 # A lane's bounds (--budget, --until) take a job's seconds on the lane's threads: rows made on
 # two threads (made_on edited, seconds times 1000, resealed) need twice their seconds on a lane
-# of one.  A budget between the two takes no job; an --until already past neither, each lane
-# stopping; an --until an hour away takes both levels.
+# of one.  A budget between the two takes no job; an --until already past neither (each job left, once); an --until an hour away takes both levels.
 mkdir -p "$t/two"
 awk -F'\t' -v OFS='\t' '/^#/ { print; next } !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; NF--; print; next }
   { $c["seconds"] = $c["seconds"] * 1000; $c["made_on"] = "M, 2 threads, 2026-01-01"; NF--; print }' \
@@ -110,11 +109,24 @@ b=$(two --dry-run 2>&1 | awk -F'\t' '$1 == "thesis_table4_4" { x = ($7 + $8) / 2
 rm -f "$t/two.log"; OMP_NUM_THREADS=1 two --budget "$b" > "$t/out14" 2>&1
 n14=$(grep -c '	agree	' "$t/two.log")
 rm -f "$t/two.log"; two --until "1 minute ago" > "$t/out15" 2>&1
-n15=$(grep -c '	agree	' "$t/two.log") stops=$(grep -c ' would end after .*; lane [12] stops' "$t/out15")
+n15=$(grep -c '	agree	' "$t/two.log") stops=$(grep -c ' would end after .* (lane [12]): left' "$t/out15")
 rm -f "$t/two.log"; two --until "1 hour" > "$t/out16" 2>&1
 n16=$(grep -c '	agree	' "$t/two.log")
 [ "$b" -gt 0 ] && [ "$n14" -eq 0 ] && grep -q "budget of $b s reached" "$t/out14" && [ "$n15" -eq 0 ] && [ "$stops" -eq 2 ] && [ "$n16" -eq 2 ] ||
-  { echo "FAIL: lane bounds: want 0 levels under budget $b (between the path's and one thread's estimate), 0 under a past --until (both lanes stopping, got $stops) and 2 within an hour, got $n14, $n15, $n16:"; cat "$t/out14" "$t/out15" "$t/out16"; fail=1; }
+  { echo "FAIL: lane bounds: want 0 levels under budget $b (between the path's and one thread's estimate), 0 under a past --until (two jobs left, got $stops) and 2 within an hour, got $n14, $n15, $n16:"; cat "$t/out14" "$t/out15" "$t/out16"; fail=1; }
+# A job that does not fit is left and the next tried: level 5 first by the path's estimate
+# (34.5 s, made on two threads: 69 s on one), level 6 after it (about 40 s, made on one);
+# one lane of one thread under a budget of 50 s takes level 6 alone.
+mkdir -p "$t/mix"
+awk -F'\t' -v OFS='\t' '/^#/ { print; next } !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; NF--; print; next }
+  $c["level"] == 5 { $c["seconds"] = $c["seconds"] * 1000; $c["made_on"] = "M, 2 threads, 2026-01-01" }
+  $c["level"] == 6 { $c["seconds"] = $c["seconds"] * 115; $c["made_on"] = "M, 1 threads, 2026-01-01" } { NF--; print }' \
+  "$t/store/thesis_table4_4.tsv" > "$t/mix/thesis_table4_4.tsv"
+"$build/gpm" store-seal "$t/mix/thesis_table4_4.tsv" > "$t/seal.out" 2>&1 || { echo "FAIL: store-seal refused:"; cat "$t/seal.out"; exit 1; }
+OMP_NUM_THREADS=1 bash "$src/tests/store/verify_store_full.sh" "$build" "$t/mix" --log "$t/mix.log" --budget 50 thesis_table4_4 > "$t/out18" 2>&1
+mixed=$(awk -F'\t' 'NR > 1 && $9 == "agree" { print $3 }' "$t/mix.log" | tr '\n' ' ')
+[ "$mixed" = "6 " ] && grep -q 'thesis_table4_4 level 5 (estimated 69.0 s) left' "$t/out18" ||
+  { echo "FAIL: a job that does not fit: want level 5 left and level 6 taken, got '$mixed':"; cat "$t/out18"; fail=1; }
 two --until "not a time" > "$t/out17" 2>&1
 [ $? -eq 2 ] && grep -q "^verify_store_full.sh: --until 'not a time'" "$t/out17" || { echo "FAIL: a bad --until was not refused:"; cat "$t/out17"; fail=1; }
 run --jobs 0 > "$t/out7" 2>&1

@@ -50,8 +50,9 @@
 #               16:30Z), so that a session's last jobs land before its machine goes.  Both
 #               bounds use a job's estimate on the threads its lane has: its seconds on one
 #               thread over those threads, or its estimate by the path where more (a row
-#               made on two threads needs up to twice its seconds on one).  A lane stops at
-#               the first job that does not fit (the next are dearer, by the path's estimate).
+#               made on two threads needs up to twice its seconds on one).  A job that does
+#               not fit is left for this run and the lane goes on to the next (the queue's
+#               order is the path's estimate, not the lane's: a later job may fit).
 #   --cheap     the cheaper paths above for levels of more than 60 stored seconds (a cheaper
 #               level by its own path, at 1e-9; --cheap-above SECONDS moves the bound); the
 #               budget, the order and the price then use each
@@ -263,10 +264,10 @@ lane() {  # lane NUMBER: jobs from the queue until it is empty
     # The job's seconds on this lane's threads (--until above), for the bounds and the start line.
     expect=$(awk -v e="$expect" -v o="$one" -v t="${OMP_NUM_THREADS:-$(nproc)}" 'BEGIN { x = o / t; printf "%.1f", (x > e ? x : e) }')
     if [ -n "$budget" ] && awk -v s="$expect" -v p="$spent" -v b="$budget" 'BEGIN { exit !(p + s > b) }'; then
-      echo "verify_store_full: budget of $budget s reached ($spent s spent$([ "$lanes" = 1 ] || echo " in lane $1")); rerun to continue"; break
+      echo "verify_store_full: budget of $budget s reached ($spent s spent$([ "$lanes" = 1 ] || echo " in lane $1")): $files level $level (estimated $expect s) left; rerun to continue"; continue
     fi
     if [ -n "$until" ] && awk -v s="$expect" -v n="$(date +%s)" -v u="$until" 'BEGIN { exit !(n + s > u) }'; then
-      echo "verify_store_full: $files level $level (estimated $expect s) would end after $(date -u -d "@$until" +%FT%TZ)$([ "$lanes" = 1 ] || echo "; lane $1 stops"); rerun to continue"; break
+      echo "verify_store_full: $files level $level (estimated $expect s) would end after $(date -u -d "@$until" +%FT%TZ)$([ "$lanes" = 1 ] || echo " (lane $1)"): left; rerun to continue"; continue
     fi
     [ "$args" = "-" ] && args=""
     [ "$path" = own ] || args="$args $path"
