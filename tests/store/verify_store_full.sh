@@ -43,8 +43,8 @@
 #                             [--max-unit SECONDS] [--cheap [--cheap-above SECONDS]] [--split-above SECONDS]
 #                             [--wide-above SECONDS] [--jobs N] [--dry-run] [FILE...]
 #   --log       default STORE/verified.log
-#   --budget    stop before a (file, level) whose estimate would take the run past this
-#               many seconds (default: no limit); --max-unit: skip levels whose stored time
+#   --budget    take no (file, level) whose estimate would take its lane past this many
+#               seconds (default: no limit); --max-unit: skip levels whose stored time
 #               exceeds this (default: none)
 #   --until     take no job that would end after this time (anything `date -d` reads, e.g.
 #               16:30Z), so that a session's last jobs land before its machine goes.  Both
