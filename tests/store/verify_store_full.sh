@@ -130,7 +130,8 @@ awk -F'\t' -v OFS='\t' 'FNR > 1 && $9 == "agree" && line_part($13) == "-" {
     p = $13; sub(/ --table [^ ]+$/, "", p)
     m[$2 SUBSEP $3 SUBSEP p] = ($10 > 1 ? $10 : 1) * threads_in($12) }
   END { for (k in m) { split(k, a, SUBSEP); print a[1], a[2], a[3], m[k] } }
-  '"$line_part_awk"$'\n'"$threads_in_awk" "$log" 2>/dev/null > "$measured"
+  '"$line_part_awk"'
+  '"$threads_in_awk" "$log" 2>/dev/null > "$measured"
 while IFS=$'\t' read -r study file program args census coarse slice; do
   [ ${#only[@]} -eq 0 ] || [[ " ${only[*]} " == *" $file "* ]] || continue
   f=$store/$file.tsv
@@ -263,12 +264,13 @@ lane() {  # lane NUMBER: jobs from the queue until it is empty
     if [ -n "$max_unit" ] && awk -v s="$expect" -v m="$max_unit" 'BEGIN { exit !(s > m) }'; then continue; fi
     # The job's seconds on this lane's threads (--until above), for the bounds and the start line.
     expect=$(awk -v e="$expect" -v o="$one" -v t="${OMP_NUM_THREADS:-$(nproc)}" 'BEGIN { x = o / t; printf "%.1f", (x > e ? x : e) }')
-    if [ -n "$budget" ] && awk -v s="$expect" -v p="$spent" -v b="$budget" 'BEGIN { exit !(p + s > b) }'; then
-      echo "verify_store_full: budget of $budget s reached ($spent s spent$([ "$lanes" = 1 ] || echo " in lane $1")): $files level $level (estimated $expect s) left; rerun to continue"; continue
-    fi
-    if [ -n "$until" ] && awk -v s="$expect" -v n="$(date +%s)" -v u="$until" 'BEGIN { exit !(n + s > u) }'; then
-      echo "verify_store_full: $files level $level (estimated $expect s) would end after $(date -u -d "@$until" +%FT%TZ)$([ "$lanes" = 1 ] || echo " (lane $1)"): left; rerun to continue"; continue
-    fi
+    # The bound it would cross, if any: --budget on the lane's seconds, --until on the clock.
+    crossed=$(awk -v s="$expect" -v p="$spent" -v b="$budget" -v n="$(date +%s)" -v u="$until" \
+      'BEGIN { if (b != "" && p + s > b) print "budget"; else if (u != "" && n + s > u) print "until" }')
+    case $crossed in
+      budget) echo "verify_store_full: budget of $budget s reached ($spent s spent$([ "$lanes" = 1 ] || echo " in lane $1")): $files level $level (estimated $expect s) left; rerun to continue"; continue ;;
+      until) echo "verify_store_full: $files level $level (estimated $expect s) would end after $(date -u -d "@$until" +%FT%TZ)$([ "$lanes" = 1 ] || echo " (lane $1)"): left; rerun to continue"; continue ;;
+    esac
     [ "$args" = "-" ] && args=""
     [ "$path" = own ] || args="$args $path"
     # A part selects its units itself, in place of the census's selection: by key (--only),
