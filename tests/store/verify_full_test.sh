@@ -6,7 +6,7 @@
 # so only the recomputation can tell) makes its level "differs" with exit 4, by the rows' own
 # path and by the cheaper one (--cheap: preconditioned CG for plain CG's rows, at 1e-6: an
 # edit of 1e-5 is still caught).  A level's price comes from an earlier line of its path
-# where that measured fewer seconds than its rows.
+# where that measured fewer seconds than its rows, a part's from its own line alike.
 # usage: verify_full_test.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
@@ -96,6 +96,20 @@ part=$(price 3 "M, 2 cores, 1 thread" "own --only h15,quartic_polynomial") other
 [ "$got" = 3.0 ] && [ "$got2" = 6.0 ] && [ "$more" = "$est" ] && [ "$part" = "$est" ] && [ "$other" = "$est" ] &&
   awk -v e="$est" 'BEGIN { exit !(e > 6) }' ||
   { echo "FAIL: measured price: want 3.0, 6.0 and the estimate $est (> 6) three times, got '$got' '$got2' '$more' '$part' '$other'"; fail=1; }
+# A part's line prices that part where the level goes in parts (--split-above 0), the other
+# parts keep their estimates; a part's line that compared every row of the level (thesis_heat
+# never read --only) prices the whole level.
+parts() {  # parts ROWS: level 6's parts and prices on a log holding one part's line of ROWS rows
+  { head -1 "$t/verified.log"; printf '2026-01-01T00:00:00Z\tthesis_table4_4\t6\tthesis_table4_4\t000000000000\t1\t%s\t0\tagree\t3\t0\tM, 2 cores, 1 thread\town --only h15,quartic_polynomial\t0\n' "$1"; } > "$t/priced.log"
+  bash "$src/tests/store/verify_store_full.sh" "$build" "$t/priced" --log "$t/priced.log" --dry-run "${@:2}" thesis_table4_4 2>&1 |
+    awk -F'\t' '$1 == "thesis_table4_4" && $2 == 6 { print $3, $8 }'
+}
+held6=$(awk -F'\t' '/^#/ { next } !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1; next } $c["level"] == 6 { n++ } END { print n }' "$t/priced/thesis_table4_4.tsv")
+by_part=$(parts 1 --split-above 0) whole=$(parts "$held6")
+mine=$(awk '$1 == "h15,quartic_polynomial" { print $2 }' <<<"$by_part")
+others=$(awk '$1 != "h15,quartic_polynomial" && $2 + 0 > 3 { n++ } END { print n + 0 }' <<<"$by_part")
+[ "$mine" = 3.0 ] && [ "$others" -ge 1 ] && [ "$others" -eq $(($(wc -l <<<"$by_part") - 1)) ] && [ "$whole" = "- 3.0" ] ||
+  { echo "FAIL: a part's measured price: want 3.0 for its part, the estimate (> 3) for the $others others, '- 3.0' for a line of all $held6 rows, got:"; echo "$by_part"; echo "whole: $whole"; fail=1; }
 # A lane's bounds (--budget, --until) take a job's seconds on the lane's threads: rows made on
 # two threads (made_on edited, seconds times 1000, resealed) need twice their seconds on a lane
 # of one.  A budget between the two takes no job; an --until already past neither (each job left, once); an --until an hour away takes both levels.

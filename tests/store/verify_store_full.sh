@@ -119,17 +119,19 @@ machine=$(machine_line)
 # two), what a lane of one thread needs on the machine that made the rows.
 #
 # Where the log holds an earlier verification of the level by the same path (any code: the
-# latest whole-level line that agreed), its seconds on one thread (times the threads its
-# machine cell names) replace the estimate when fewer: a measurement, not a model.  The rows'
+# latest line that agreed, of the whole level or of a part that compared all its rows), its
+# seconds on one thread (times the threads its machine cell names) replace the estimate when
+# fewer: a measurement, not a model; a part's own line prices that part alike (Imoto's m = 5
+# at 2^-12 went in 2,102 s on two Zen 5 threads against 9,266 s on one by its rows).  The rows'
 # own seconds can be far above what their path costs today: Table 4.5's stepped levels at
 # 2^-8 recorded 5,100-9,300 s and went by the propagator in 42-59 s on two Zen 5 threads
 # (2026-12-06).  Priced by the rows, they went last, in parts.  A shared run's line
 # ("--table 4.5,4.6") counts for each of its files (its seconds cover them all: an upper bound).
 todo=$(mktemp) measured=$(mktemp); trap 'rm -f "$todo" "$measured"' EXIT
-awk -F'\t' -v OFS='\t' 'FNR > 1 && $9 == "agree" && line_part($13) == "-" {
-    p = $13; sub(/ --table [^ ]+$/, "", p)
-    m[$2 SUBSEP $3 SUBSEP p] = ($10 > 1 ? $10 : 1) * threads_in($12) }
-  END { for (k in m) { split(k, a, SUBSEP); print a[1], a[2], a[3], m[k] } }
+awk -F'\t' -v OFS='\t' 'FNR > 1 && $9 == "agree" {  # file, level, path, part, seconds on one thread, rows
+    p = $13; sub(/ --(only|weights) [^ ]+$/, "", p); sub(/ --table [^ ]+$/, "", p); k = $2 SUBSEP $3 SUBSEP p SUBSEP line_part($13)
+    m[k] = ($10 > 1 ? $10 : 1) * threads_in($12); r[k] = $7 }
+  END { for (k in m) { split(k, a, SUBSEP); print a[1], a[2], a[3], a[4], m[k], r[k] } }
   '"$line_part_awk"'
   '"$threads_in_awk" "$log" 2>/dev/null > "$measured"
 while IFS=$'\t' read -r study file program args census coarse slice; do
@@ -155,7 +157,7 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
   awk -F'\t' -v file="$file" -v program="$program" -v args="$args" -v code="$code" -v path="$path" -v above="$above" \
       -v ukey="$(unit_key "$prog")" -v split_above="$split" -v forced="$forced" -v measured="$measured" '
     BEGIN { nk = split(ukey, uk, ",")
-            while ((getline line < measured) > 0) { split(line, a, "\t"); if (a[1] == file) mm[a[2] SUBSEP a[3]] = a[4] } }
+            while ((getline line < measured) > 0) { split(line, a, "\t"); if (a[1] == file) { mk = a[2] SUBSEP a[3] SUBSEP a[4]; mm[mk] = a[5]; mr[mk] = a[6] } } }
     /^#/ { next }
     !h { for (i = 1; i <= NF; i++) c[$i] = i; h = 1
          for (i = 1; i <= nk; i++) if (!(uk[i] in c)) nk = 0  # a file without the key goes whole
@@ -172,12 +174,17 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
     '"$cheaper_seconds_awk"'
     '"$threads_in_awk"'
     '"$unit_part_awk"'
+    function less(f, mk, one) {  # f, or the measurement of mk over the estimate one where less
+      return (mk in mm) && one > 0 && mm[mk] / one < f ? mm[mk] / one : f }
     END { for (k in s) { y = s[k] > above ? e[k] : s[k]  # by the path; then on one thread
-            one = s[k] > 0 ? y * w[k] / s[k] : y; mk = k SUBSEP (s[k] > above ? path : "own")
-            f = (mk in mm) && mm[mk] < one ? mm[mk] / one : 1
+            one = s[k] > 0 ? y * w[k] / s[k] : y; pth = s[k] > above ? path : "own"
+            f = less(1, k SUBSEP pth SUBSEP "-", one)
+            for (mk in mm) { split(mk, b, SUBSEP)  # a part line that compared every row of the level
+              if (b[1] == k && b[2] == pth && b[3] != "-" && mr[mk] + 0 >= nrow[k]) f = less(f, mk, one) }
             if (nk && (forced || one * f > split_above + 0)) {
               n = split(parts[k], pl, SUBSEP)
-              for (j = 1; j <= n; j++) { pk = k SUBSEP pl[j]; row(k, pl[j], ps[pk], pe[pk], pw[pk], f) }
+              for (j = 1; j <= n; j++) { pk = k SUBSEP pl[j]; yp = s[k] > above ? pe[pk] : ps[pk]
+                row(k, pl[j], ps[pk], pe[pk], pw[pk], less(f, k SUBSEP pth SUBSEP pl[j], ps[pk] > 0 ? yp * pw[pk] / ps[pk] : yp)) }
             } else row(k, "-", s[k], e[k], w[k], f) } }' "$f"
 done < <("$build/gpm" study --store-rows) | sort -t$'\t' -k8,8g > "$todo"
 
