@@ -167,24 +167,26 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
       if (nk) { p = unit_part(c, uk, nk); pk = k SUBSEP p
                 if (!(pk in ps)) { sep = (k in parts) ? SUBSEP : ""; parts[k] = parts[k] sep p }
                 if (!((pk, $t) in pseen)) { pseen[pk, $t] = 1; ps[pk] += $t; pe[pk] += x; pw[pk] += th } } }
-    function row(k, part, st, ex, wt, f,   y) {  # f: the measured over the estimate, at most 1
-      y = s[k] > above ? ex : st
+    # The seconds of a level or part by the path of its level (stored st, cheaper ex), then on
+    # one thread (wt: its seconds times the threads each row was made on): one place for both.
+    function by_path(k, st, ex) { return s[k] > above ? ex : st }
+    function one_thread(k, st, ex, wt,   y) { y = by_path(k, st, ex); return st > 0 ? y * wt / st : y }
+    function row(k, part, st, ex, wt, f) {  # f: the measured over the estimate, at most 1
       printf "%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%.1f\t%.1f\t%s\t%d\n", file, k, program, args, code, st,
-             (s[k] > above ? path : "own"), y * f, (st > 0 ? y * wt / st : y) * f, part, nrow[k] }
+             (s[k] > above ? path : "own"), by_path(k, st, ex) * f, one_thread(k, st, ex, wt) * f, part, nrow[k] }
     '"$cheaper_seconds_awk"'
     '"$threads_in_awk"'
     '"$unit_part_awk"'
     function less(f, mk, one) {  # f, or the measurement of mk over the estimate one where less
       return (mk in mm) && one > 0 && mm[mk] / one < f ? mm[mk] / one : f }
-    END { for (k in s) { y = s[k] > above ? e[k] : s[k]  # by the path; then on one thread
-            one = s[k] > 0 ? y * w[k] / s[k] : y; pth = s[k] > above ? path : "own"
+    END { for (k in s) { one = one_thread(k, s[k], e[k], w[k]); pth = s[k] > above ? path : "own"
             f = less(1, k SUBSEP pth SUBSEP "-", one)
             for (mk in mm) { split(mk, b, SUBSEP)  # a part line that compared every row of the level
               if (b[1] == k && b[2] == pth && b[3] != "-" && mr[mk] + 0 >= nrow[k]) f = less(f, mk, one) }
             if (nk && (forced || one * f > split_above + 0)) {
               n = split(parts[k], pl, SUBSEP)
-              for (j = 1; j <= n; j++) { pk = k SUBSEP pl[j]; yp = s[k] > above ? pe[pk] : ps[pk]
-                row(k, pl[j], ps[pk], pe[pk], pw[pk], less(f, k SUBSEP pth SUBSEP pl[j], ps[pk] > 0 ? yp * pw[pk] / ps[pk] : yp)) }
+              for (j = 1; j <= n; j++) { pk = k SUBSEP pl[j]
+                row(k, pl[j], ps[pk], pe[pk], pw[pk], less(f, k SUBSEP pth SUBSEP pl[j], one_thread(k, ps[pk], pe[pk], pw[pk]))) }
             } else row(k, "-", s[k], e[k], w[k], f) } }' "$f"
 done < <("$build/gpm" study --store-rows) | sort -t$'\t' -k8,8g > "$todo"
 
