@@ -170,16 +170,17 @@ while IFS=$'\t' read -r study file program args census coarse slice; do
     # The seconds of a level or part by the path of its level (stored st, cheaper ex), then on
     # one thread (wt: its seconds times the threads each row was made on): one place for both.
     function by_path(k, st, ex) { return s[k] > above ? ex : st }
+    function path_of(k) { return s[k] > above ? path : "own" }  # the path by_path prices
     function one_thread(k, st, ex, wt,   y) { y = by_path(k, st, ex); return st > 0 ? y * wt / st : y }
     function row(k, part, st, ex, wt, f) {  # f: the measured over the estimate, at most 1
       printf "%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%.1f\t%.1f\t%s\t%d\n", file, k, program, args, code, st,
-             (s[k] > above ? path : "own"), by_path(k, st, ex) * f, one_thread(k, st, ex, wt) * f, part, nrow[k] }
+             path_of(k), by_path(k, st, ex) * f, one_thread(k, st, ex, wt) * f, part, nrow[k] }
     '"$cheaper_seconds_awk"'
     '"$threads_in_awk"'
     '"$unit_part_awk"'
     function less(f, mk, one) {  # f, or the measurement of mk over the estimate one where less
       return (mk in mm) && one > 0 && mm[mk] / one < f ? mm[mk] / one : f }
-    END { for (k in s) { one = one_thread(k, s[k], e[k], w[k]); pth = s[k] > above ? path : "own"
+    END { for (k in s) { one = one_thread(k, s[k], e[k], w[k]); pth = path_of(k)
             f = less(1, k SUBSEP pth SUBSEP "-", one)
             for (mk in mm) { split(mk, b, SUBSEP)  # a part line that compared every row of the level
               if (b[1] == k && b[2] == pth && b[3] != "-" && mr[mk] + 0 >= nrow[k]) f = less(f, mk, one) }
