@@ -100,6 +100,10 @@ for n in "$budget" "$max_unit" "$above" "$split" "$wide"; do
   [ -z "$n" ] || [[ $n =~ ^[0-9]+$ ]] || { echo "verify_store_full.sh: '$n' is not a whole number of seconds" >&2; exit 2; }
 done
 [[ $lanes =~ ^[1-9][0-9]*$ ]] || { echo "verify_store_full.sh: --jobs '$lanes' is not a whole number of 1 or more" >&2; exit 2; }
+# A bare time names today: after midnight "01:55Z" is already past and no job would start.
+# Said once, up front, rather than only in each job's line.
+[ -z "$until" ] || [ "$until" -gt "$(date +%s)" ] ||
+  echo "verify_store_full: --until is $(date -u -d "@$until" +%FT%TZ), already past: no job will start (across midnight, give the date too)" >&2
 # Lanes share the cores: each program gets its share of threads unless the caller set them
 # (before machine_line, so that the log's machine cell says the threads a run had).
 threads_set=""
