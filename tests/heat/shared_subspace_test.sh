@@ -7,7 +7,7 @@
 # usage: shared_subspace_test.sh BUILD_DIR
 export LC_ALL=C
 set -u
-build=$(cd "${1:?usage: shared_subspace_test.sh BUILD_DIR}" && pwd)
+build=$(cd "${1:?usage: shared_subspace_test.sh BUILD_DIR}" && pwd) || exit 2
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
 fail=0
 common=(--h-rule h15 --dt-rule exact --volumes cell --levels 5 --profile quick --weights piecewise_quintic_polynomial)

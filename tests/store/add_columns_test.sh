@@ -5,8 +5,8 @@
 # usage: add_columns_test.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
-build=$(cd "${1:?usage: add_columns_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
-src=$(cd "${2:?usage: add_columns_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
+build=$(cd "${1:?usage: add_columns_test.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
+src=$(cd "${2:?usage: add_columns_test.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
 # The copies keep their names (a seal binds its file's name: gpm/io/seal.hpp).
 a=thesis_table4_4_seed2.tsv b=thesis_table4_4_seed3.tsv

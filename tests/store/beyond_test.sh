@@ -7,8 +7,8 @@
 # usage: beyond_test.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
-build=$(cd "${1:?usage: beyond_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
-src=$(cd "${2:?usage: beyond_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
+build=$(cd "${1:?usage: beyond_test.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
+src=$(cd "${2:?usage: beyond_test.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail=0

@@ -6,7 +6,7 @@
 # or the reverse, fails here.)
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
-build=$(cd "${1:?usage: catalog_headers_test.sh BUILD_DIR}" && pwd)
+build=$(cd "${1:?usage: catalog_headers_test.sh BUILD_DIR}" && pwd) || exit 2
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
 "$build/gpm" study --list > "$t/list.tsv" || exit 1
 bad=0 n=0

@@ -8,8 +8,8 @@
 # usage: judge_door_test.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
-build=$(cd "${1:?usage: judge_door_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
-src=$(cd "${2:?usage: judge_door_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
+build=$(cd "${1:?usage: judge_door_test.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
+src=$(cd "${2:?usage: judge_door_test.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
 fail=0
 judge() {  # judge STORE: exit codes of store-rates and rate-levels, and their messages

@@ -10,8 +10,8 @@
 # usage: make_interrupt.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
-build=$(cd "${1:?usage: make_interrupt.sh BUILD_DIR SOURCE_DIR}" && pwd)
-src=$(cd "${2:?usage: make_interrupt.sh BUILD_DIR SOURCE_DIR}" && pwd)
+build=$(cd "${1:?usage: make_interrupt.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
+src=$(cd "${2:?usage: make_interrupt.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
 for f in Makefile mk tables figures paper; do ln -s "$src/$f" "$t/$f"; done
 mkdir -p "$t/results/paper"

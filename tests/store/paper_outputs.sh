@@ -9,8 +9,8 @@
 # usage: paper_outputs.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
-build=$(cd "${1:?usage: paper_outputs.sh BUILD_DIR SOURCE_DIR}" && pwd)
-src=$(cd "${2:?usage: paper_outputs.sh BUILD_DIR SOURCE_DIR}" && pwd)
+build=$(cd "${1:?usage: paper_outputs.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
+src=$(cd "${2:?usage: paper_outputs.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
 for f in Makefile mk tables figures paper; do ln -s "$src/$f" "$t/$f"; done
 mkdir -p "$t/results/paper" "$t/data"

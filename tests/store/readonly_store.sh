@@ -7,8 +7,8 @@
 # usage: readonly_store.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
-build=$(cd "${1:?usage: readonly_store.sh BUILD_DIR SOURCE_DIR}" && pwd)
-src=$(cd "${2:?usage: readonly_store.sh BUILD_DIR SOURCE_DIR}" && pwd)
+build=$(cd "${1:?usage: readonly_store.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
+src=$(cd "${2:?usage: readonly_store.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
 t=$(mktemp -d); trap 'chmod -R u+w "$t"; rm -rf "$t"' EXIT
 chmod 755 "$t"
 as=()

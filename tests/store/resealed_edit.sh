@@ -9,8 +9,8 @@
 # usage: resealed_edit.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
-build=$(cd "${1:?usage: resealed_edit.sh BUILD_DIR SOURCE_DIR}" && pwd)
-src=$(cd "${2:?usage: resealed_edit.sh BUILD_DIR SOURCE_DIR}" && pwd)
+build=$(cd "${1:?usage: resealed_edit.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
+src=$(cd "${2:?usage: resealed_edit.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
 f=thesis_table4_6.tsv unit="thesis_table4_6:7:quartic_polynomial"
 mkdir "$t/s" && cp "$src/results/paper/$f" "$t/s/$f"

@@ -7,8 +7,8 @@
 # usage: seal_guard_test.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
-build=$(cd "${1:?usage: seal_guard_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
-src=$(cd "${2:?usage: seal_guard_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
+build=$(cd "${1:?usage: seal_guard_test.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
+src=$(cd "${2:?usage: seal_guard_test.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
 command -v git > /dev/null || { echo "seal guard: no git, nothing to check"; exit 0; }
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
 fail=0

@@ -7,8 +7,8 @@
 # usage: store_tamper.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C  # numbers are read and printed with '.' whatever the user's locale
 set -u
-build=$(cd "${1:?usage: store_tamper.sh BUILD_DIR SOURCE_DIR}" && pwd)
-src=$(cd "${2:?usage: store_tamper.sh BUILD_DIR SOURCE_DIR}" && pwd)
+build=$(cd "${1:?usage: store_tamper.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
+src=$(cd "${2:?usage: store_tamper.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
 f=thesis_table4_4.tsv
 orig=$src/results/paper/$f

@@ -6,8 +6,8 @@
 # usage: verify_background_test.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
-build=$(cd "${1:?usage: verify_background_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
-src=$(cd "${2:?usage: verify_background_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
+build=$(cd "${1:?usage: verify_background_test.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
+src=$(cd "${2:?usage: verify_background_test.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
 export VERIFY_BG_DIR=$t/bg
 mkdir -p "$t/store"

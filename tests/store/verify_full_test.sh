@@ -10,8 +10,8 @@
 # usage: verify_full_test.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
-build=$(cd "${1:?usage: verify_full_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
-src=$(cd "${2:?usage: verify_full_test.sh BUILD_DIR SOURCE_DIR}" && pwd)
+build=$(cd "${1:?usage: verify_full_test.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
+src=$(cd "${2:?usage: verify_full_test.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
 mkdir -p "$t/store"
 # Levels 5 and 6 only, so that the test is quick; the file keeps its header and seals.

@@ -6,7 +6,7 @@
 # usage: whitelist.sh BUILD_DIR SOURCE_DIR
 export LC_ALL=C
 set -u
-build=$(cd "${1:?usage: whitelist.sh BUILD_DIR SOURCE_DIR}" && pwd)
+build=$(cd "${1:?usage: whitelist.sh BUILD_DIR SOURCE_DIR}" && pwd) || exit 2
 cd "${2:?usage: whitelist.sh BUILD_DIR SOURCE_DIR}" || exit 2
 git rev-parse --git-dir >/dev/null 2>&1 || { echo "whitelist: not a git clone; nothing to check"; exit 0; }
 names=$("$build/gpm" study --store-rows | cut -f2)
